@@ -1,0 +1,35 @@
+// engine/core/image.h — images in memory, and how two of them differ.
+//
+// `ImageRGBA8` is what the renderer reads back and what PNG files hold; `compare_images`
+// is the golden-image check used by `linework diff` and the tests (STYLE.md habit 15:
+// per-channel error, PSNR, the share of differing pixels, an amplified diff image).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace lw {
+
+struct ImageRGBA8 {
+    int width = 0;
+    int height = 0;
+    std::vector<uint8_t> pixels;  // width * height * 4, rows top to bottom
+
+    uint8_t* at(int x, int y) { return &pixels[(static_cast<size_t>(y) * width + x) * 4]; }
+    const uint8_t* at(int x, int y) const { return &pixels[(static_cast<size_t>(y) * width + x) * 4]; }
+};
+
+struct ImageDiff {
+    int max_abs_error = 0;        // largest per-channel difference, 0..255
+    double rmse = 0.0;            // over all channels, 0..255
+    double psnr_db = 0.0;         // infinity when identical
+    double differing_fraction = 0.0;  // pixels with any channel off by more than `tolerance`
+    ImageRGBA8 diff;              // |A - B| × 8, clamped; alpha 255
+};
+
+// Compares RGBA images of equal size (throws lw::Error otherwise). `tolerance` is the
+// per-channel difference a pixel may have before it counts as differing.
+[[nodiscard]] ImageDiff compare_images(const ImageRGBA8& a, const ImageRGBA8& b, int tolerance = 0);
+
+}  // namespace lw

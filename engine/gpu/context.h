@@ -1,0 +1,118 @@
+// engine/gpu/context.h — the Vulkan instance, the chosen device and its queue.
+//
+// Input:  a `ContextDesc` — which device (`--device auto|cpu|gpu|N`) and whether the
+//         Khronos validation layer is on.
+// Output: a `Context` owning VkInstance, VkDevice, one graphics+compute queue and a
+//         command pool; helpers to record-submit-wait one command buffer.
+//
+// Device choice (DESIGN.md "Contracts"): `auto` takes a discrete GPU when there is one,
+// else an integrated or virtual GPU, else the CPU device (Mesa lavapipe). `cpu` and `gpu`
+// insist on that kind and fail with a message listing the devices when none exists; `N` is
+// an index into the list `linework devices` prints. Only Vulkan 1.3 devices with dynamic
+// rendering and synchronization2 qualify.
+//
+// With validation on, every WARNING or ERROR message of the layer is recorded; tests and
+// `LINEWORK_VALIDATION=1` runs fail when `validation_messages()` is not empty.
+#pragma once
+
+#include <functional>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include "gpu/handle.h"
+
+namespace lw {
+
+struct DeviceChoice {
+    enum class Kind { Auto, Cpu, Gpu, Index };
+    Kind kind = Kind::Auto;
+    int index = -1;
+};
+
+// Parses "auto", "cpu", "gpu" or a device index; throws a usage error otherwise.
+[[nodiscard]] DeviceChoice parse_device_choice(const std::string& text);
+
+struct ContextDesc {
+    DeviceChoice device{};
+    bool validation = false;  // enable VK_LAYER_KHRONOS_validation and record its messages
+};
+
+struct DeviceInfo {
+    int index = 0;
+    std::string name;
+    VkPhysicalDeviceType type = VK_PHYSICAL_DEVICE_TYPE_OTHER;
+    uint32_t api_version = 0;
+    bool suitable = false;          // Vulkan 1.3 with the features we need
+    std::string unsuitable_reason;  // why not, when !suitable
+
+    std::string type_name() const;
+    std::string describe() const;   // "llvmpipe (LLVM 15.0.6, 256 bits) [cpu, Vulkan 1.3.230]"
+};
+
+// Lists the physical devices the loader sees (creates and drops a bare instance).
+[[nodiscard]] std::vector<DeviceInfo> list_devices();
+
+class Context {
+public:
+    explicit Context(const ContextDesc& desc = {});
+    ~Context();
+    Context(const Context&) = delete;
+    Context& operator=(const Context&) = delete;
+
+    VkInstance instance() const { return instance_; }
+    VkPhysicalDevice physical_device() const { return physical_device_; }
+    VkDevice device() const { return device_; }
+    VkQueue queue() const { return queue_; }
+    uint32_t queue_family() const { return queue_family_; }
+    const DeviceInfo& info() const { return info_; }
+    const VkPhysicalDeviceProperties& properties() const { return properties_; }
+    const VkPhysicalDeviceMemoryProperties& memory_properties() const { return memory_properties_; }
+
+    // Nanoseconds per timestamp tick, and whether the queue supports timestamps at all.
+    double timestamp_period_ns() const { return properties_.limits.timestampPeriod; }
+    bool has_timestamps() const { return timestamp_valid_bits_ > 0; }
+    bool has_push_descriptors() const { return has_push_descriptors_; }
+
+    // Records one command buffer with `record`, submits it and waits for completion.
+    void submit_and_wait(const std::function<void(VkCommandBuffer)>& record) const;
+
+    // Gives a Vulkan object a name that validation messages and debuggers show.
+    void set_name(VkObjectType type, uint64_t handle, const char* name) const;
+
+    // WARNING and ERROR messages of the validation layer since creation (or the last clear).
+    std::vector<std::string> validation_messages() const;
+    void clear_validation_messages();
+
+    // Loaded extension entry points.
+    PFN_vkCmdPushDescriptorSetKHR cmd_push_descriptor_set = nullptr;
+
+private:
+    void destroy();
+    static VKAPI_ATTR VkBool32 VKAPI_CALL debug_callback(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
+                                                          VkDebugUtilsMessageTypeFlagsEXT types,
+                                                          const VkDebugUtilsMessengerCallbackDataEXT* data,
+                                                          void* user);
+
+    VkInstance instance_ = VK_NULL_HANDLE;
+    VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
+    VkPhysicalDevice physical_device_ = VK_NULL_HANDLE;
+    VkDevice device_ = VK_NULL_HANDLE;
+    VkQueue queue_ = VK_NULL_HANDLE;
+    uint32_t queue_family_ = 0;
+    uint32_t timestamp_valid_bits_ = 0;
+    bool has_push_descriptors_ = false;
+    bool has_debug_utils_ = false;
+    DeviceInfo info_;
+    VkPhysicalDeviceProperties properties_{};
+    VkPhysicalDeviceMemoryProperties memory_properties_{};
+    Handle<VkCommandPool> command_pool_;
+    PFN_vkSetDebugUtilsObjectNameEXT set_object_name_ = nullptr;
+
+    mutable std::mutex messages_mutex_;
+    std::vector<std::string> validation_messages_;
+};
+
+}  // namespace lw

@@ -1,0 +1,86 @@
+// engine/gpu/pipeline.h — compute and graphics pipelines from embedded SPIR-V.
+//
+// Shaders are compiled by glslang at build time into C arrays (CMakeLists.txt), so the
+// binary carries its SPIR-V and needs no shader files at run time. Resources are bound
+// with push descriptors (lavapipe and the H100 both have VK_KHR_push_descriptor): a pass
+// names its storage buffers per dispatch, with no descriptor pools to manage.
+#pragma once
+
+#include <cstdint>
+#include <initializer_list>
+#include <span>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include "gpu/context.h"
+#include "gpu/handle.h"
+#include "gpu/resources.h"
+
+namespace lw {
+
+// Wraps a glslang `--vn` array: LW_SPIRV(surface_vert_spv).
+#define LW_SPIRV(array) std::span<const uint32_t>(array, sizeof(array) / sizeof(uint32_t))
+
+struct ComputePipelineDesc {
+    std::span<const uint32_t> spirv;
+    uint32_t storage_buffers = 0;     // bindings 0..n-1 of set 0, all storage buffers
+    uint32_t push_constant_size = 0;  // bytes, at most 128
+    const char* name = nullptr;
+};
+
+class ComputePipeline {
+public:
+    ComputePipeline() = default;
+    ComputePipeline(const Context& ctx, const ComputePipelineDesc& desc);
+
+    // Binds the pipeline, pushes the buffers to bindings 0.., pushes constants, dispatches.
+    void dispatch(const Context& ctx, VkCommandBuffer cmd, std::initializer_list<const Buffer*> buffers,
+                  const void* push_constants, uint32_t groups_x, uint32_t groups_y = 1, uint32_t groups_z = 1) const;
+
+private:
+    Handle<VkDescriptorSetLayout> set_layout_;
+    Handle<VkPipelineLayout> layout_;
+    Handle<VkPipeline> pipeline_;
+    uint32_t storage_buffers_ = 0;
+    uint32_t push_constant_size_ = 0;
+};
+
+struct VertexAttribute {
+    uint32_t location = 0;
+    VkFormat format = VK_FORMAT_R32G32B32_SFLOAT;
+    uint32_t offset = 0;
+};
+
+struct GraphicsPipelineDesc {
+    std::span<const uint32_t> vertex_spirv;
+    std::span<const uint32_t> fragment_spirv;
+    uint32_t vertex_stride = 0;                    // one interleaved vertex binding; 0 = none
+    std::vector<VertexAttribute> attributes;
+    VkPrimitiveTopology topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+    VkCullModeFlags cull_mode = VK_CULL_MODE_NONE;
+    VkFormat color_format = VK_FORMAT_R8G8B8A8_UNORM;  // VK_FORMAT_UNDEFINED = depth only
+    VkFormat depth_format = VK_FORMAT_D32_SFLOAT;      // VK_FORMAT_UNDEFINED = no depth
+    bool depth_test = true;
+    bool depth_write = true;
+    uint32_t push_constant_size = 0;
+    const char* name = nullptr;
+};
+
+// A pipeline for dynamic rendering; viewport and scissor are dynamic state.
+class GraphicsPipeline {
+public:
+    GraphicsPipeline() = default;
+    GraphicsPipeline(const Context& ctx, const GraphicsPipelineDesc& desc);
+
+    VkPipeline get() const { return pipeline_; }
+    VkPipelineLayout layout() const { return layout_; }
+
+private:
+    Handle<VkPipelineLayout> layout_;
+    Handle<VkPipeline> pipeline_;
+};
+
+[[nodiscard]] Handle<VkShaderModule> create_shader_module(const Context& ctx, std::span<const uint32_t> spirv);
+
+}  // namespace lw

@@ -1,0 +1,121 @@
+// engine/gpu/resources.h — buffers and images with their memory, asked for by purpose.
+//
+// Memory is requested by what the data is for (Granite's BufferDomain), not by raw flags:
+//   Device   — GPU-only data (vertex, index, storage buffers, render targets);
+//   Upload   — host-written, GPU-read (staging, small uniforms), persistently mapped;
+//   Readback — GPU-written, host-read (image and buffer readback), persistently mapped.
+// One allocation per resource: the engine holds few, large resources, so a sub-allocator
+// would add code without adding speed.
+#pragma once
+
+#include <cstdint>
+#include <cstring>
+#include <span>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include "gpu/context.h"
+#include "gpu/handle.h"
+
+namespace lw {
+
+enum class MemoryPurpose { Device, Upload, Readback };
+
+struct BufferDesc {
+    VkDeviceSize size = 0;
+    VkBufferUsageFlags usage = 0;
+    MemoryPurpose purpose = MemoryPurpose::Device;
+    const char* name = nullptr;  // debug name shown by validation messages
+};
+
+class Buffer {
+public:
+    Buffer() = default;
+    Buffer(const Context& ctx, const BufferDesc& desc);
+
+    VkBuffer get() const { return buffer_; }
+    VkDeviceSize size() const { return size_; }
+    // Host pointer of an Upload or Readback buffer (nullptr for Device memory).
+    void* mapped() const { return mapped_; }
+    // Makes GPU writes visible to the host (no-op on coherent memory). Call before reading.
+    void invalidate(const Context& ctx) const;
+
+private:
+    Handle<VkBuffer> buffer_;
+    Handle<VkDeviceMemory> memory_;
+    VkDeviceSize size_ = 0;
+    void* mapped_ = nullptr;
+    bool coherent_ = true;
+};
+
+// A Device buffer filled with `bytes` through a staging buffer (waits for the copy).
+[[nodiscard]] Buffer upload_buffer(const Context& ctx, std::span<const std::byte> bytes, VkBufferUsageFlags usage,
+                                   const char* name);
+template <typename T>
+[[nodiscard]] Buffer upload_buffer(const Context& ctx, const std::vector<T>& data, VkBufferUsageFlags usage,
+                                   const char* name) {
+    return upload_buffer(ctx, std::as_bytes(std::span(data)), usage, name);
+}
+
+// Copies a Device buffer back to the host (waits for the copy).
+[[nodiscard]] std::vector<std::byte> read_buffer(const Context& ctx, const Buffer& buffer);
+template <typename T>
+[[nodiscard]] std::vector<T> read_buffer_as(const Context& ctx, const Buffer& buffer) {
+    const auto bytes = read_buffer(ctx, buffer);
+    std::vector<T> out(bytes.size() / sizeof(T));
+    std::memcpy(out.data(), bytes.data(), out.size() * sizeof(T));
+    return out;
+}
+
+struct ImageDesc {
+    uint32_t width = 0;
+    uint32_t height = 0;
+    VkFormat format = VK_FORMAT_R8G8B8A8_UNORM;
+    VkImageUsageFlags usage = 0;
+    const char* name = nullptr;
+};
+
+// A 2D, single-mip image in Device memory with a view of its whole extent.
+class Image {
+public:
+    Image() = default;
+    Image(const Context& ctx, const ImageDesc& desc);
+
+    VkImage get() const { return image_; }
+    VkImageView view() const { return view_; }
+    VkFormat format() const { return format_; }
+    VkExtent2D extent() const { return extent_; }
+    VkImageAspectFlags aspect() const { return aspect_; }
+
+private:
+    Handle<VkImage> image_;
+    Handle<VkDeviceMemory> memory_;
+    Handle<VkImageView> view_;
+    VkFormat format_ = VK_FORMAT_UNDEFINED;
+    VkExtent2D extent_{};
+    VkImageAspectFlags aspect_ = 0;
+};
+
+// Bytes per texel of the formats the engine reads back.
+uint32_t format_texel_size(VkFormat format);
+
+// Records a copy of `image` (in TRANSFER_SRC_OPTIMAL layout) into a Readback buffer.
+void record_image_to_buffer(VkCommandBuffer cmd, const Image& image, const Buffer& buffer);
+
+// One synchronization2 image layout transition on the whole image.
+struct ImageBarrier {
+    VkImageLayout old_layout = VK_IMAGE_LAYOUT_UNDEFINED;
+    VkImageLayout new_layout = VK_IMAGE_LAYOUT_UNDEFINED;
+    VkPipelineStageFlags2 src_stage = VK_PIPELINE_STAGE_2_NONE;
+    VkAccessFlags2 src_access = VK_ACCESS_2_NONE;
+    VkPipelineStageFlags2 dst_stage = VK_PIPELINE_STAGE_2_NONE;
+    VkAccessFlags2 dst_access = VK_ACCESS_2_NONE;
+};
+void record_image_barrier(VkCommandBuffer cmd, const Image& image, const ImageBarrier& barrier);
+
+// A global memory barrier (e.g. compute writes -> transfer reads).
+void record_memory_barrier(VkCommandBuffer cmd, VkPipelineStageFlags2 src_stage, VkAccessFlags2 src_access,
+                           VkPipelineStageFlags2 dst_stage, VkAccessFlags2 dst_access);
+
+}  // namespace lw

@@ -1,0 +1,74 @@
+#include "io/image_io.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include "core/error.h"
+
+namespace lw {
+
+namespace {
+
+void write_image(const std::filesystem::path& path, const OIIO::ImageSpec& spec, const void* data) {
+    auto out = OIIO::ImageOutput::create(path.string());
+    if (!out) throw Error(path.string() + ": cannot write: " + OIIO::geterror());
+    if (!out->open(path.string(), spec)) throw Error(path.string() + ": cannot open for writing: " + out->geterror());
+    if (!out->write_image(spec.format, data)) throw Error(path.string() + ": write failed: " + out->geterror());
+    if (!out->close()) throw Error(path.string() + ": close failed: " + out->geterror());
+}
+
+}  // namespace
+
+void write_png(const std::filesystem::path& path, const ImageRGBA8& image) {
+    OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::UINT8);
+    spec.attribute("oiio:UnassociatedAlpha", 1);  // store the bytes as given, never premultiplied
+    write_image(path, spec, image.pixels.data());
+}
+
+ImageRGBA8 read_image_rgba8(const std::filesystem::path& path) {
+    if (!std::filesystem::exists(path)) throw Error(path.string() + ": no such file");
+    OIIO::ImageSpec config;
+    config.attribute("oiio:UnassociatedAlpha", 1);  // no premultiplication: bytes as stored
+    auto in = OIIO::ImageInput::open(path.string(), &config);
+    if (!in) throw Error(path.string() + ": cannot read image: " + OIIO::geterror());
+    const OIIO::ImageSpec& spec = in->spec();
+    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
+        throw Error(path.string() + ": empty image");
+    std::vector<uint8_t> raw(size_t(spec.width) * spec.height * spec.nchannels);
+    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::UINT8, raw.data()))
+        throw Error(path.string() + ": read failed: " + in->geterror());
+    in->close();
+
+    ImageRGBA8 image{spec.width, spec.height, std::vector<uint8_t>(size_t(spec.width) * spec.height * 4)};
+    const int n = spec.nchannels;
+    for (size_t p = 0; p < size_t(spec.width) * spec.height; ++p) {
+        const uint8_t* src = &raw[p * n];
+        uint8_t* dst = &image.pixels[p * 4];
+        if (n == 1 || n == 2) {
+            dst[0] = dst[1] = dst[2] = src[0];
+            dst[3] = n == 2 ? src[1] : 255;
+        } else {
+            dst[0] = src[0];
+            dst[1] = src[1];
+            dst[2] = src[2];
+            dst[3] = n >= 4 ? src[3] : 255;
+        }
+    }
+    return image;
+}
+
+void write_exr(const std::filesystem::path& path, const ImageRGBA8& color, const std::vector<float>& depth) {
+    const size_t pixels = size_t(color.width) * color.height;
+    if (depth.size() != pixels) throw Error(path.string() + ": depth size does not match the image");
+    std::vector<float> data(pixels * 5);
+    for (size_t p = 0; p < pixels; ++p) {
+        for (size_t c = 0; c < 4; ++c) data[p * 5 + c] = color.pixels[p * 4 + c] / 255.0f;
+        data[p * 5 + 4] = depth[p];
+    }
+    OIIO::ImageSpec spec(color.width, color.height, 5, OIIO::TypeDesc::FLOAT);
+    spec.channelnames = {"R", "G", "B", "A", "Z"};
+    spec.alpha_channel = 3;
+    spec.z_channel = 4;
+    write_image(path, spec, data.data());
+}
+
+}  // namespace lw

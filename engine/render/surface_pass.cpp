@@ -1,0 +1,174 @@
+#include "render/surface_pass.h"
+
+#include <cstring>
+
+#include "surface_frag.h"
+#include "surface_vert.h"
+
+namespace lw {
+
+namespace {
+
+// Mirrors `SurfacePush` in shaders/surface_shared.glsl.
+struct SurfacePush {
+    glm::mat4 view_proj;
+    glm::vec4 eye;
+    glm::vec4 light_dir;
+    glm::vec4 base_color;  // w: shading mode
+};
+static_assert(sizeof(SurfacePush) == 112, "push constant layout must match surface_shared.glsl");
+
+struct Vertex {
+    glm::vec3 position;
+    glm::vec3 normal;
+};
+
+}  // namespace
+
+GpuMesh upload_mesh(const Context& ctx, const TriangleMesh& mesh) {
+    std::vector<Vertex> vertices(mesh.positions.size());
+    for (size_t i = 0; i < vertices.size(); ++i) vertices[i] = {mesh.positions[i], mesh.normals[i]};
+    return GpuMesh{
+        .vertices = upload_buffer(ctx, vertices, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                  "mesh vertices"),
+        .indices = upload_buffer(ctx, mesh.indices, VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                 "mesh indices"),
+        .index_count = static_cast<uint32_t>(mesh.indices.size())};
+}
+
+RenderTarget::RenderTarget(const Context& ctx, uint32_t w, uint32_t h)
+    : width(w),
+      height(h),
+      color(ctx, {.width = w, .height = h, .format = VK_FORMAT_R8G8B8A8_UNORM,
+                  .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                  .name = "color target"}),
+      depth(ctx, {.width = w, .height = h, .format = VK_FORMAT_D32_SFLOAT,
+                  .usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                           VK_IMAGE_USAGE_SAMPLED_BIT,
+                  .name = "depth target"}) {}
+
+SurfacePass::SurfacePass(const Context& ctx)
+    : pipeline_(ctx, {.vertex_spirv = LW_SPIRV(surface_vert_spv),
+                      .fragment_spirv = LW_SPIRV(surface_frag_spv),
+                      .vertex_stride = sizeof(Vertex),
+                      .attributes = {{.location = 0, .format = VK_FORMAT_R32G32B32_SFLOAT, .offset = 0},
+                                     {.location = 1, .format = VK_FORMAT_R32G32B32_SFLOAT,
+                                      .offset = offsetof(Vertex, normal)}},
+                      .cull_mode = VK_CULL_MODE_NONE,  // glTF parts may be single-sided or open
+                      .push_constant_size = sizeof(SurfacePush),
+                      .name = "surface"}) {}
+
+glm::vec3 key_light_direction(const CameraMatrices& camera) {
+    const glm::vec3 view_space = glm::normalize(glm::vec3(-0.4f, 0.6f, 0.7f));
+    return glm::normalize(glm::vec3(glm::inverse(camera.view) * glm::vec4(view_space, 0.0f)));
+}
+
+void SurfacePass::record(VkCommandBuffer cmd, RenderTarget& target, const GpuMesh& mesh,
+                         const CameraMatrices& camera, const glm::vec3& eye, const SurfaceStyle& style) const {
+    record_image_barrier(cmd, target.color,
+                         {.old_layout = VK_IMAGE_LAYOUT_UNDEFINED,
+                          .new_layout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                          .src_stage = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                          .src_access = VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT,
+                          .dst_stage = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                          .dst_access = VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT});
+    record_image_barrier(cmd, target.depth,
+                         {.old_layout = VK_IMAGE_LAYOUT_UNDEFINED,
+                          .new_layout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
+                          .src_stage = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                          .src_access = VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT,
+                          .dst_stage = VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT |
+                                       VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
+                          .dst_access = VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
+                                        VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT});
+
+    VkRenderingAttachmentInfo color{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
+                                    .imageView = target.color.view(),
+                                    .imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                                    .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
+                                    .storeOp = VK_ATTACHMENT_STORE_OP_STORE};
+    color.clearValue.color = {{style.background.r, style.background.g, style.background.b, 1.0f}};
+    VkRenderingAttachmentInfo depth{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
+                                    .imageView = target.depth.view(),
+                                    .imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
+                                    .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
+                                    .storeOp = VK_ATTACHMENT_STORE_OP_STORE};
+    depth.clearValue.depthStencil = {1.0f, 0};
+    VkRenderingInfo rendering{.sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
+                              .renderArea = {{0, 0}, {target.width, target.height}},
+                              .layerCount = 1,
+                              .colorAttachmentCount = 1,
+                              .pColorAttachments = &color,
+                              .pDepthAttachment = &depth};
+    vkCmdBeginRendering(cmd, &rendering);
+    VkViewport viewport{0.0f, 0.0f, float(target.width), float(target.height), 0.0f, 1.0f};
+    VkRect2D scissor{{0, 0}, {target.width, target.height}};
+    vkCmdSetViewport(cmd, 0, 1, &viewport);
+    vkCmdSetScissor(cmd, 0, 1, &scissor);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.get());
+
+    // Lines-only output still needs the depth for visibility: draw the surface in the
+    // background colour, unlit, so it writes depth but no visible shading.
+    const bool unlit = !style.draw_surface || style.shading == Shading::Unlit;
+    const glm::vec3 base = style.draw_surface ? style.color : style.background;
+    SurfacePush push{.view_proj = camera.view_proj,
+                     .eye = glm::vec4(eye, 1.0f),
+                     .light_dir = glm::vec4(key_light_direction(camera), 0.0f),
+                     .base_color = glm::vec4(base, float(unlit ? int(Shading::Unlit) : int(style.shading)))};
+    vkCmdPushConstants(cmd, pipeline_.layout(), VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+                       sizeof(push), &push);
+    VkDeviceSize offset = 0;
+    VkBuffer vertex_buffer = mesh.vertices.get();
+    vkCmdBindVertexBuffers(cmd, 0, 1, &vertex_buffer, &offset);
+    vkCmdBindIndexBuffer(cmd, mesh.indices.get(), 0, VK_INDEX_TYPE_UINT32);
+    vkCmdDrawIndexed(cmd, mesh.index_count, 1, 0, 0, 0);
+    vkCmdEndRendering(cmd);
+
+    record_image_barrier(cmd, target.color,
+                         {.old_layout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                          .new_layout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                          .src_stage = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                          .src_access = VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
+                          .dst_stage = VK_PIPELINE_STAGE_2_COPY_BIT,
+                          .dst_access = VK_ACCESS_2_TRANSFER_READ_BIT});
+    record_image_barrier(cmd, target.depth,
+                         {.old_layout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
+                          .new_layout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                          .src_stage = VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
+                          .src_access = VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+                          .dst_stage = VK_PIPELINE_STAGE_2_COPY_BIT,
+                          .dst_access = VK_ACCESS_2_TRANSFER_READ_BIT});
+}
+
+FrameReadback render_surface_frame(const Context& ctx, const SurfacePass& pass, RenderTarget& target,
+                                   const GpuMesh& mesh, const CameraMatrices& camera, const glm::vec3& eye,
+                                   const SurfaceStyle& style, GpuTimer* timer) {
+    const VkDeviceSize pixels = VkDeviceSize(target.width) * target.height;
+    Buffer color_readback(ctx, {.size = pixels * 4, .usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                .purpose = MemoryPurpose::Readback, .name = "color readback"});
+    Buffer depth_readback(ctx, {.size = pixels * 4, .usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                .purpose = MemoryPurpose::Readback, .name = "depth readback"});
+    ctx.submit_and_wait([&](VkCommandBuffer cmd) {
+        if (timer) {
+            timer->reset(cmd);
+            timer->begin(cmd, "surface");
+        }
+        pass.record(cmd, target, mesh, camera, eye, style);
+        if (timer) timer->end(cmd);
+        record_image_to_buffer(cmd, target.color, color_readback);
+        record_image_to_buffer(cmd, target.depth, depth_readback);
+        record_memory_barrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                              VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
+    });
+    color_readback.invalidate(ctx);
+    depth_readback.invalidate(ctx);
+
+    FrameReadback out;
+    out.color = ImageRGBA8{int(target.width), int(target.height), std::vector<uint8_t>(pixels * 4)};
+    std::memcpy(out.color.pixels.data(), color_readback.mapped(), pixels * 4);
+    out.depth.resize(pixels);
+    std::memcpy(out.depth.data(), depth_readback.mapped(), pixels * 4);
+    return out;
+}
+
+}  // namespace lw

@@ -1,0 +1,71 @@
+// engine/render/surface_pass.h — the shaded surface and its depth, rendered offscreen.
+//
+// Input:  a world-space `TriangleMesh` (uploaded once as a `GpuMesh`), camera matrices and
+//         a `SurfaceStyle`.
+// Output: an RGBA8 colour image and a D32 depth image in a `RenderTarget`, readable back
+//         to the host as `ImageRGBA8` and linear floats. The depth image is also what the
+//         visibility stage tests line samples against.
+//
+// Headless is the only platform here: render into VkImages with dynamic rendering, copy
+// to a host-visible buffer, read back (STYLE.md: lavapipe has no headless surface).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "core/image.h"
+#include "gpu/context.h"
+#include "gpu/pipeline.h"
+#include "gpu/resources.h"
+#include "gpu/timestamps.h"
+#include "scene/camera.h"
+#include "scene/style.h"
+#include "scene/triangle_mesh.h"
+
+namespace lw {
+
+// Vertex and index buffers of a mesh on the GPU (interleaved position + normal).
+struct GpuMesh {
+    Buffer vertices;
+    Buffer indices;
+    uint32_t index_count = 0;
+};
+[[nodiscard]] GpuMesh upload_mesh(const Context& ctx, const TriangleMesh& mesh);
+
+struct RenderTarget {
+    RenderTarget(const Context& ctx, uint32_t width, uint32_t height);
+    uint32_t width, height;
+    Image color;  // R8G8B8A8_UNORM
+    Image depth;  // D32_SFLOAT, cleared to 1
+};
+
+class SurfacePass {
+public:
+    explicit SurfacePass(const Context& ctx);
+
+    // Records the pass: clears, draws, and leaves both images in TRANSFER_SRC_OPTIMAL.
+    void record(VkCommandBuffer cmd, RenderTarget& target, const GpuMesh& mesh, const CameraMatrices& camera,
+                const glm::vec3& eye, const SurfaceStyle& style) const;
+
+private:
+    GraphicsPipeline pipeline_;
+};
+
+struct FrameReadback {
+    ImageRGBA8 color;
+    std::vector<float> depth;  // window-space depth in [0, 1], row-major, 1 = background
+};
+
+// Renders one frame and reads it back; `timer` (optional) gets the pass's GPU time.
+[[nodiscard]] FrameReadback render_surface_frame(const Context& ctx, const SurfacePass& pass, RenderTarget& target,
+                                                 const GpuMesh& mesh, const CameraMatrices& camera,
+                                                 const glm::vec3& eye, const SurfaceStyle& style,
+                                                 GpuTimer* timer = nullptr);
+
+// The key light: from the upper left of the view and in front, fixed to the camera so that
+// every view of a model is lit the same way.
+[[nodiscard]] glm::vec3 key_light_direction(const CameraMatrices& camera);
+
+}  // namespace lw

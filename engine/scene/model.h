@@ -1,0 +1,111 @@
+// engine/scene/model.h — a glTF 2.0 asset as plain data.
+//
+// Input:  a .gltf (external or data-URI buffers) or .glb file.
+// Output: `Model` — triangle primitives per mesh, the node hierarchy with local transforms,
+//         cameras, animation clips and skins, all validated (indices, accessors, buffer
+//         ranges, finite positions, an acyclic hierarchy). Evaluation of animation and
+//         skinning happens in later stages; this stage only loads and checks.
+//
+// Every problem is reported as lw::Error("<file>: <problem>") — never a crash or a silent
+// default. Non-triangle primitives (points, lines) are skipped; strips and fans are
+// converted to triangle lists.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+namespace lw {
+
+struct Primitive {
+    std::vector<glm::vec3> positions;   // POSITION, object space
+    std::vector<glm::vec3> normals;     // NORMAL, empty when the file has none
+    std::vector<uint32_t> indices;      // triangle list, 3 per triangle, each < positions.size()
+    std::vector<glm::u16vec4> joints;   // JOINTS_0, empty when not skinned
+    std::vector<glm::vec4> weights;     // WEIGHTS_0, empty when not skinned
+    int material = -1;
+};
+
+struct Mesh {
+    std::string name;
+    std::vector<Primitive> primitives;
+};
+
+struct Node {
+    std::string name;
+    int parent = -1;                 // -1 for a root
+    std::vector<int> children;
+    int mesh = -1;
+    int camera = -1;
+    int skin = -1;
+    // Local transform: either a matrix or translation/rotation/scale (glTF 2.0 §5.25).
+    bool has_matrix = false;
+    glm::mat4 matrix{1.0f};
+    glm::vec3 translation{0.0f};
+    glm::quat rotation{1.0f, 0.0f, 0.0f, 0.0f};  // w, x, y, z
+    glm::vec3 scale{1.0f};
+
+    glm::mat4 local_transform() const;
+};
+
+struct Camera {
+    enum class Type { Perspective, Orthographic };
+    std::string name;
+    Type type = Type::Perspective;
+    float yfov = 0.8f;         // radians (perspective)
+    float aspect = 0.0f;       // 0 = use the image's
+    float xmag = 1.0f, ymag = 1.0f;  // orthographic half extents
+    float znear = 0.01f;
+    float zfar = 0.0f;         // 0 = infinite (perspective)
+};
+
+struct AnimationSampler {
+    enum class Interpolation { Linear, Step, CubicSpline };
+    Interpolation interpolation = Interpolation::Linear;
+    std::vector<float> times;   // strictly increasing key times, seconds
+    std::vector<float> values;  // times.size() * components (× 3 for CUBICSPLINE)
+    int components = 0;         // 3 (T, S), 4 (R) or the morph-target count (weights)
+};
+
+struct AnimationChannel {
+    enum class Path { Translation, Rotation, Scale, Weights };
+    int node = -1;
+    Path path = Path::Translation;
+    int sampler = -1;
+};
+
+struct Animation {
+    std::string name;
+    std::vector<AnimationSampler> samplers;
+    std::vector<AnimationChannel> channels;
+    float duration = 0.0f;  // last key time over all samplers
+};
+
+struct Skin {
+    std::string name;
+    std::vector<int> joints;                 // node indices
+    std::vector<glm::mat4> inverse_bind;     // one per joint (identity when absent)
+    int skeleton = -1;
+};
+
+struct Model {
+    std::filesystem::path path;
+    std::vector<Mesh> meshes;
+    std::vector<Node> nodes;
+    std::vector<int> roots;   // root nodes of the default scene (all parentless nodes if none)
+    std::vector<Camera> cameras;
+    std::vector<Animation> animations;
+    std::vector<Skin> skins;
+};
+
+// Loads and validates a .gltf or .glb file. Throws lw::Error naming the file and the problem.
+[[nodiscard]] Model load_gltf(const std::filesystem::path& path);
+
+// World transform of every node in the rest pose (local transforms composed from the roots).
+[[nodiscard]] std::vector<glm::mat4> world_transforms(const Model& model);
+
+}  // namespace lw

@@ -1,0 +1,201 @@
+#include "scene/scene_file.h"
+
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "core/error.h"
+
+namespace lw {
+
+namespace {
+
+using json = nlohmann::json;
+
+// Reads one JSON object, remembering which keys were consumed so that the rest can be
+// reported as unknown. `where` is the key path used in messages ("" for the root).
+class ObjectReader {
+public:
+    ObjectReader(const json& object, std::string where, const std::filesystem::path& file)
+        : object_(object), where_(std::move(where)), file_(file) {
+        if (!object_.is_object()) fail(where_.empty() ? "the scene must be a JSON object" : "must be an object");
+    }
+
+    bool has(const std::string& key) {
+        known_.insert(key);
+        return object_.contains(key);
+    }
+    const json& at(const std::string& key) { return object_.at(key); }
+    std::string path(const std::string& key) const { return where_.empty() ? key : where_ + "." + key; }
+
+    [[noreturn]] void fail_key(const std::string& key, const std::string& problem) const {
+        throw Error(file_.string() + ": " + path(key) + ": " + problem);
+    }
+    [[noreturn]] void fail(const std::string& problem) const {
+        throw Error(file_.string() + ": " + (where_.empty() ? "" : where_ + ": ") + problem);
+    }
+
+    double number(const std::string& key, double lo, double hi) {
+        const json& v = at(key);
+        if (!v.is_number()) fail_key(key, "expected a number, got " + std::string(v.type_name()));
+        const double x = v.get<double>();
+        if (!std::isfinite(x) || x < lo || x > hi)
+            fail_key(key, "must be between " + format(lo) + " and " + format(hi) + ", got " + v.dump());
+        return x;
+    }
+
+    std::string string_of(const std::string& key, const std::set<std::string>& allowed = {}) {
+        const json& v = at(key);
+        if (!v.is_string()) fail_key(key, "expected a string, got " + std::string(v.type_name()));
+        std::string s = v.get<std::string>();
+        if (!allowed.empty() && !allowed.count(s)) {
+            std::string list;
+            for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
+            fail_key(key, "must be one of " + list + ", got \"" + s + "\"");
+        }
+        return s;
+    }
+
+    glm::vec3 vec3(const std::string& key, double lo = -1e30, double hi = 1e30) {
+        const json& v = at(key);
+        if (!v.is_array() || v.size() != 3) fail_key(key, "expected an array of 3 numbers");
+        glm::vec3 out;
+        for (int i = 0; i < 3; ++i) {
+            if (!v[i].is_number()) fail_key(key, "expected an array of 3 numbers");
+            const double x = v[i].get<double>();
+            if (!std::isfinite(x) || x < lo || x > hi)
+                fail_key(key, "components must be between " + format(lo) + " and " + format(hi));
+            out[i] = static_cast<float>(x);
+        }
+        return out;
+    }
+
+    // Every key of the object must have been asked for.
+    void reject_unknown() const {
+        for (const auto& [key, value] : object_.items())
+            if (!known_.count(key)) {
+                std::string list;
+                for (const auto& k : known_) list += (list.empty() ? "" : ", ") + k;
+                fail_key(key, "unknown key (known here: " + list + ")");
+            }
+    }
+
+private:
+    static std::string format(double x) {
+        std::ostringstream s;
+        s << x;
+        return s.str();
+    }
+
+    const json& object_;
+    std::string where_;
+    const std::filesystem::path& file_;
+    std::set<std::string> known_;
+};
+
+ViewCamera read_camera(ObjectReader& parent, const std::filesystem::path& file, float* fov_deg) {
+    ObjectReader r(parent.at("camera"), "camera", file);
+    ViewCamera camera;
+    const bool has_eye = r.has("eye"), has_target = r.has("target");
+    if (!has_eye) r.fail_key("eye", "required");
+    if (!has_target) r.fail_key("target", "required");
+    camera.eye = r.vec3("eye");
+    camera.target = r.vec3("target");
+    if (r.has("up")) camera.up = r.vec3("up");
+    if (r.has("fov")) camera.fov_deg = static_cast<float>(r.number("fov", 1.0, 170.0));
+    if (r.has("near")) camera.znear = static_cast<float>(r.number("near", 1e-6, 1e30));
+    if (r.has("far")) camera.zfar = static_cast<float>(r.number("far", 1e-6, 1e30));
+    r.reject_unknown();
+    if (camera.eye == camera.target) r.fail("eye and target coincide");
+    if (glm::length(glm::cross(camera.target - camera.eye, camera.up)) < 1e-9f) r.fail_key("up", "is parallel to the view direction");
+    if (camera.zfar > 0.0f && camera.znear > 0.0f && camera.zfar <= camera.znear) r.fail_key("far", "must exceed near");
+    *fov_deg = camera.fov_deg;
+    return camera;
+}
+
+}  // namespace
+
+bool is_model_path(const std::filesystem::path& path) {
+    std::string ext = path.extension().string();
+    for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return ext == ".gltf" || ext == ".glb";
+}
+
+SceneDesc scene_for_model(const std::filesystem::path& model) {
+    SceneDesc scene;
+    scene.models = {model};
+    return scene;
+}
+
+SceneDesc parse_scene_json(const std::string& text, const std::filesystem::path& source) {
+    json root;
+    try {
+        root = json::parse(text);
+    } catch (const json::parse_error& e) {
+        std::string what = e.what();
+        const auto colon = what.find("parse error");
+        throw Error(source.string() + ": invalid JSON: " + (colon == std::string::npos ? what : what.substr(colon)));
+    }
+
+    SceneDesc scene;
+    scene.source = source;
+    const std::filesystem::path base = source.parent_path();
+    ObjectReader r(root, "", source);
+
+    if (r.has("version") && r.number("version", 1, 1) != 1) r.fail_key("version", "unsupported");
+    if (!r.has("model")) r.fail_key("model", "required (a .gltf/.glb path, or an array of them)");
+    {
+        const json& m = r.at("model");
+        std::vector<std::string> names;
+        if (m.is_string()) {
+            names.push_back(m.get<std::string>());
+        } else if (m.is_array() && !m.empty()) {
+            for (const auto& item : m) {
+                if (!item.is_string()) r.fail_key("model", "array items must be strings");
+                names.push_back(item.get<std::string>());
+            }
+        } else {
+            r.fail_key("model", "expected a path or a non-empty array of paths");
+        }
+        for (const auto& name : names) {
+            std::filesystem::path p(name);
+            if (!is_model_path(p)) r.fail_key("model", "\"" + name + "\" is not a .gltf or .glb file");
+            scene.models.push_back(p.is_absolute() ? p : base / p);
+        }
+    }
+    if (r.has("size")) {
+        const json& s = r.at("size");
+        if (!s.is_array() || s.size() != 2 || !s[0].is_number_integer() || !s[1].is_number_integer())
+            r.fail_key("size", "expected [width, height] in pixels");
+        const long long w = s[0].get<long long>(), h = s[1].get<long long>();
+        if (w < 1 || h < 1 || w > 16384 || h > 16384) r.fail_key("size", "width and height must be 1..16384");
+        scene.width = static_cast<int>(w);
+        scene.height = static_cast<int>(h);
+    }
+    if (r.has("fov")) scene.fov_deg = static_cast<float>(r.number("fov", 1.0, 170.0));
+    if (r.has("camera")) scene.camera = read_camera(r, source, &scene.fov_deg);
+    if (r.has("shading")) {
+        const std::string s = r.string_of("shading", {"flat", "toon", "unlit", "none"});
+        if (s == "flat") scene.style.shading = Shading::Flat;
+        if (s == "toon") scene.style.shading = Shading::Toon;
+        if (s == "unlit") scene.style.shading = Shading::Unlit;
+        if (s == "none") scene.style.draw_surface = false;
+    }
+    if (r.has("color")) scene.style.color = r.vec3("color", 0.0, 1.0);
+    if (r.has("background")) scene.style.background = r.vec3("background", 0.0, 1.0);
+    r.reject_unknown();
+    return scene;
+}
+
+SceneDesc load_scene_file(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw Error(path.string() + ": cannot open scene file (" + (std::filesystem::exists(path) ? "unreadable" : "no such file") + ")");
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    return parse_scene_json(buffer.str(), path);
+}
+
+}  // namespace lw

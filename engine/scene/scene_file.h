@@ -1,0 +1,44 @@
+// engine/scene/scene_file.h — scene files (JSON) and bare models as one description.
+//
+// Input:  a scene file (see README "Scene files") or a bare .gltf/.glb path.
+// Output: `SceneDesc` — model paths (resolved against the scene file's folder), image
+//         size, an optional fixed camera, and the surface style.
+//
+// Every key is checked: an unknown key or a value of the wrong type or range is an
+// lw::Error naming the file and the key path (e.g. `camera.fov`). No silent defaults for
+// what the user wrote; defaults only for what they left out.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "scene/camera.h"
+#include "scene/style.h"
+
+namespace lw {
+
+struct SceneDesc {
+    std::filesystem::path source;                // the scene file; empty for a bare model
+    std::vector<std::filesystem::path> models;   // at least one
+    int width = 960;
+    int height = 720;
+    std::optional<ViewCamera> camera;            // absent: frame the bounding box
+    float fov_deg = 40.0f;                       // used when framing
+    SurfaceStyle style;
+};
+
+// Reads and validates a scene file. Throws lw::Error("<file>: <key>: <problem>").
+[[nodiscard]] SceneDesc load_scene_file(const std::filesystem::path& path);
+
+// Parses scene JSON text; `source` names it in errors and anchors relative model paths.
+[[nodiscard]] SceneDesc parse_scene_json(const std::string& text, const std::filesystem::path& source);
+
+// A scene of one model with every default.
+[[nodiscard]] SceneDesc scene_for_model(const std::filesystem::path& model);
+
+// True when the path names a glTF model (by extension) rather than a scene file.
+[[nodiscard]] bool is_model_path(const std::filesystem::path& path);
+
+}  // namespace lw

@@ -1,0 +1,35 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// Surface pass, fragment stage: flat (face normals from screen derivatives), toon (three
+// bands of Lambert on the smooth normal, the usual backdrop for line drawings) or unlit.
+// Faces are lit from whichever side faces the eye: open scans and single-sided parts of
+// glTF models must not turn black from behind.
+#include "surface_shared.glsl"
+
+layout(location = 0) in vec3 in_world;
+layout(location = 1) in vec3 in_normal;
+
+layout(location = 0) out vec4 out_color;
+
+void main() {
+    int mode = int(pc.base_color.w);
+    vec3 to_eye = normalize(pc.eye.xyz - in_world);
+    vec3 n;
+    if (mode == SHADING_FLAT) {
+        n = normalize(cross(dFdx(in_world), dFdy(in_world)));
+    } else {
+        n = normalize(in_normal);
+    }
+    if (dot(n, to_eye) < 0.0) n = -n;
+
+    float lambert = max(dot(n, pc.light_dir.xyz), 0.0);
+    float intensity;
+    if (mode == SHADING_TOON) {
+        intensity = lambert > 0.6 ? 1.0 : (lambert > 0.25 ? 0.8 : 0.6);
+    } else if (mode == SHADING_FLAT) {
+        intensity = 0.35 + 0.65 * lambert;
+    } else {
+        intensity = 1.0;
+    }
+    out_color = vec4(pc.base_color.rgb * intensity, 1.0);
+}

@@ -1,0 +1,89 @@
+// Scene files: every key checked, errors name the file and the key path.
+#include "core/error.h"
+#include "scene/scene_file.h"
+#include "test_support.h"
+
+namespace lw {
+namespace {
+
+std::string error_of(const std::string& json) {
+    try {
+        (void)parse_scene_json(json, "scenes/x.json");
+    } catch (const Error& e) {
+        return e.what();
+    }
+    return "(no error)";
+}
+
+TEST(SceneFile, ReadsEveryKey) {
+    const SceneDesc s = parse_scene_json(R"({
+        "model": "models/spot.glb", "size": [640, 480], "shading": "flat",
+        "color": [0.5, 0.25, 1], "background": [0, 0, 0],
+        "camera": {"eye": [1, 2, 3], "target": [0, 0.5, 0], "up": [0, 0, 1], "fov": 30, "near": 0.1, "far": 50}})",
+                                         "scenes/x.json");
+    ASSERT_EQ(s.models.size(), 1u);
+    EXPECT_EQ(s.models[0], std::filesystem::path("scenes/models/spot.glb"));
+    EXPECT_EQ(s.width, 640);
+    EXPECT_EQ(s.height, 480);
+    EXPECT_EQ(s.style.shading, Shading::Flat);
+    EXPECT_EQ(s.style.color, glm::vec3(0.5f, 0.25f, 1.0f));
+    EXPECT_EQ(s.style.background, glm::vec3(0.0f));
+    ASSERT_TRUE(s.camera.has_value());
+    EXPECT_EQ(s.camera->eye, glm::vec3(1, 2, 3));
+    EXPECT_EQ(s.camera->up, glm::vec3(0, 0, 1));
+    EXPECT_FLOAT_EQ(s.camera->fov_deg, 30.0f);
+    EXPECT_FLOAT_EQ(s.camera->znear, 0.1f);
+}
+
+TEST(SceneFile, DefaultsWhenLeftOut) {
+    const SceneDesc s = parse_scene_json(R"({"model": ["a.glb", "/abs/b.gltf"]})", "dir/x.json");
+    ASSERT_EQ(s.models.size(), 2u);
+    EXPECT_EQ(s.models[0], std::filesystem::path("dir/a.glb"));
+    EXPECT_EQ(s.models[1], std::filesystem::path("/abs/b.gltf"));
+    EXPECT_FALSE(s.camera.has_value());
+    EXPECT_EQ(s.style.shading, Shading::Toon);
+    EXPECT_TRUE(s.style.draw_surface);
+}
+
+TEST(SceneFile, ErrorsNameTheKey) {
+    EXPECT_EQ(error_of(R"({"model": "a.glb", "sise": [1, 2]})").rfind("scenes/x.json: sise: unknown key", 0), 0u);
+    EXPECT_EQ(error_of(R"({"model": "a.glb", "camera": {"eye": [0,0,1], "target": [0,0,0], "fovv": 3}})")
+                  .rfind("scenes/x.json: camera.fovv: unknown key", 0),
+              0u);
+    EXPECT_EQ(error_of(R"({"model": "a.glb", "size": [0, 10]})"),
+              "scenes/x.json: size: width and height must be 1..16384");
+    EXPECT_EQ(error_of(R"({"model": "a.glb", "size": "big"})"), "scenes/x.json: size: expected [width, height] in pixels");
+    EXPECT_EQ(error_of(R"({"model": "a.glb", "shading": "glossy"})"),
+              "scenes/x.json: shading: must be one of flat, none, toon, unlit, got \"glossy\"");
+    EXPECT_EQ(error_of(R"({"model": "a.glb", "color": [2, 0, 0]})"),
+              "scenes/x.json: color: components must be between 0 and 1");
+    EXPECT_EQ(error_of(R"({"model": "a.glb", "camera": {"eye": [0,0,1], "target": [0,0,1]}})"),
+              "scenes/x.json: camera: eye and target coincide");
+    EXPECT_EQ(error_of(R"({"model": "a.glb", "camera": {"eye": [0,0,1], "target": [0,0,0], "fov": 200}})"),
+              "scenes/x.json: camera.fov: must be between 1 and 170, got 200");
+    EXPECT_EQ(error_of(R"({"model": "a.glb", "camera": {"target": [0,0,0]}})"), "scenes/x.json: camera.eye: required");
+    EXPECT_EQ(error_of(R"({"size": [10, 10]})").rfind("scenes/x.json: model: required", 0), 0u);
+    EXPECT_EQ(error_of(R"({"model": "a.obj"})"), "scenes/x.json: model: \"a.obj\" is not a .gltf or .glb file");
+    EXPECT_EQ(error_of(R"([1, 2])"), "scenes/x.json: the scene must be a JSON object");
+    EXPECT_EQ(error_of(R"({"model": "a.glb",)").rfind("scenes/x.json: invalid JSON: parse error", 0), 0u);
+}
+
+TEST(SceneFile, MissingFileIsNamed) {
+    try {
+        (void)load_scene_file("/no/such/scene.json");
+        FAIL();
+    } catch (const Error& e) {
+        EXPECT_STREQ(e.what(), "/no/such/scene.json: cannot open scene file (no such file)");
+    }
+}
+
+TEST(SceneFile, ShippedScenesAreValid) {
+    for (const auto& entry : std::filesystem::directory_iterator(test::source_dir() / "scenes")) {
+        if (entry.path().extension() != ".json") continue;
+        const SceneDesc s = load_scene_file(entry.path());
+        for (const auto& model : s.models) EXPECT_TRUE(std::filesystem::exists(model)) << model;
+    }
+}
+
+}  // namespace
+}  // namespace lw

@@ -1,0 +1,29 @@
+// tools/linework/commands.h — the `linework` subcommands.
+//
+// Each subcommand registers its options on the CLI11 app and returns the function that
+// runs it once the command line has been parsed. Runners return the process exit code and
+// throw lw::Error for bad input (exit code 1) or bad usage (exit code 2).
+#pragma once
+
+#include <functional>
+#include <string>
+
+#include <CLI/CLI.hpp>
+#include <glm/glm.hpp>
+
+namespace lw::cli {
+
+using Runner = std::function<int()>;
+
+Runner add_render_command(CLI::App& app);
+Runner add_diff_command(CLI::App& app);
+Runner add_devices_command(CLI::App& app);
+
+// "1,2.5,-3" -> vec3; throws a usage error naming `option`.
+glm::vec3 parse_vec3(const std::string& text, const std::string& option);
+// "1920x1080" -> (1920, 1080); throws a usage error naming `option`.
+glm::ivec2 parse_size(const std::string& text, const std::string& option);
+// True when LINEWORK_VALIDATION is set to something other than 0 or empty.
+bool validation_from_environment();
+
+}  // namespace lw::cli

@@ -1,0 +1,66 @@
+// `linework diff A.png B.png` — the golden-image comparison the tests use.
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+#include "commands.h"
+#include "core/image.h"
+#include "io/image_io.h"
+
+namespace lw::cli {
+
+namespace {
+
+struct DiffOptions {
+    std::string a, b, out;
+    int max_error = 255;
+    double min_psnr = 40.0;
+    int tolerance = 16;
+    double max_differing = 0.005;
+};
+
+int run_diff(const DiffOptions& o) {
+    const ImageRGBA8 a = read_image_rgba8(o.a);
+    const ImageRGBA8 b = read_image_rgba8(o.b);
+    const ImageDiff d = compare_images(a, b, o.tolerance);
+    std::printf("max abs error: %d\n", d.max_abs_error);
+    std::printf("rmse: %.4f\n", d.rmse);
+    if (std::isinf(d.psnr_db))
+        std::printf("psnr: inf dB\n");
+    else
+        std::printf("psnr: %.2f dB\n", d.psnr_db);
+    std::printf("differing pixels (> %d): %.4f %%\n", o.tolerance, 100.0 * d.differing_fraction);
+    if (!o.out.empty()) {
+        write_png(o.out, d.diff);
+        std::printf("wrote %s\n", o.out.c_str());
+    }
+    const bool pass = d.max_abs_error <= o.max_error && d.psnr_db >= o.min_psnr && d.differing_fraction <= o.max_differing;
+    std::printf("%s\n", pass ? "match" : "MISMATCH");
+    return pass ? 0 : 1;
+}
+
+}  // namespace
+
+Runner add_diff_command(CLI::App& app) {
+    auto o = std::make_shared<DiffOptions>();
+    CLI::App* cmd = app.add_subcommand(
+        "diff",
+        "Compare two images: prints max absolute error, RMSE, PSNR and the share of differing pixels;\n"
+        "exits 1 when any threshold is passed.");
+    cmd->add_option("a", o->a, "First image")->required();
+    cmd->add_option("b", o->b, "Second image")->required();
+    cmd->add_option("--out", o->out, "Write the amplified difference (|A-B| x 8) as PNG");
+    cmd->add_option("--max-error", o->max_error, "Largest per-channel difference allowed (0-255)")
+        ->check(CLI::Range(0, 255))
+        ->capture_default_str();
+    cmd->add_option("--min-psnr", o->min_psnr, "Smallest PSNR allowed, dB")->capture_default_str();
+    cmd->add_option("--tolerance", o->tolerance, "Per-channel difference under which a pixel still matches")
+        ->check(CLI::Range(0, 255))
+        ->capture_default_str();
+    cmd->add_option("--max-differing", o->max_differing, "Largest share of differing pixels allowed (0-1)")
+        ->check(CLI::Range(0.0, 1.0))
+        ->capture_default_str();
+    return [o] { return run_diff(*o); };
+}
+
+}  // namespace lw::cli

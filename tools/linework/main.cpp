@@ -1,0 +1,53 @@
+// tools/linework/main.cpp — the `linework` command: one binary, one subcommand per job.
+//
+// Exit codes: 0 success; 1 bad input or a failed run (the message names the file and the
+// problem); 2 bad command-line usage.
+#include <cstdio>
+#include <exception>
+#include <utility>
+#include <vector>
+
+#include "commands.h"
+#include "core/error.h"
+
+int main(int argc, char** argv) {
+    CLI::App app{"linework — real-time line stylization on Vulkan.\n"
+                 "Renders glTF models and scene files headlessly (Mesa lavapipe or a GPU)."};
+    app.require_subcommand(1);
+    app.set_version_flag("--version", "linework 0.1.0");
+
+    std::vector<std::pair<CLI::App*, lw::cli::Runner>> commands;
+    auto add = [&](lw::cli::Runner (*adder)(CLI::App&)) {
+        const size_t before = app.get_subcommands({}).size();
+        lw::cli::Runner runner = adder(app);
+        commands.emplace_back(app.get_subcommands({})[before], std::move(runner));
+    };
+    add(&lw::cli::add_render_command);
+    add(&lw::cli::add_diff_command);
+    add(&lw::cli::add_devices_command);
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        app.exit(e);
+        return 2;
+    }
+
+    try {
+        for (auto& [subcommand, runner] : commands)
+            if (subcommand->parsed()) return runner();
+    } catch (const lw::Error& e) {
+        std::fprintf(stderr, "linework: error: %s\n", e.what());
+        return e.exit_code();
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "linework: internal error: %s\n", e.what());
+        return 1;
+    }
+    return 0;
+}

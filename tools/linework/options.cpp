@@ -1,0 +1,55 @@
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+
+#include "commands.h"
+#include "core/error.h"
+
+namespace lw::cli {
+
+namespace {
+bool parse_float(const std::string& text, float* out) {
+    char* end = nullptr;
+    const float value = std::strtof(text.c_str(), &end);
+    if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value)) return false;
+    *out = value;
+    return true;
+}
+}  // namespace
+
+glm::vec3 parse_vec3(const std::string& text, const std::string& option) {
+    std::stringstream stream(text);
+    std::string part;
+    glm::vec3 v{0.0f};
+    int i = 0;
+    while (std::getline(stream, part, ',')) {
+        if (i >= 3 || !parse_float(part, &v[i])) i = 4;
+        ++i;
+    }
+    if (i != 3) throw usage_error(option + ": expected three numbers x,y,z, got \"" + text + "\"");
+    return v;
+}
+
+glm::ivec2 parse_size(const std::string& text, const std::string& option) {
+    const auto x = text.find('x');
+    int w = 0, h = 0;
+    try {
+        size_t used_w = 0, used_h = 0;
+        if (x == std::string::npos) throw 0;
+        w = std::stoi(text.substr(0, x), &used_w);
+        h = std::stoi(text.substr(x + 1), &used_h);
+        if (used_w != x || used_h != text.size() - x - 1) throw 0;
+    } catch (...) {
+        throw usage_error(option + ": expected WIDTHxHEIGHT such as 1920x1080, got \"" + text + "\"");
+    }
+    if (w < 1 || h < 1 || w > 16384 || h > 16384)
+        throw usage_error(option + ": width and height must be between 1 and 16384, got \"" + text + "\"");
+    return {w, h};
+}
+
+bool validation_from_environment() {
+    const char* value = std::getenv("LINEWORK_VALIDATION");
+    return value && *value && std::string(value) != "0";
+}
+
+}  // namespace lw::cli
