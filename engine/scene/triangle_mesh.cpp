@@ -1,0 +1,132 @@
+// engine/scene/triangle_mesh.cpp — every mesh instance of a model in one world-space list.
+#include "scene/triangle_mesh.h"
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "core/error.h"
+
+namespace lw {
+
+namespace {
+
+bool usable(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+// Appends one primitive transformed by `transform`. Normals go through the inverse-transpose
+// so that non-uniform scale keeps them perpendicular to the surface; it is computed as the
+// cofactor matrix scaled by the determinant's sign, which has the same direction and stays
+// finite when a node's scale collapses to zero.
+void append_instance(TriangleMesh& out, const Primitive& primitive, const glm::mat4& transform) {
+    const glm::mat3 linear(transform);
+    const float det = glm::determinant(linear);
+    // A mirroring transform turns counter-clockwise faces clockwise: swap two corners back.
+    const bool flip = det < 0.0f;
+
+    const size_t base = out.positions.size();
+    std::vector<glm::vec3> positions(primitive.positions.size());
+    for (size_t v = 0; v < positions.size(); ++v)
+        positions[v] = glm::vec3(transform * glm::vec4(primitive.positions[v], 1.0f));
+
+    std::vector<uint32_t> local(primitive.indices.size());
+    for (size_t t = 0; t + 2 < primitive.indices.size(); t += 3) {
+        local[t] = primitive.indices[t];
+        local[t + 1] = primitive.indices[flip ? t + 2 : t + 1];
+        local[t + 2] = primitive.indices[flip ? t + 1 : t + 2];
+    }
+
+    std::vector<glm::vec3> normals;
+    bool need_computed = primitive.normals.size() != positions.size();
+    if (!need_computed) {
+        const glm::mat3 cofactor(glm::cross(linear[1], linear[2]), glm::cross(linear[2], linear[0]),
+                                 glm::cross(linear[0], linear[1]));
+        const float sign = flip ? -1.0f : 1.0f;
+        normals.resize(positions.size());
+        for (size_t v = 0; v < normals.size(); ++v) {
+            const glm::vec3 n = sign * (cofactor * primitive.normals[v]);
+            const float length = glm::length(n);
+            if (length > 0.0f && std::isfinite(length)) {
+                normals[v] = n / length;
+            } else {
+                normals[v] = glm::vec3(0.0f);  // replaced below
+                need_computed = true;
+            }
+        }
+    }
+    if (need_computed) {
+        // From the transformed, re-wound triangles: already world-space and outward.
+        const std::vector<glm::vec3> computed = vertex_normals(positions, local);
+        if (normals.empty()) {
+            normals = computed;
+        } else {
+            for (size_t v = 0; v < normals.size(); ++v)
+                if (normals[v] == glm::vec3(0.0f)) normals[v] = computed[v];
+        }
+    }
+
+    out.positions.insert(out.positions.end(), positions.begin(), positions.end());
+    out.normals.insert(out.normals.end(), normals.begin(), normals.end());
+    out.indices.reserve(out.indices.size() + local.size());
+    for (uint32_t index : local) out.indices.push_back(static_cast<uint32_t>(base + index));
+}
+
+}  // namespace
+
+TriangleMesh flatten(const Model& model, const std::vector<glm::mat4>& world) {
+    if (world.size() != model.nodes.size())
+        throw Error(model.path.string() + ": flatten got " + std::to_string(world.size()) + " world transforms for " +
+                    std::to_string(model.nodes.size()) + " nodes");
+    TriangleMesh out;
+    // Depth-first from the roots, children in file order: a deterministic vertex order.
+    // `visited` keeps a malformed hand-built hierarchy from looping or drawing a node twice.
+    std::vector<char> visited(model.nodes.size(), 0);
+    std::vector<int> stack(model.roots.rbegin(), model.roots.rend());
+    while (!stack.empty()) {
+        const int n = stack.back();
+        stack.pop_back();
+        if (n < 0 || static_cast<size_t>(n) >= model.nodes.size() || visited[static_cast<size_t>(n)]) continue;
+        visited[static_cast<size_t>(n)] = 1;
+        const Node& node = model.nodes[static_cast<size_t>(n)];
+        if (node.mesh >= 0 && static_cast<size_t>(node.mesh) < model.meshes.size())
+            for (const Primitive& primitive : model.meshes[static_cast<size_t>(node.mesh)].primitives)
+                append_instance(out, primitive, world[static_cast<size_t>(n)]);
+        stack.insert(stack.end(), node.children.rbegin(), node.children.rend());
+    }
+    if (out.positions.size() > std::numeric_limits<uint32_t>::max())
+        throw Error(model.path.string() + ": more than 2^32 vertices after instancing");
+    return out;
+}
+
+Bounds compute_bounds(const std::vector<glm::vec3>& positions) {
+    Bounds bounds;
+    if (positions.empty()) return bounds;
+    bounds.min = bounds.max = positions.front();
+    for (const glm::vec3& p : positions) {
+        bounds.min = glm::min(bounds.min, p);
+        bounds.max = glm::max(bounds.max, p);
+    }
+    return bounds;
+}
+
+std::vector<glm::vec3> vertex_normals(const std::vector<glm::vec3>& positions, const std::vector<uint32_t>& indices) {
+    std::vector<glm::vec3> sum(positions.size(), glm::vec3(0.0f));
+    for (size_t t = 0; t + 2 < indices.size(); t += 3) {
+        const uint32_t a = indices[t], b = indices[t + 1], c = indices[t + 2];
+        if (a >= positions.size() || b >= positions.size() || c >= positions.size()) continue;
+        // The cross product's length is twice the area: summing it weights by area, and a
+        // zero-area face adds nothing.
+        const glm::vec3 face = glm::cross(positions[b] - positions[a], positions[c] - positions[a]);
+        if (!usable(face)) continue;
+        sum[a] += face;
+        sum[b] += face;
+        sum[c] += face;
+    }
+    for (glm::vec3& n : sum) {
+        const float length = glm::length(n);
+        // Isolated vertices, or faces that cancel out: any unit vector beats a NaN.
+        n = length > 0.0f && std::isfinite(length) ? n / length : glm::vec3(0.0f, 0.0f, 1.0f);
+    }
+    return sum;
+}
+
+}  // namespace lw

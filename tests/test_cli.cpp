@@ -1,0 +1,123 @@
+// The `linework` command as a user meets it: exit codes, messages, files written.
+#include <filesystem>
+#include <fstream>
+
+#include "test_support.h"
+
+namespace lw {
+namespace {
+
+namespace fs = std::filesystem;
+using test::quote;
+using test::run_linework;
+
+// Every invalid glTF file shipped in tests/data/invalid (copies of ../shared/invalid).
+std::vector<std::string> invalid_files() {
+    std::vector<std::string> files;
+    for (const auto& entry : fs::recursive_directory_iterator(test::data_dir() / "invalid")) {
+        const auto ext = entry.path().extension();
+        if (ext == ".glb" || ext == ".gltf") files.push_back(fs::relative(entry.path(), test::data_dir() / "invalid").string());
+    }
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+class InvalidModel : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(InvalidModel, RenderFailsWithOneClearError) {
+    const fs::path file = test::data_dir() / "invalid" / GetParam();
+    const auto r = run_linework("render " + quote(file) + " -o " + quote(test::temp_dir()));
+    EXPECT_EQ(r.exit_code, 1) << r.output;
+    EXPECT_NE(r.output.find("linework: error: " + file.string() + ": "), std::string::npos)
+        << "the message must name the file: " << r.output;
+    EXPECT_EQ(r.output.find("internal error"), std::string::npos) << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << "one line: " << r.output;
+}
+
+INSTANTIATE_TEST_SUITE_P(SharedInvalid, InvalidModel, ::testing::ValuesIn(invalid_files()), [](const auto& param_info) {
+    std::string name = param_info.param;
+    for (auto& c : name)
+        if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+    return name;
+});
+
+TEST(Cli, RendersTheDefaultScene) {
+    const fs::path out = test::temp_dir();
+    const auto r = run_linework("render " + quote(test::source_dir() / "scenes/default.json") + " -o " + quote(out) +
+                                " --device cpu --size 200x150 --exr");
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("device: llvmpipe"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("size: 200x150"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("frame 0: "), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("wrote " + (out / "frame_0000.png").string()), std::string::npos) << r.output;
+    EXPECT_GT(fs::file_size(out / "frame_0000.png"), 500u);
+    EXPECT_GT(fs::file_size(out / "frame_0000.exr"), 200u * 150u);  // 5 float channels, compressed
+}
+
+TEST(Cli, ExplicitCameraChangesTheImage) {
+    const fs::path out = test::temp_dir();
+    const fs::path model = test::data_dir() / "models/spot/spot.glb";
+    auto a = run_linework("render " + quote(model) + " -o " + quote(out / "a") + " --device cpu --size 96x96");
+    auto b = run_linework("render " + quote(model) + " -o " + quote(out / "b") +
+                          " --device cpu --size 96x96 --eye 3,0,0 --target 0,0,0 --fov 30");
+    ASSERT_EQ(a.exit_code, 0) << a.output;
+    ASSERT_EQ(b.exit_code, 0) << b.output;
+    auto d = run_linework("diff " + quote(out / "a/frame_0000.png") + " " + quote(out / "b/frame_0000.png"));
+    EXPECT_EQ(d.exit_code, 1) << d.output;
+    EXPECT_NE(d.output.find("MISMATCH"), std::string::npos);
+}
+
+TEST(Cli, UsageErrorsExitWithTwo) {
+    const std::string model = quote(test::data_dir() / "models/spot/spot.glb");
+    const std::string out = quote(test::temp_dir());
+    for (const std::string& args : {std::string(""), std::string("render"), "render " + model, "render " + model + " -o " + out + " --device fast",
+                                    "render " + model + " -o " + out + " --size 0x10",
+                                    "render " + model + " -o " + out + " --size big",
+                                    "render " + model + " -o " + out + " --eye 1,2",
+                                    "render " + model + " -o " + out + " --shading glossy", std::string("frobnicate")}) {
+        const auto r = run_linework(args);
+        EXPECT_EQ(r.exit_code, 2) << "linework " << args << "\n" << r.output;
+    }
+}
+
+TEST(Cli, HelpExplainsRender) {
+    const auto r = run_linework("render --help");
+    EXPECT_EQ(r.exit_code, 0);
+    for (const char* option : {"--device", "--size", "--eye", "--target", "--fov", "--exr", "--shading"})
+        EXPECT_NE(r.output.find(option), std::string::npos) << option;
+}
+
+TEST(Cli, MissingInputNamesTheFile) {
+    const auto r = run_linework("render /nonexistent/scene.json -o " + quote(test::temp_dir()));
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_NE(r.output.find("/nonexistent/scene.json: no such file"), std::string::npos) << r.output;
+}
+
+TEST(Cli, BadSceneKeyIsNamed) {
+    const fs::path dir = test::temp_dir();
+    std::ofstream(dir / "bad.json") << R"({"model": "m.glb", "camera": {"eye": [0,0,3], "target": [0,0,0], "fovv": 30}})";
+    const auto r = run_linework("render " + quote(dir / "bad.json") + " -o " + quote(dir / "out"));
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_NE(r.output.find("bad.json: camera.fovv: unknown key"), std::string::npos) << r.output;
+}
+
+TEST(Cli, GpuDeviceWithoutGpuFails) {
+    const auto devices = run_linework("devices");
+    ASSERT_EQ(devices.exit_code, 0) << devices.output;
+    if (devices.output.find("gpu,") != std::string::npos) GTEST_SKIP() << "this machine has a GPU";
+    const auto r = run_linework("render " + quote(test::data_dir() / "models/spot/spot.glb") + " -o " +
+                                quote(test::temp_dir()) + " --device gpu");
+    EXPECT_EQ(r.exit_code, 1) << r.output;
+    EXPECT_NE(r.output.find("--device gpu: no GPU Vulkan device found"), std::string::npos) << r.output;
+}
+
+TEST(Cli, DiffReportsIdenticalImages) {
+    const fs::path png = test::source_dir() / "tests/golden/spot_toon.png";
+    const auto r = run_linework("diff " + quote(png) + " " + quote(png));
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("max abs error: 0"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("psnr: inf dB"), std::string::npos) << r.output;
+}
+
+}  // namespace
+}  // namespace lw

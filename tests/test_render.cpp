@@ -1,0 +1,151 @@
+// Headless renders on lavapipe: every shipped model renders, its silhouette matches the
+// CPU coverage reference, and two golden images stay stable.
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <cstdlib>
+#include <filesystem>
+
+#include "core/image.h"
+#include "io/image_io.h"
+#include "render/coverage_reference.h"
+#include "render/surface_pass.h"
+#include "scene/scene.h"
+#include "test_support.h"
+
+namespace lw {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct RenderedFrame {
+    LoadedScene scene;
+    CameraMatrices camera;
+    FrameReadback frame;
+};
+
+RenderedFrame render(Context& ctx, const fs::path& model, int width, int height, Shading shading = Shading::Toon) {
+    SceneDesc desc = scene_for_model(model);
+    desc.width = width;
+    desc.height = height;
+    desc.style.shading = shading;
+    RenderedFrame r{.scene = load_scene(desc)};
+    r.camera = camera_matrices(r.scene.camera, float(width) / float(height), r.scene.bounds);
+    GpuMesh mesh = upload_mesh(ctx, r.scene.mesh);
+    SurfacePass pass(ctx);
+    RenderTarget target(ctx, uint32_t(width), uint32_t(height));
+    r.frame = render_surface_frame(ctx, pass, target, mesh, r.camera, r.scene.camera.eye, desc.style);
+    return r;
+}
+
+// Every model file shipped in tests/data/models (copies of ../shared/models).
+std::vector<std::string> model_files() {
+    std::vector<std::string> files;
+    for (const auto& entry : fs::recursive_directory_iterator(test::data_dir() / "models")) {
+        const auto ext = entry.path().extension();
+        if (ext == ".glb" || ext == ".gltf") files.push_back(fs::relative(entry.path(), test::data_dir() / "models").string());
+    }
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+class RenderTest : public test::GpuTest {};
+
+class ModelRender : public test::GpuTest, public ::testing::WithParamInterface<std::string> {};
+
+// The rendered silhouette (pixels with depth < 1) must agree with the CPU rasterization of
+// the same triangles: same area within 1 % of the image's silhouette and IoU ≥ 0.98.
+TEST_P(ModelRender, SilhouetteMatchesCpuCoverage) {
+    const int width = 320, height = 240;
+    const RenderedFrame r = render(ctx(), test::data_dir() / "models" / GetParam(), width, height);
+    const auto reference = coverage_reference(r.scene.mesh, r.camera, width, height);
+
+    size_t gpu = 0, cpu = 0, both = 0, non_background = 0;
+    for (size_t i = 0; i < reference.size(); ++i) {
+        const bool g = r.frame.depth[i] < 1.0f;
+        gpu += g;
+        cpu += reference[i];
+        both += g && reference[i];
+        const uint8_t* px = &r.frame.color.pixels[4 * i];
+        non_background += !(px[0] == 255 && px[1] == 255 && px[2] == 255);
+    }
+    const size_t either = gpu + cpu - both;
+    const double coverage = double(gpu) / double(reference.size());
+    EXPECT_GT(coverage, 0.01) << "the framed model should cover a real share of the image";
+    EXPECT_LT(coverage, 0.95) << "the framed model should not fill the whole image";
+    EXPECT_EQ(non_background, gpu) << "shaded pixels must be exactly the covered ones (image is not blank)";
+    EXPECT_NEAR(double(gpu), double(cpu), 0.01 * double(cpu) + 4.0);
+    EXPECT_GE(double(both) / double(either), 0.98) << "gpu " << gpu << " cpu " << cpu << " both " << both;
+}
+
+INSTANTIATE_TEST_SUITE_P(AllModels, ModelRender, ::testing::ValuesIn(model_files()),
+                         [](const auto& param_info) {
+                             std::string name = param_info.param;
+                             for (auto& c : name)
+                                 if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+                             return name;
+                         });
+
+TEST_F(RenderTest, DepthIsOrderedFrontToBack) {
+    // A sphere-like model seen from outside: the centre pixel is nearer than the rim pixels.
+    const RenderedFrame r = render(ctx(), test::data_dir() / "models/spot/spot.glb", 200, 200);
+    float min_depth = 1.0f, max_covered = 0.0f;
+    for (float d : r.frame.depth)
+        if (d < 1.0f) {
+            min_depth = std::min(min_depth, d);
+            max_covered = std::max(max_covered, d);
+            EXPECT_GE(d, 0.0f);
+        }
+    EXPECT_LT(min_depth, max_covered) << "depth should vary over the surface";
+}
+
+TEST_F(RenderTest, ShadingModesDiffer) {
+    const fs::path model = test::data_dir() / "models/Suzanne/Monkey.glb";
+    const auto toon = render(ctx(), model, 160, 120, Shading::Toon).frame.color;
+    const auto flat = render(ctx(), model, 160, 120, Shading::Flat).frame.color;
+    const auto unlit = render(ctx(), model, 160, 120, Shading::Unlit).frame.color;
+    EXPECT_GT(compare_images(toon, flat).max_abs_error, 20);
+    // Unlit is one flat colour: at most two distinct values per channel (surface, background).
+    std::set<uint8_t> reds;
+    for (size_t i = 0; i < unlit.pixels.size(); i += 4) reds.insert(unlit.pixels[i]);
+    EXPECT_LE(reds.size(), 2u);
+    // Toon has exactly three bands of the base colour plus the background.
+    std::set<uint8_t> toon_reds;
+    for (size_t i = 0; i < toon.pixels.size(); i += 4) toon_reds.insert(toon.pixels[i]);
+    EXPECT_LE(toon_reds.size(), 4u);
+    EXPECT_GE(toon_reds.size(), 3u);
+}
+
+// Golden images: regenerate with
+//   LINEWORK_UPDATE_GOLDENS=1 ctest --test-dir build -R Golden
+// Tolerance: PSNR ≥ 40 dB and at most 0.5 % of pixels off by more than 16 levels — room for
+// LLVM code generation on another CPU, none for a changed camera, shading or mesh.
+class Golden : public test::GpuTest, public ::testing::WithParamInterface<std::pair<std::string, std::string>> {};
+
+TEST_P(Golden, RenderMatchesGolden) {
+    const auto& [model, golden_name] = GetParam();
+    const RenderedFrame r = render(ctx(), test::data_dir() / "models" / model, 320, 240);
+    const fs::path golden = test::source_dir() / "tests/golden" / golden_name;
+    if (const char* update = std::getenv("LINEWORK_UPDATE_GOLDENS"); update && std::string(update) == "1") {
+        write_png(golden, r.frame.color);
+        GTEST_SKIP() << "updated " << golden;
+    }
+    const ImageRGBA8 expected = read_image_rgba8(golden);
+    const ImageDiff d = compare_images(r.frame.color, expected, 16);
+    EXPECT_GE(d.psnr_db, 40.0);
+    EXPECT_LE(d.differing_fraction, 0.005);
+    if (d.psnr_db < 40.0 || d.differing_fraction > 0.005) {
+        const fs::path out = test::temp_dir();
+        write_png(out / "actual.png", r.frame.color);
+        write_png(out / "diff.png", d.diff);
+        ADD_FAILURE() << "actual and diff written to " << out;
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Models, Golden,
+                         ::testing::Values(std::make_pair("spot/spot.glb", "spot_toon.png"),
+                                           std::make_pair("Suzanne/Monkey.glb", "suzanne_toon.png")),
+                         [](const auto& param_info) { return param_info.index == 0 ? std::string("Spot") : std::string("Suzanne"); });
+
+}  // namespace
+}  // namespace lw
