@@ -76,45 +76,32 @@ bool contains(const std::vector<int>& values, int v) {
     return std::find(values.begin(), values.end(), v) != values.end();
 }
 
+// An unaligned little-endian value of type T at `bytes` (glTF data need not be aligned).
+template <typename T>
+double load(const unsigned char* bytes) {
+    T v;
+    std::memcpy(&v, bytes, sizeof v);
+    return static_cast<double>(v);
+}
+
 // One component at `bytes`, converted as the glTF 2.0 spec says (normalized integers map to [0, 1]
 // or [-1, 1]; plain integers keep their value).
 double decode_component(const unsigned char* bytes, int component_type, bool normalized) {
     switch (component_type) {
-        case TINYGLTF_COMPONENT_TYPE_BYTE: {
-            int8_t v;
-            std::memcpy(&v, bytes, sizeof v);
-            return normalized ? std::max(v / 127.0, -1.0) : v;
-        }
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: {
-            uint8_t v;
-            std::memcpy(&v, bytes, sizeof v);
-            return normalized ? v / 255.0 : v;
-        }
-        case TINYGLTF_COMPONENT_TYPE_SHORT: {
-            int16_t v;
-            std::memcpy(&v, bytes, sizeof v);
-            return normalized ? std::max(v / 32767.0, -1.0) : v;
-        }
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
-            uint16_t v;
-            std::memcpy(&v, bytes, sizeof v);
-            return normalized ? v / 65535.0 : v;
-        }
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: {
-            uint32_t v;
-            std::memcpy(&v, bytes, sizeof v);
-            return v;
-        }
-        case TINYGLTF_COMPONENT_TYPE_INT: {
-            int32_t v;
-            std::memcpy(&v, bytes, sizeof v);
-            return v;
-        }
-        default: {  // FLOAT; other types were rejected by the rule check
-            float v;
-            std::memcpy(&v, bytes, sizeof v);
-            return v;
-        }
+        case TINYGLTF_COMPONENT_TYPE_BYTE:
+            return normalized ? std::max(load<int8_t>(bytes) / 127.0, -1.0) : load<int8_t>(bytes);
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+            return normalized ? load<uint8_t>(bytes) / 255.0 : load<uint8_t>(bytes);
+        case TINYGLTF_COMPONENT_TYPE_SHORT:
+            return normalized ? std::max(load<int16_t>(bytes) / 32767.0, -1.0) : load<int16_t>(bytes);
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+            return normalized ? load<uint16_t>(bytes) / 65535.0 : load<uint16_t>(bytes);
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+            return load<uint32_t>(bytes);
+        case TINYGLTF_COMPONENT_TYPE_INT:
+            return load<int32_t>(bytes);
+        default:  // FLOAT; other types were rejected by the rule check
+            return load<float>(bytes);
     }
 }
 
