@@ -7,7 +7,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(
-  cmake g++ pkg-config                      # toolchain
+  cmake make g++ pkg-config                 # toolchain
   libvulkan-dev mesa-vulkan-drivers         # Vulkan loader + headers, Mesa lavapipe (CPU device)
   vulkan-validationlayers glslang-tools     # Khronos validation layer; GLSL -> SPIR-V at build time
   libglm-dev libtinygltf-dev nlohmann-json3-dev libcli11-dev

@@ -16,3 +16,15 @@ struct SurfaceStyle {
 };
 
 }  // namespace lw
+
+namespace lw {
+
+// How one line type is drawn (width in pixels, linear colour 0..1).
+struct LineStyle {
+    float width = 2.0f;
+    glm::vec3 color{0.0f};
+};
+
+enum class HiddenLines { None, Dashed, Faint };
+
+}  // namespace lw
