@@ -24,6 +24,12 @@ public:
         if (!object_.is_object()) fail(where_.empty() ? "the scene must be a JSON object" : "must be an object");
     }
 
+    bool boolean(const std::string& key) {
+        const json& v = at(key);
+        if (!v.is_boolean()) fail_key(key, "expected true or false, got " + v.dump());
+        return v.get<bool>();
+    }
+
     bool has(const std::string& key) {
         known_.insert(key);
         return object_.contains(key);
@@ -116,6 +122,51 @@ ViewCamera read_camera(ObjectReader& parent, const std::filesystem::path& file, 
     return camera;
 }
 
+LineStyle read_line_type(ObjectReader& lines, LineType type, const std::filesystem::path& file, LinesDesc& desc) {
+    const std::string name = line_type_name(type);
+    ObjectReader r(lines.at(name), "lines." + name, file);
+    LineStyle style = desc.styles[static_cast<size_t>(type)];
+    LineParams& p = desc.params;
+    bool enabled = line_type_enabled(p, type);
+    if (r.has("enabled")) enabled = r.boolean("enabled");
+    if (r.has("width")) style.width = static_cast<float>(r.number("width", 0.1, 64.0));
+    if (r.has("color")) style.color = r.vec3("color", 0.0, 1.0);
+    if (type == LineType::Suggestive) {
+        if (r.has("threshold")) p.sug_thresh = static_cast<float>(r.number("threshold", 0.0, 10.0));
+        if (r.has("fade")) p.fade = r.boolean("fade");
+    }
+    if (type == LineType::Crease && r.has("angle")) p.crease_angle_deg = static_cast<float>(r.number("angle", 0.0, 180.0));
+    r.reject_unknown();
+    switch (type) {
+        case LineType::Silhouette: p.silhouettes = enabled; break;
+        case LineType::Suggestive: p.suggestive = enabled; break;
+        case LineType::Crease: p.creases = enabled; break;
+        case LineType::Border: p.borders = enabled; break;
+    }
+    return style;
+}
+
+LinesDesc read_lines(ObjectReader& parent, const std::filesystem::path& file) {
+    LinesDesc desc;
+    const json& v = parent.at("lines");
+    if (v.is_boolean()) {
+        desc.enabled = v.get<bool>();
+        return desc;
+    }
+    ObjectReader r(v, "lines", file);
+    for (int t = 0; t < kLineTypeCount; ++t) {
+        const LineType type = static_cast<LineType>(t);
+        if (r.has(line_type_name(type))) desc.styles[size_t(t)] = read_line_type(r, type, file, desc);
+    }
+    if (r.has("hidden")) {
+        const std::string h = r.string_of("hidden", {"none", "dashed", "faint"});
+        desc.hidden = h == "dashed" ? HiddenLines::Dashed : h == "faint" ? HiddenLines::Faint : HiddenLines::None;
+    }
+    if (r.has("sample_spacing")) desc.sample_spacing_px = static_cast<float>(r.number("sample_spacing", 0.25, 64.0));
+    r.reject_unknown();
+    return desc;
+}
+
 }  // namespace
 
 bool is_model_path(const std::filesystem::path& path) {
@@ -186,6 +237,7 @@ SceneDesc parse_scene_json(const std::string& text, const std::filesystem::path&
     }
     if (r.has("color")) scene.style.color = r.vec3("color", 0.0, 1.0);
     if (r.has("background")) scene.style.background = r.vec3("background", 0.0, 1.0);
+    if (r.has("lines")) scene.lines = read_lines(r, source);
     r.reject_unknown();
     return scene;
 }

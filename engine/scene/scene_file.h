@@ -27,6 +27,7 @@ struct SceneDesc {
     std::optional<ViewCamera> camera;            // absent: frame the bounding box
     float fov_deg = 40.0f;                       // used when framing
     SurfaceStyle style;
+    LinesDesc lines;
 };
 
 // Reads and validates a scene file. Throws lw::Error("<file>: <key>: <problem>").

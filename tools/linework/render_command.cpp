@@ -9,7 +9,8 @@
 #include "core/timer.h"
 #include "gpu/context.h"
 #include "io/image_io.h"
-#include "render/surface_pass.h"
+#include "lines/svg_export.h"
+#include "render/frame_renderer.h"
 #include "scene/scene.h"
 
 namespace lw::cli {
@@ -25,6 +26,10 @@ struct RenderOptions {
     std::string shading;
     bool exr = false;
     bool validation = false;
+    bool lines_only = false;
+    bool no_lines = false;
+    std::string svg;
+    std::string hidden;
 };
 
 // Applies command-line overrides to the scene description. A partial camera (only --eye)
@@ -46,6 +51,14 @@ void apply_overrides(const RenderOptions& o, SceneDesc& desc) {
         if (o.shading == "toon") desc.style.shading = Shading::Toon;
         if (o.shading == "unlit") desc.style.shading = Shading::Unlit;
     }
+    if (o.lines_only) desc.style.draw_surface = false;
+    if (o.no_lines) desc.lines.enabled = false;
+    if (!o.hidden.empty())
+        desc.lines.hidden = o.hidden == "dashed" ? HiddenLines::Dashed
+                            : o.hidden == "faint" ? HiddenLines::Faint
+                                                  : HiddenLines::None;
+    if (o.lines_only && o.no_lines) throw usage_error("--lines-only and --no-lines leave nothing to draw");
+    if (!o.svg.empty() && !desc.lines.enabled) throw usage_error("--svg needs lines (drop --no-lines)");
 }
 
 void apply_camera_overrides(const RenderOptions& o, LoadedScene& scene) {
@@ -80,29 +93,38 @@ int run_render(const RenderOptions& o) {
 
     const auto width = static_cast<uint32_t>(desc.width), height = static_cast<uint32_t>(desc.height);
     const CameraMatrices camera = camera_matrices(scene.camera, float(width) / float(height), scene.bounds);
-    GpuMesh mesh = upload_mesh(ctx, scene.mesh);
-    SurfacePass pass(ctx);
-    RenderTarget target(ctx, width, height);
-    GpuTimer gpu_timer(ctx);
+    FrameRenderer renderer(ctx, width, height);
+    Timer prepare_timer;
+    renderer.set_mesh(scene.mesh, desc.lines.enabled, desc.lines.params.crease_angle_deg);
+    if (const LineMesh* lm = renderer.line_mesh())
+        std::printf("lines: %zu welded vertices, feature size %.4g, curvature in %.0f ms\n", lm->mesh.positions.size(),
+                    double(lm->feature_size), prepare_timer.elapsed_ms());
 
-    Timer frame_timer;
-    FrameReadback frame = render_surface_frame(ctx, pass, target, mesh, camera, scene.camera.eye, desc.style, &gpu_timer);
-    const double frame_ms = frame_timer.elapsed_ms();
+    const Frame frame = renderer.render(camera, scene.camera.eye, desc.style, desc.lines);
 
     const std::filesystem::path png = out_dir / "frame_0000.png";
-    write_png(png, frame.color);
+    write_png(png, frame.image.color);
     std::optional<std::filesystem::path> exr;
     if (o.exr) {
         exr = out_dir / "frame_0000.exr";
-        write_exr(*exr, frame.color, frame.depth);
+        write_exr(*exr, frame.image.color, frame.image.depth);
     }
+    if (!o.svg.empty()) write_lines_svg(o.svg, desc.width, desc.height, frame.screen_paths, desc.lines.styles);
 
-    std::printf("frame 0: %.2f ms", frame_ms);
-    for (const PassTime& t : gpu_timer.results())
+    std::printf("frame 0: %.2f ms", frame.timings.total_ms);
+    for (const PassTime& t : frame.timings.gpu)
         if (t.ms >= 0.0) std::printf(" (GPU %s %.3f ms)", t.name.c_str(), t.ms);
     std::printf("\n");
+    if (desc.lines.enabled) {
+        size_t visible = 0;
+        for (const auto& p : frame.screen_paths) visible += p.visible;
+        std::printf("lines: %zu segments, %zu paths, %zu visible runs (chain %.2f ms, visibility %.2f ms)\n",
+                    frame.segments.size(), frame.paths.size(), visible, frame.timings.chain_ms,
+                    frame.timings.visibility_ms);
+    }
     std::printf("wrote %s\n", png.string().c_str());
     if (exr) std::printf("wrote %s\n", exr->string().c_str());
+    if (!o.svg.empty()) std::printf("wrote %s\n", o.svg.c_str());
 
     if (validation) {
         const auto messages = ctx.validation_messages();
@@ -134,6 +156,12 @@ Runner add_render_command(CLI::App& app) {
     cmd->add_option("--fov", o->fov, "Vertical field of view in degrees (default 40)");
     cmd->add_option("--shading", o->shading, "Surface shading")->check(CLI::IsMember({"flat", "toon", "unlit", "none"}));
     cmd->add_flag("--exr", o->exr, "Also write OUT/frame_0000.exr (RGBA + depth channel Z)");
+    cmd->add_flag("--lines-only", o->lines_only, "Draw the lines over the background, without shading");
+    cmd->add_flag("--no-lines", o->no_lines, "Shading only, no feature lines");
+    cmd->add_option("--svg", o->svg,
+                    "Also write the visible lines as SVG (pixel coordinates, one <g> per line type)");
+    cmd->add_option("--hidden", o->hidden, "Hidden lines: none (default), dashed or faint")
+        ->check(CLI::IsMember({"none", "dashed", "faint"}));
     cmd->add_flag("--validation", o->validation,
                   "Enable the Khronos validation layer; any warning or error fails the run "
                   "(also LINEWORK_VALIDATION=1)");

@@ -1,0 +1,117 @@
+#include "lines/extract_gpu.h"
+
+#include <algorithm>
+#include <cstring>
+
+#include "core/error.h"
+#include "lines/extract_reference.h"
+#include "lines_extract_comp.h"
+
+namespace lw {
+
+namespace {
+
+// Mirrors CurvVertex and LinesPush in shaders/lines_shared.glsl / lines_extract.comp.
+struct CurvVertex {
+    glm::vec4 position, normal, pdir1_k1, pdir2_k2, dcurv;
+};
+struct LinesPush {
+    glm::vec4 eye;  // w: sug_thresh / fs²
+    float fade;
+    uint32_t flags;
+    uint32_t face_count;
+    uint32_t pad;
+};
+static_assert(sizeof(LinesPush) == 32);
+constexpr VkDeviceSize kHeaderBytes = 16;  // count, capacity, 2 × pad
+
+}  // namespace
+
+LineExtractor::LineExtractor(const Context& ctx)
+    : ctx_(&ctx),
+      pipeline_(ctx, {.spirv = LW_SPIRV(lines_extract_comp_spv),
+                      .storage_buffers = 4,
+                      .push_constant_size = sizeof(LinesPush),
+                      .name = "lines extract"}) {}
+
+void LineExtractor::allocate_output(uint32_t capacity) {
+    capacity_ = capacity;
+    const VkDeviceSize bytes = kHeaderBytes + VkDeviceSize(capacity) * sizeof(LineSegment);
+    output_ = Buffer(*ctx_, {.size = bytes,
+                             .usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
+                                      VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                             .name = "line segments"});
+    readback_ = Buffer(*ctx_, {.size = bytes, .usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                               .purpose = MemoryPurpose::Readback, .name = "line segments readback"});
+}
+
+void LineExtractor::set_mesh(const LineMesh& lm) {
+    const auto& c = lm.curvature;
+    std::vector<CurvVertex> vertices(lm.mesh.positions.size());
+    for (size_t i = 0; i < vertices.size(); ++i)
+        vertices[i] = {glm::vec4(lm.mesh.positions[i], 1.0f), glm::vec4(c.normals[i], 0.0f),
+                       glm::vec4(c.pdir1[i], c.k1[i]), glm::vec4(c.pdir2[i], c.k2[i]), c.dcurv[i]};
+    std::vector<glm::uvec4> faces(lm.mesh.faces.size()), face_edges(lm.mesh.faces.size());
+    for (size_t f = 0; f < faces.size(); ++f) {
+        faces[f] = glm::uvec4(lm.mesh.faces[f], lm.feature_edges[f]);
+        face_edges[f] = glm::uvec4(glm::uvec3(lm.mesh.face_edges[f]), 0u);
+    }
+    if (faces.empty()) throw Error("line extraction: the mesh has no faces");
+    const auto usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+    vertices_ = upload_buffer(*ctx_, vertices, usage, "line mesh vertices");
+    faces_ = upload_buffer(*ctx_, faces, usage, "line mesh faces");
+    face_edges_ = upload_buffer(*ctx_, face_edges, usage, "line mesh face edges");
+    face_count_ = static_cast<uint32_t>(faces.size());
+    feature_size_ = lm.feature_size;
+    if (capacity_ == 0) allocate_output(std::max<uint32_t>(4096, face_count_ / 32));
+}
+
+void LineExtractor::record(VkCommandBuffer cmd, const glm::vec3& eye, const LineParams& params, GpuTimer* timer) const {
+    if (face_count_ == 0) throw Error("line extraction: no mesh set");
+    const ScaledThresholds t = scaled_thresholds(params, feature_size_);
+    const uint32_t flags = (params.silhouettes ? 1u : 0u) | (params.suggestive ? 2u : 0u) |
+                           (params.creases ? 4u : 0u) | (params.borders ? 8u : 0u);
+    const LinesPush push{glm::vec4(eye, t.sug_thresh), t.fade, flags, face_count_, 0u};
+    const uint32_t header[4] = {0u, capacity_, 0u, 0u};
+    vkCmdUpdateBuffer(cmd, output_.get(), 0, sizeof(header), header);
+    record_memory_barrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                          VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                          VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+    if (timer) timer->begin(cmd, "lines extract");
+    pipeline_.dispatch(*ctx_, cmd, {&vertices_, &faces_, &face_edges_, &output_}, &push, (face_count_ + 63) / 64);
+    if (timer) timer->end(cmd);
+    record_memory_barrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                          VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+    VkBufferCopy region{.size = output_.size()};
+    vkCmdCopyBuffer(cmd, output_.get(), readback_.get(), 1, &region);
+    record_memory_barrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                          VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
+}
+
+bool LineExtractor::read_segments(std::vector<LineSegment>& segments) {
+    readback_.invalidate(*ctx_);
+    uint32_t count = 0;
+    std::memcpy(&count, readback_.mapped(), sizeof(count));
+    if (count > capacity_) {
+        allocate_output(count + count / 4);
+        return false;
+    }
+    segments.resize(count);
+    std::memcpy(segments.data(), static_cast<const std::byte*>(readback_.mapped()) + kHeaderBytes,
+                count * sizeof(LineSegment));
+    return true;
+}
+
+std::vector<LineSegment> LineExtractor::extract(const glm::vec3& eye, const LineParams& params, GpuTimer* timer) {
+    std::vector<LineSegment> segments;
+    for (int attempt = 0; attempt < 3; ++attempt) {
+        ctx_->submit_and_wait([&](VkCommandBuffer cmd) {
+            if (timer) timer->reset(cmd);
+            record(cmd, eye, params, timer);
+        });
+        if (read_segments(segments)) return segments;
+    }
+    throw Error("line extraction: the segment count kept growing past the buffer");
+}
+
+}  // namespace lw

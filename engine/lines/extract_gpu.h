@@ -1,0 +1,54 @@
+// engine/lines/extract_gpu.h — feature-line extraction as one Vulkan compute pass.
+//
+// Input:  a `LineMesh` (uploaded once with `set_mesh`; again after a deformation), the eye
+//         and `LineParams` per frame.
+// Output: the same `LineSegment`s as extract_lines_reference (in another order: the pass
+//         appends with an atomic counter; `sort_segments` makes them comparable).
+//
+// shaders/lines_extract.comp runs one invocation per face. The output buffer starts at a
+// 32nd of the face count and grows (the pass is re-run) when a view needs more.
+#pragma once
+
+#include <vector>
+
+#include "gpu/context.h"
+#include "gpu/pipeline.h"
+#include "gpu/resources.h"
+#include "gpu/timestamps.h"
+#include "lines/line_mesh.h"
+
+namespace lw {
+
+class LineExtractor {
+public:
+    explicit LineExtractor(const Context& ctx);
+
+    void set_mesh(const LineMesh& mesh);
+
+    // Records the pass into `cmd`: clears the counter, dispatches (timed as "lines extract"
+    // when `timer` is given) and copies the result to host memory. Read it with
+    // `read_segments` once the command buffer completed.
+    void record(VkCommandBuffer cmd, const glm::vec3& eye, const LineParams& params, GpuTimer* timer = nullptr) const;
+
+    // The segments of the last completed `record`; false when the buffer was too small
+    // (it has been grown: record again).
+    [[nodiscard]] bool read_segments(std::vector<LineSegment>& segments);
+
+    // Convenience: record, submit, wait, retry on overflow; `timer` gets "lines extract".
+    [[nodiscard]] std::vector<LineSegment> extract(const glm::vec3& eye, const LineParams& params,
+                                                   GpuTimer* timer = nullptr);
+
+private:
+    void allocate_output(uint32_t capacity);
+
+    const Context* ctx_;
+    ComputePipeline pipeline_;
+    Buffer vertices_, faces_, face_edges_;
+    Buffer output_;           // header (count, capacity) + segments, Device memory
+    Buffer readback_;         // same size, Readback memory
+    uint32_t capacity_ = 0;
+    uint32_t face_count_ = 0;
+    float feature_size_ = 0.0f;
+};
+
+}  // namespace lw

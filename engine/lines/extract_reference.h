@@ -1,0 +1,32 @@
+// engine/lines/extract_reference.h — plain C++ feature-line extraction (the reference).
+//
+// Input:  a `LineMesh`, the eye (world space, same as the mesh), `LineParams`.
+// Output: `LineSegment`s: per face, the contour (zero set of n·v kept where kr ≥ 0), the
+//         suggestive contour (zero set of kr where tanθ·DwKr > sug_thresh/fs², faded), and
+//         the creases and borders the face owns. Rules and their order follow rtsc's
+//         draw_face_isoline (docs/research/rtsc-lines.md §2) so that our lines match rtsc's.
+//
+// The GPU pass (extract_gpu.h, shaders/lines_extract.comp) must produce the same segments;
+// tests compare the two after `sort_segments`.
+#pragma once
+
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "lines/line_mesh.h"
+#include "lines/line_types.h"
+
+namespace lw {
+
+[[nodiscard]] std::vector<LineSegment> extract_lines_reference(const LineMesh& mesh, const glm::vec3& eye,
+                                                               const LineParams& params);
+
+// The scaled thresholds both implementations use: sug_thresh/fs² and (fade on) 0.03/fs².
+struct ScaledThresholds {
+    float sug_thresh;
+    float fade;
+};
+[[nodiscard]] ScaledThresholds scaled_thresholds(const LineParams& params, float feature_size);
+
+}  // namespace lw

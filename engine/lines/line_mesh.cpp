@@ -1,0 +1,41 @@
+#include "lines/line_mesh.h"
+
+#include <cmath>
+
+namespace lw {
+
+std::vector<uint32_t> feature_edge_masks(const WeldedMesh& mesh, float crease_angle_deg) {
+    std::vector<glm::vec3> face_normals(mesh.faces.size());
+    for (size_t f = 0; f < mesh.faces.size(); ++f) {
+        const glm::uvec3 c = mesh.faces[f];
+        const glm::vec3 n = glm::cross(mesh.positions[c[1]] - mesh.positions[c[0]], mesh.positions[c[2]] - mesh.positions[c[0]]);
+        const float len = glm::length(n);
+        face_normals[f] = len > 0.0f ? n / len : glm::vec3(0.0f);
+    }
+    const float cos_limit = std::cos(glm::radians(crease_angle_deg));
+    std::vector<uint32_t> masks(mesh.faces.size(), 0u);
+    for (size_t f = 0; f < mesh.faces.size(); ++f)
+        for (int i = 0; i < 3; ++i) {
+            const MeshEdge& edge = mesh.edges[size_t(mesh.face_edges[f][i])];
+            if (edge.f[0] != int32_t(f)) continue;  // owned by its first face
+            if (edge.face_count == 1) {
+                masks[f] |= kBorderBit << i;
+            } else if (edge.face_count == 2) {
+                // Creases where the face normals turn by more than the angle (dihedral test).
+                const float d = glm::dot(face_normals[size_t(edge.f[0])], face_normals[size_t(edge.f[1])]);
+                if (d < cos_limit) masks[f] |= kCreaseBit << i;
+            }
+        }
+    return masks;
+}
+
+LineMesh build_line_mesh(const TriangleMesh& mesh, float crease_angle_deg) {
+    LineMesh line_mesh;
+    line_mesh.mesh = weld(mesh);
+    line_mesh.curvature = compute_curvature(line_mesh.mesh);
+    line_mesh.feature_size = feature_size(line_mesh.mesh, line_mesh.curvature);
+    line_mesh.feature_edges = feature_edge_masks(line_mesh.mesh, crease_angle_deg);
+    return line_mesh;
+}
+
+}  // namespace lw

@@ -1,0 +1,61 @@
+#include "lines/svg_export.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+
+#include "core/error.h"
+
+namespace lw {
+
+namespace {
+
+std::string hex_color(glm::vec3 c) {
+    char text[8];
+    auto byte = [](float v) { return int(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); };
+    std::snprintf(text, sizeof text, "#%02x%02x%02x", byte(c.r), byte(c.g), byte(c.b));
+    return text;
+}
+
+std::string number(float v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.2f", double(v));
+    return text;
+}
+
+}  // namespace
+
+std::string lines_svg(int width, int height, const std::vector<ScreenPath>& paths,
+                      const std::array<LineStyle, kLineTypeCount>& styles) {
+    std::string svg = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+    svg += "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + std::to_string(width) + "\" height=\"" +
+           std::to_string(height) + "\" viewBox=\"0 0 " + std::to_string(width) + " " + std::to_string(height) + "\">\n";
+    for (int t = 0; t < kLineTypeCount; ++t) {
+        const LineType type = static_cast<LineType>(t);
+        svg += "  <g id=\"" + std::string(line_type_name(type)) + "\" fill=\"none\" stroke=\"" +
+               hex_color(styles[t].color) + "\" stroke-width=\"" + number(styles[t].width) +
+               "\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";
+        for (const ScreenPath& path : paths) {
+            if (path.type != type || !path.visible || path.samples.size() < 2) continue;
+            svg += "    <polyline points=\"";
+            for (const ScreenSample& s : path.samples) svg += number(s.pixel.x) + "," + number(s.pixel.y) + " ";
+            if (path.closed) svg += number(path.samples.front().pixel.x) + "," + number(path.samples.front().pixel.y);
+            if (svg.back() == ' ') svg.pop_back();
+            svg += "\"/>\n";
+        }
+        svg += "  </g>\n";
+    }
+    svg += "</svg>\n";
+    return svg;
+}
+
+void write_lines_svg(const std::filesystem::path& path, int width, int height, const std::vector<ScreenPath>& paths,
+                     const std::array<LineStyle, kLineTypeCount>& styles) {
+    std::ofstream out(path, std::ios::binary);
+    if (!out) throw Error(path.string() + ": cannot open for writing");
+    out << lines_svg(width, height, paths, styles);
+    if (!out.flush()) throw Error(path.string() + ": write failed");
+}
+
+}  // namespace lw

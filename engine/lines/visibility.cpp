@@ -1,0 +1,114 @@
+#include "lines/visibility.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace lw {
+
+float linear_depth(float window_depth, float znear, float zfar) {
+    if (window_depth >= 1.0f) return std::numeric_limits<float>::infinity();
+    // Inverse of glm::perspective (depth zero-to-one): d = f (z − n) / (z (f − n)).
+    return znear * zfar / (zfar - window_depth * (zfar - znear));
+}
+
+namespace {
+
+struct DepthTester {
+    const DepthImage& image;
+    const VisibilityParams& params;
+    std::vector<float> eye;  // linearized depth
+
+    DepthTester(const DepthImage& img, const VisibilityParams& p) : image(img), params(p), eye(img.depth.size()) {
+        for (size_t i = 0; i < eye.size(); ++i) eye[i] = linear_depth(img.depth[i], img.znear, img.zfar);
+    }
+
+    bool visible(glm::vec2 pixel, float depth) const {
+        const int cx = int(std::floor(pixel.x)), cy = int(std::floor(pixel.y));
+        if (cx < 0 || cy < 0 || cx >= image.width || cy >= image.height) return false;  // off screen
+        float farthest = 0.0f, nearest = std::numeric_limits<float>::infinity();
+        for (int y = std::max(cy - 1, 0); y <= std::min(cy + 1, image.height - 1); ++y)
+            for (int x = std::max(cx - 1, 0); x <= std::min(cx + 1, image.width - 1); ++x) {
+                const float d = eye[size_t(y) * image.width + x];
+                farthest = std::max(farthest, d);
+                if (std::isfinite(d)) nearest = std::min(nearest, d);
+            }
+        if (!std::isfinite(farthest)) return true;  // touches the background: a silhouette
+        const float slope = std::isfinite(nearest) ? farthest - nearest : 0.0f;
+        return depth <= farthest + params.depth_bias * depth + params.slope_scale * slope;
+    }
+};
+
+// Samples of one path every `spacing` pixels of screen arc length, ends included.
+std::vector<ScreenSample> resample(const LinePath& path, const CameraMatrices& camera, const DepthImage& image,
+                                   float spacing) {
+    const size_t n = path.vertices.size();
+    const size_t edges = path.closed ? n : n - 1;
+    std::vector<glm::vec3> projected(n);
+    for (size_t i = 0; i < n; ++i)
+        projected[i] = project_to_pixel(camera, path.vertices[i].position, float(image.width), float(image.height));
+
+    std::vector<ScreenSample> samples;
+    float s = 0.0f, next_sample = 0.0f;
+    for (size_t e = 0; e < edges; ++e) {
+        const PathVertex& a = path.vertices[e];
+        const PathVertex& b = path.vertices[(e + 1) % n];
+        const glm::vec3 pa = projected[e], pb = projected[(e + 1) % n];
+        if (pa.z <= 0.0f || pb.z <= 0.0f) continue;  // behind the eye
+        const float length = glm::length(glm::vec2(pb) - glm::vec2(pa));
+        while (next_sample <= s + length) {
+            const float t = length > 0.0f ? (next_sample - s) / length : 0.0f;
+            const PathVertex& nearer = t < 0.5f ? a : b;
+            samples.push_back(ScreenSample{.pixel = glm::mix(glm::vec2(pa), glm::vec2(pb), t),
+                                           .depth = glm::mix(pa.z, pb.z, t),
+                                           .s = next_sample,
+                                           .position = glm::mix(a.position, b.position, t),
+                                           .face = nearer.face,
+                                           .bary = nearer.bary,
+                                           .alpha = glm::mix(a.alpha, b.alpha, t)});
+            next_sample += spacing;
+            if (length == 0.0f) break;
+        }
+        s += length;
+    }
+    // The last vertex of an open path, so that paths end where they end.
+    if (!path.closed && n > 0 && projected[n - 1].z > 0.0f && (samples.empty() || samples.back().s < s)) {
+        const PathVertex& last = path.vertices[n - 1];
+        samples.push_back(ScreenSample{glm::vec2(projected[n - 1]), projected[n - 1].z, s, last.position, last.face,
+                                       last.bary, last.alpha});
+    }
+    return samples;
+}
+
+}  // namespace
+
+std::vector<ScreenPath> compute_visibility(const std::vector<LinePath>& paths, const CameraMatrices& camera,
+                                           const DepthImage& depth, const VisibilityParams& params) {
+    const DepthTester tester(depth, params);
+    std::vector<ScreenPath> out;
+    for (size_t p = 0; p < paths.size(); ++p) {
+        if (paths[p].vertices.size() < 2) continue;
+        const std::vector<ScreenSample> samples = resample(paths[p], camera, depth, params.sample_spacing_px);
+        if (samples.empty()) continue;
+        std::vector<bool> visible(samples.size());
+        for (size_t i = 0; i < samples.size(); ++i) visible[i] = tester.visible(samples[i].pixel, samples[i].depth);
+
+        // Split into runs of equal visibility; neighbouring runs share their boundary sample
+        // so that drawn runs meet without a gap.
+        size_t begin = 0;
+        while (begin < samples.size()) {
+            size_t end = begin + 1;
+            while (end < samples.size() && visible[end] == visible[begin]) ++end;
+            ScreenPath run{.type = paths[p].type, .visible = visible[begin], .source = p};
+            run.samples.assign(samples.begin() + std::ptrdiff_t(begin),
+                               samples.begin() + std::ptrdiff_t(std::min(end + 1, samples.size())));
+            const bool whole = begin == 0 && end == samples.size();
+            run.closed = whole && paths[p].closed;
+            if (run.samples.size() >= 2 || whole) out.push_back(std::move(run));
+            begin = end;
+        }
+    }
+    return out;
+}
+
+}  // namespace lw

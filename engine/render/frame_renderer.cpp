@@ -1,0 +1,85 @@
+#include "render/frame_renderer.h"
+
+#include <cstring>
+
+#include "core/error.h"
+#include "core/timer.h"
+#include "lines/chaining.h"
+
+namespace lw {
+
+FrameRenderer::FrameRenderer(const Context& ctx, uint32_t width, uint32_t height)
+    : ctx_(&ctx), target_(ctx, width, height), surface_pass_(ctx), line_pass_(ctx), extractor_(ctx), timer_(ctx) {}
+
+void FrameRenderer::set_mesh(const TriangleMesh& mesh, bool with_lines, float crease_angle_deg) {
+    mesh_ = upload_mesh(*ctx_, mesh);
+    line_mesh_.reset();
+    if (with_lines) {
+        line_mesh_ = build_line_mesh(mesh, crease_angle_deg);
+        extractor_.set_mesh(*line_mesh_);
+    }
+}
+
+Frame FrameRenderer::render(const CameraMatrices& camera, const glm::vec3& eye, const SurfaceStyle& surface,
+                            const LinesDesc& lines) {
+    if (!mesh_) throw Error("FrameRenderer: no mesh set");
+    const bool draw_lines = lines.enabled && line_mesh_.has_value();
+    Timer total;
+    Frame frame;
+    const VkDeviceSize pixels = VkDeviceSize(target_.width) * target_.height;
+    Buffer depth_readback(*ctx_, {.size = pixels * 4, .usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                  .purpose = MemoryPurpose::Readback, .name = "depth readback"});
+    Buffer color_readback(*ctx_, {.size = pixels * 4, .usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                  .purpose = MemoryPurpose::Readback, .name = "color readback"});
+
+    // (1) Surface and depth; line extraction in the same submission.
+    for (int attempt = 0;; ++attempt) {
+        ctx_->submit_and_wait([&](VkCommandBuffer cmd) {
+            timer_.reset(cmd);
+            timer_.begin(cmd, "surface");
+            surface_pass_.record(cmd, target_, *mesh_, camera, eye, surface);
+            timer_.end(cmd);
+            if (draw_lines) extractor_.record(cmd, eye, lines.params, &timer_);
+            record_image_to_buffer(cmd, target_.depth, depth_readback);
+            record_memory_barrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                                  VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
+        });
+        if (!draw_lines || extractor_.read_segments(frame.segments)) break;
+        if (attempt == 2) throw Error("line extraction: the segment count kept growing past the buffer");
+    }
+    frame.timings.gpu = timer_.results();
+    depth_readback.invalidate(*ctx_);
+    frame.image.depth.resize(pixels);
+    std::memcpy(frame.image.depth.data(), depth_readback.mapped(), pixels * 4);
+
+    // Chaining and visibility on the CPU.
+    if (draw_lines) {
+        Timer chain;
+        frame.paths = chain_segments(frame.segments);
+        frame.timings.chain_ms = chain.elapsed_ms();
+        Timer visibility;
+        const DepthImage depth{int(target_.width), int(target_.height), frame.image.depth, camera.znear, camera.zfar};
+        frame.screen_paths = compute_visibility(frame.paths, camera, depth, {.sample_spacing_px = lines.sample_spacing_px});
+        frame.timings.visibility_ms = visibility.elapsed_ms();
+    }
+
+    // (2) Lines over the surface, colour read back. The quads must outlive the submission.
+    Buffer quads;
+    ctx_->submit_and_wait([&](VkCommandBuffer cmd) {
+        timer_.reset(cmd);
+        timer_.begin(cmd, "lines draw");
+        if (draw_lines) quads = line_pass_.record(*ctx_, cmd, target_, frame.screen_paths, lines);
+        timer_.end(cmd);
+        record_image_to_buffer(cmd, target_.color, color_readback);
+        record_memory_barrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                              VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
+    });
+    for (const PassTime& t : timer_.results()) frame.timings.gpu.push_back(t);
+    color_readback.invalidate(*ctx_);
+    frame.image.color = ImageRGBA8{int(target_.width), int(target_.height), std::vector<uint8_t>(pixels * 4)};
+    std::memcpy(frame.image.color.pixels.data(), color_readback.mapped(), pixels * 4);
+    frame.timings.total_ms = total.elapsed_ms();
+    return frame;
+}
+
+}  // namespace lw

@@ -1,0 +1,67 @@
+// engine/render/frame_renderer.h — one stylized 3D frame, all stages in order.
+//
+// Input:  a world-space mesh (set once, or again after a deformation), camera matrices and
+//         the eye, the surface style and the scene's `LinesDesc`.
+// Output: `Frame` — the final image (surface + lines) and depth read back, the visible and
+//         hidden screen paths (for SVG and dumps), and timings per stage.
+//
+// A frame is two submissions: (1) surface pass + line extraction compute pass, depth and
+// segments read back; (2) after chaining and visibility on the CPU, the line pass over the
+// colour target, colour read back. See README "Architecture".
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "gpu/context.h"
+#include "gpu/timestamps.h"
+#include "lines/extract_gpu.h"
+#include "lines/line_mesh.h"
+#include "lines/visibility.h"
+#include "render/line_pass.h"
+#include "render/surface_pass.h"
+#include "scene/style.h"
+
+namespace lw {
+
+struct FrameTimings {
+    double total_ms = 0.0;       // wall, whole frame
+    double chain_ms = 0.0;       // CPU
+    double visibility_ms = 0.0;  // CPU
+    std::vector<PassTime> gpu;   // per GPU pass (surface, lines extract, lines draw)
+};
+
+struct Frame {
+    FrameReadback image;
+    std::vector<LineSegment> segments;
+    std::vector<LinePath> paths;
+    std::vector<ScreenPath> screen_paths;
+    FrameTimings timings;
+};
+
+class FrameRenderer {
+public:
+    FrameRenderer(const Context& ctx, uint32_t width, uint32_t height);
+
+    // Uploads the mesh for shading and, when lines are wanted, builds and uploads its
+    // line mesh (weld, curvature, feature edges) with `crease_angle_deg`.
+    void set_mesh(const TriangleMesh& mesh, bool with_lines, float crease_angle_deg);
+
+    const LineMesh* line_mesh() const { return line_mesh_ ? &*line_mesh_ : nullptr; }
+
+    [[nodiscard]] Frame render(const CameraMatrices& camera, const glm::vec3& eye, const SurfaceStyle& surface,
+                               const LinesDesc& lines);
+
+private:
+    const Context* ctx_;
+    RenderTarget target_;
+    SurfacePass surface_pass_;
+    LinePass line_pass_;
+    LineExtractor extractor_;
+    GpuTimer timer_;
+    std::optional<GpuMesh> mesh_;
+    std::optional<LineMesh> line_mesh_;
+};
+
+}  // namespace lw

@@ -1,0 +1,126 @@
+#include "render/line_pass.h"
+
+#include <algorithm>
+#include <cstring>
+
+#include "lines_draw_frag.h"
+#include "lines_draw_vert.h"
+
+namespace lw {
+
+namespace {
+
+struct LineVertex {
+    glm::vec2 pixel;
+    glm::vec4 color;
+    glm::vec2 arc;  // arc length, dashed flag
+};
+
+struct LineDrawPush {
+    glm::vec2 viewport;
+    float dash_period;
+    float pad;
+};
+
+// Two triangles per segment of each run, extended by half the width at both ends (square
+// caps) so that neighbouring quads cover the joint.
+std::vector<LineVertex> build_quads(const std::vector<ScreenPath>& paths, const LinesDesc& style) {
+    std::vector<LineVertex> vertices;
+    for (const ScreenPath& path : paths) {
+        const auto t = static_cast<size_t>(path.type);
+        if (!line_type_enabled(style.params, path.type)) continue;
+        if (!path.visible && style.hidden == HiddenLines::None) continue;
+        const LineStyle& ls = style.styles[t];
+        const float faint = path.visible || style.hidden != HiddenLines::Faint ? 1.0f : 0.25f;
+        const float dashed = !path.visible && style.hidden == HiddenLines::Dashed ? 1.0f : 0.0f;
+        const float width = path.visible ? ls.width : std::max(1.0f, 0.6f * ls.width);
+        const size_t n = path.samples.size();
+        const size_t segments = path.closed ? n : n - 1;
+        for (size_t i = 0; i < segments; ++i) {
+            const ScreenSample& a = path.samples[i];
+            const ScreenSample& b = path.samples[(i + 1) % n];
+            glm::vec2 dir = b.pixel - a.pixel;
+            const float length = glm::length(dir);
+            if (length < 1e-6f) continue;
+            dir /= length;
+            const glm::vec2 side = glm::vec2(-dir.y, dir.x) * (0.5f * width);
+            const glm::vec2 cap = dir * (0.5f * width);
+            const glm::vec4 ca(ls.color, a.alpha * faint), cb(ls.color, b.alpha * faint);
+            const LineVertex v0{a.pixel - cap + side, ca, {a.s, dashed}};
+            const LineVertex v1{a.pixel - cap - side, ca, {a.s, dashed}};
+            const LineVertex v2{b.pixel + cap + side, cb, {a.s + length, dashed}};
+            const LineVertex v3{b.pixel + cap - side, cb, {a.s + length, dashed}};
+            vertices.insert(vertices.end(), {v0, v1, v2, v2, v1, v3});
+        }
+    }
+    return vertices;
+}
+
+}  // namespace
+
+LinePass::LinePass(const Context& ctx)
+    : pipeline_(ctx, {.vertex_spirv = LW_SPIRV(lines_draw_vert_spv),
+                      .fragment_spirv = LW_SPIRV(lines_draw_frag_spv),
+                      .vertex_stride = sizeof(LineVertex),
+                      .attributes = {{.location = 0, .format = VK_FORMAT_R32G32_SFLOAT, .offset = 0},
+                                     {.location = 1, .format = VK_FORMAT_R32G32B32A32_SFLOAT,
+                                      .offset = offsetof(LineVertex, color)},
+                                     {.location = 2, .format = VK_FORMAT_R32G32_SFLOAT,
+                                      .offset = offsetof(LineVertex, arc)}},
+                      .depth_format = VK_FORMAT_UNDEFINED,
+                      .depth_test = false,
+                      .depth_write = false,
+                      .alpha_blend = true,
+                      .push_constant_size = sizeof(LineDrawPush),
+                      .name = "lines draw"}) {}
+
+Buffer LinePass::record(const Context& ctx, VkCommandBuffer cmd, RenderTarget& target,
+                        const std::vector<ScreenPath>& paths, const LinesDesc& style) const {
+    const std::vector<LineVertex> vertices = build_quads(paths, style);
+    if (vertices.empty()) return Buffer();
+    Buffer buffer(ctx, {.size = vertices.size() * sizeof(LineVertex), .usage = VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
+                        .purpose = MemoryPurpose::Upload, .name = "line quads"});
+    std::memcpy(buffer.mapped(), vertices.data(), vertices.size() * sizeof(LineVertex));
+
+    record_image_barrier(cmd, target.color,
+                         {.old_layout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                          .new_layout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                          .src_stage = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                          .src_access = VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT,
+                          .dst_stage = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                          .dst_access = VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT});
+    VkRenderingAttachmentInfo color{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
+                                    .imageView = target.color.view(),
+                                    .imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                                    .loadOp = VK_ATTACHMENT_LOAD_OP_LOAD,
+                                    .storeOp = VK_ATTACHMENT_STORE_OP_STORE};
+    VkRenderingInfo rendering{.sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
+                              .renderArea = {{0, 0}, {target.width, target.height}},
+                              .layerCount = 1,
+                              .colorAttachmentCount = 1,
+                              .pColorAttachments = &color};
+    vkCmdBeginRendering(cmd, &rendering);
+    VkViewport viewport{0.0f, 0.0f, float(target.width), float(target.height), 0.0f, 1.0f};
+    VkRect2D scissor{{0, 0}, {target.width, target.height}};
+    vkCmdSetViewport(cmd, 0, 1, &viewport);
+    vkCmdSetScissor(cmd, 0, 1, &scissor);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.get());
+    const LineDrawPush push{{float(target.width), float(target.height)}, 8.0f, 0.0f};
+    vkCmdPushConstants(cmd, pipeline_.layout(), VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+                       sizeof(push), &push);
+    VkDeviceSize offset = 0;
+    VkBuffer vertex_buffer = buffer.get();
+    vkCmdBindVertexBuffers(cmd, 0, 1, &vertex_buffer, &offset);
+    vkCmdDraw(cmd, static_cast<uint32_t>(vertices.size()), 1, 0, 0);
+    vkCmdEndRendering(cmd);
+    record_image_barrier(cmd, target.color,
+                         {.old_layout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                          .new_layout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                          .src_stage = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                          .src_access = VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
+                          .dst_stage = VK_PIPELINE_STAGE_2_COPY_BIT,
+                          .dst_access = VK_ACCESS_2_TRANSFER_READ_BIT});
+    return buffer;
+}
+
+}  // namespace lw
