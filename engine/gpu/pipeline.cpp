@@ -137,7 +137,13 @@ GraphicsPipeline::GraphicsPipeline(const Context& ctx, const GraphicsPipelineDes
                                                 .depthWriteEnable = desc.depth_write,
                                                 .depthCompareOp = VK_COMPARE_OP_LESS_OR_EQUAL};
     VkPipelineColorBlendAttachmentState blend_attachment{
-        .blendEnable = VK_FALSE,
+        .blendEnable = desc.alpha_blend,
+        .srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA,
+        .dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA,
+        .colorBlendOp = VK_BLEND_OP_ADD,
+        .srcAlphaBlendFactor = VK_BLEND_FACTOR_ZERO,
+        .dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE,
+        .alphaBlendOp = VK_BLEND_OP_ADD,
         .colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT |
                           VK_COLOR_COMPONENT_A_BIT};
     const bool has_color = desc.color_format != VK_FORMAT_UNDEFINED;

@@ -63,6 +63,7 @@ struct GraphicsPipelineDesc {
     VkFormat depth_format = VK_FORMAT_D32_SFLOAT;      // VK_FORMAT_UNDEFINED = no depth
     bool depth_test = true;
     bool depth_write = true;
+    bool alpha_blend = false;  // src·α + dst·(1 − α) on colour, α kept from the destination
     uint32_t push_constant_size = 0;
     const char* name = nullptr;
 };
