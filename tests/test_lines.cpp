@@ -1,0 +1,210 @@
+// Feature lines: analytic checks, GPU against the CPU reference, SVG output.
+#include <algorithm>
+#include <cmath>
+#include <regex>
+#include <sstream>
+
+#include "io/image_io.h"
+#include "lines/chaining.h"
+#include "lines/extract_gpu.h"
+#include "lines/extract_reference.h"
+#include "lines/svg_export.h"
+#include "render/frame_renderer.h"
+#include "scene/scene.h"
+#include "test_meshes.h"
+#include "test_support.h"
+
+namespace lw {
+namespace {
+
+class LinesTest : public test::GpuTest {};
+
+// The silhouette of a sphere seen in perspective is the circle of tangency: on screen a
+// circle around the projected centre, of radius f·tan(asin(R/d)) for a camera looking at
+// the centre from distance d (f = focal length in pixels).
+TEST_F(LinesTest, SphereSilhouetteIsTheAnalyticCircle) {
+    const float radius = 1.3f, distance = 6.0f, fov = 40.0f;
+    const int width = 400, height = 300;
+    const TriangleMesh sphere = test::uv_sphere(radius, glm::vec3(0.5f, -0.2f, 0.1f), 96, 192);
+    const Bounds bounds = compute_bounds(sphere.positions);
+    const ViewCamera view{.eye = glm::vec3(0.5f, -0.2f, 0.1f) + distance * glm::normalize(glm::vec3(0.3f, 0.4f, 1.0f)),
+                          .target = glm::vec3(0.5f, -0.2f, 0.1f),
+                          .fov_deg = fov};
+    const CameraMatrices camera = camera_matrices(view, float(width) / float(height), bounds);
+
+    FrameRenderer renderer(ctx(), width, height);
+    renderer.set_mesh(sphere, true, 45.0f);
+    LinesDesc lines;
+    const Frame frame = renderer.render(camera, view.eye, SurfaceStyle{}, lines);
+
+    std::vector<const ScreenPath*> silhouettes;
+    for (const auto& p : frame.screen_paths) {
+        EXPECT_NE(p.type, LineType::Suggestive) << "a sphere has no suggestive contours (kr > 0 everywhere)";
+        if (p.type == LineType::Silhouette) silhouettes.push_back(&p);
+    }
+    ASSERT_EQ(silhouettes.size(), 1u);
+    EXPECT_TRUE(silhouettes[0]->closed);
+    EXPECT_TRUE(silhouettes[0]->visible);
+
+    const float focal = 0.5f * float(height) / std::tan(glm::radians(fov) * 0.5f);
+    const float expected_radius = focal * std::tan(std::asin(radius / distance));
+    const glm::vec2 center(width * 0.5f, height * 0.5f);
+    float worst = 0.0f;
+    for (const ScreenSample& s : silhouettes[0]->samples)
+        worst = std::max(worst, std::abs(glm::length(s.pixel - center) - expected_radius));
+    EXPECT_LT(worst, 1.0f) << "expected radius " << expected_radius << " px";
+    // The loop goes all the way round: its length is the circle's circumference.
+    const float length = silhouettes[0]->samples.back().s;
+    EXPECT_NEAR(length, 2.0f * std::numbers::pi_v<float> * expected_radius, 0.02f * expected_radius * 6.3f);
+}
+
+// GPU extraction equals the CPU reference: same segments (after sorting), endpoints within
+// 1e-4, same keys, faces and alphas.
+struct GpuCase {
+    std::string model;
+    glm::vec3 direction;  // from the centre towards the eye
+};
+
+class LinesGpuMatchesCpu : public test::GpuTest, public ::testing::WithParamInterface<GpuCase> {};
+
+TEST_P(LinesGpuMatchesCpu, SameSegments) {
+    const GpuCase& c = GetParam();
+    const LoadedScene scene = load_scene(scene_for_model(test::data_dir() / "models" / c.model));
+    const LineMesh line_mesh = build_line_mesh(scene.mesh, 45.0f);
+    const glm::vec3 eye = scene.bounds.center() + 3.0f * scene.bounds.radius() * glm::normalize(c.direction);
+    LineParams params;
+
+    std::vector<LineSegment> cpu = extract_lines_reference(line_mesh, eye, params);
+    LineExtractor extractor(ctx());
+    extractor.set_mesh(line_mesh);
+    std::vector<LineSegment> gpu = extractor.extract(eye, params);
+    sort_segments(cpu);
+    sort_segments(gpu);
+    ASSERT_GT(cpu.size(), 10u);
+    ASSERT_EQ(gpu.size(), cpu.size());
+    size_t by_type[kLineTypeCount] = {};
+    for (size_t i = 0; i < cpu.size(); ++i) {
+        const LineSegment &a = cpu[i], &b = gpu[i];
+        ASSERT_EQ(a.type, b.type) << i;
+        ASSERT_EQ(a.face, b.face) << i;
+        EXPECT_EQ(a.key0, b.key0) << i;
+        EXPECT_EQ(a.key1, b.key1) << i;
+        EXPECT_LE(glm::length(glm::vec3(a.p0) - glm::vec3(b.p0)), 1e-4f) << i;
+        EXPECT_LE(glm::length(glm::vec3(a.p1) - glm::vec3(b.p1)), 1e-4f) << i;
+        EXPECT_NEAR(a.p0.w, b.p0.w, 1e-4f) << i;
+        EXPECT_NEAR(a.p1.w, b.p1.w, 1e-4f) << i;
+        ++by_type[a.type];
+    }
+    RecordProperty("silhouette", int(by_type[0]));
+    RecordProperty("suggestive", int(by_type[1]));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Models, LinesGpuMatchesCpu,
+    ::testing::Values(GpuCase{"spot/spot.glb", {0.8f, 0.3f, -0.7f}}, GpuCase{"spot/spot.glb", {-1.0f, 0.1f, 0.2f}},
+                      GpuCase{"LeePerrySmith/LeePerrySmith.glb", {0.0f, 0.1f, 1.0f}},
+                      GpuCase{"LeePerrySmith/LeePerrySmith.glb", {0.7f, -0.2f, 0.5f}},
+                      GpuCase{"Suzanne/Monkey.glb", {0.3f, 0.2f, 1.0f}},
+                      GpuCase{"craft_speederD/craft_speederD.gltf", {1.0f, 0.6f, 0.4f}},
+                      GpuCase{"FlightHelmet/FlightHelmet.gltf", {0.2f, 0.1f, 1.0f}}),
+    [](const auto& param_info) { return "Case" + std::to_string(param_info.index); });
+
+// A well-formedness check: every tag closes in order, attributes are quoted.
+bool well_formed_xml(const std::string& text, std::string* why) {
+    std::vector<std::string> stack;
+    const std::regex tag(R"(<(/?)([A-Za-z][\w:-]*)((?:\s+[\w:-]+="[^"<]*")*)\s*(/?)>|<\?xml[^>]*\?>)");
+    size_t pos = 0;
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), tag); it != std::sregex_iterator(); ++it) {
+        const auto& m = *it;
+        if (text.substr(pos, size_t(m.position()) - pos).find('<') != std::string::npos) {
+            *why = "unparsed markup before offset " + std::to_string(m.position());
+            return false;
+        }
+        pos = size_t(m.position() + m.length());
+        if (m[2].length() == 0) continue;  // the XML declaration
+        if (m[1] == "/") {
+            if (stack.empty() || stack.back() != m[2]) {
+                *why = "unbalanced </" + m[2].str() + ">";
+                return false;
+            }
+            stack.pop_back();
+        } else if (m[4] != "/") {
+            stack.push_back(m[2]);
+        }
+    }
+    if (!stack.empty()) *why = "unclosed <" + stack.back() + ">";
+    return stack.empty() && text.substr(pos).find('<') == std::string::npos;
+}
+
+TEST_F(LinesTest, SvgIsValidAndLinesUpWithThePng) {
+    const int width = 320, height = 240;
+    SceneDesc desc = scene_for_model(test::data_dir() / "models/LeePerrySmith/LeePerrySmith.glb");
+    desc.width = width;
+    desc.height = height;
+    desc.style.draw_surface = false;  // lines over white
+    const LoadedScene scene = load_scene(desc);
+    const CameraMatrices camera = camera_matrices(scene.camera, float(width) / float(height), scene.bounds);
+    FrameRenderer renderer(ctx(), width, height);
+    renderer.set_mesh(scene.mesh, true, desc.lines.params.crease_angle_deg);
+    const Frame frame = renderer.render(camera, scene.camera.eye, desc.style, desc.lines);
+
+    const std::string svg = lines_svg(width, height, frame.screen_paths, desc.lines.styles);
+    std::string why;
+    EXPECT_TRUE(well_formed_xml(svg, &why)) << why;
+    EXPECT_NE(svg.find("viewBox=\"0 0 320 240\""), std::string::npos);
+    for (const char* id : {"silhouette", "suggestive", "crease", "border"})
+        EXPECT_NE(svg.find("<g id=\"" + std::string(id) + "\""), std::string::npos) << id;
+
+    // Every SVG point lies on drawn ink in the PNG (within one pixel).
+    const std::regex points(R"raw(points="([^"]*)")raw");
+    size_t total = 0, on_ink = 0;
+    for (auto it = std::sregex_iterator(svg.begin(), svg.end(), points); it != std::sregex_iterator(); ++it) {
+        std::istringstream list((*it)[1].str());
+        std::string pair;
+        while (list >> pair) {
+            float x = 0, y = 0;
+            ASSERT_EQ(std::sscanf(pair.c_str(), "%f,%f", &x, &y), 2) << pair;
+            ++total;
+            bool ink = false;
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) {
+                    const int px = int(x) + dx, py = int(y) + dy;
+                    if (px < 0 || py < 0 || px >= width || py >= height) continue;
+                    ink |= frame.image.color.at(px, py)[0] < 200;
+                }
+            on_ink += ink;
+        }
+    }
+    ASSERT_GT(total, 100u);
+    EXPECT_GE(double(on_ink) / double(total), 0.98) << on_ink << " of " << total;
+}
+
+TEST_F(LinesTest, HiddenLinesAreHiddenAndCanBeDrawn) {
+    // Two spheres, one behind the other: the far one's silhouette is partly hidden.
+    TriangleMesh mesh = test::uv_sphere(1.0f, glm::vec3(0, 0, 0), 48, 96);
+    append_mesh(mesh, test::uv_sphere(1.0f, glm::vec3(0.8f, 0.0f, -3.0f), 48, 96));
+    const Bounds bounds = compute_bounds(mesh.positions);
+    const ViewCamera view{.eye = {0, 0, 6}, .target = {0.4f, 0, -1.5f}, .fov_deg = 40};
+    const CameraMatrices camera = camera_matrices(view, 4.0f / 3.0f, bounds);
+    FrameRenderer renderer(ctx(), 320, 240);
+    renderer.set_mesh(mesh, true, 45.0f);
+    LinesDesc lines;
+    const Frame frame = renderer.render(camera, view.eye, SurfaceStyle{}, lines);
+    size_t hidden_samples = 0, visible_samples = 0;
+    for (const auto& p : frame.screen_paths) (p.visible ? visible_samples : hidden_samples) += p.samples.size();
+    EXPECT_GT(hidden_samples, 20u);
+    EXPECT_GT(visible_samples, hidden_samples);
+
+    // Dashed hidden lines add ink that the default does not.
+    lines.hidden = HiddenLines::Dashed;
+    const Frame dashed = renderer.render(camera, view.eye, SurfaceStyle{}, lines);
+    auto ink = [](const ImageRGBA8& im) {
+        size_t n = 0;
+        for (size_t i = 0; i < im.pixels.size(); i += 4) n += im.pixels[i] < 60;
+        return n;
+    };
+    EXPECT_GT(ink(dashed.image.color), ink(frame.image.color) + 20);
+}
+
+}  // namespace
+}  // namespace lw
