@@ -112,7 +112,7 @@ TEST(Cli, GpuDeviceWithoutGpuFails) {
 }
 
 TEST(Cli, DiffReportsIdenticalImages) {
-    const fs::path png = test::source_dir() / "tests/golden/spot_toon.png";
+    const fs::path png = test::source_dir() / "tests/golden/suzanne_toon.png";
     const auto r = run_linework("diff " + quote(png) + " " + quote(png));
     EXPECT_EQ(r.exit_code, 0) << r.output;
     EXPECT_NE(r.output.find("max abs error: 0"), std::string::npos) << r.output;

@@ -9,6 +9,7 @@
 #include "core/image.h"
 #include "io/image_io.h"
 #include "render/coverage_reference.h"
+#include "render/frame_renderer.h"
 #include "render/surface_pass.h"
 #include "scene/scene.h"
 #include "test_support.h"
@@ -119,33 +120,51 @@ TEST_F(RenderTest, ShadingModesDiffer) {
 // Golden images: regenerate with
 //   LINEWORK_UPDATE_GOLDENS=1 ctest --test-dir build -R Golden
 // Tolerance: PSNR ≥ 40 dB and at most 0.5 % of pixels off by more than 16 levels — room for
-// LLVM code generation on another CPU, none for a changed camera, shading or mesh.
-class Golden : public test::GpuTest, public ::testing::WithParamInterface<std::pair<std::string, std::string>> {};
+// LLVM code generation on another CPU, none for a changed camera, shading, mesh or line.
+struct GoldenCase {
+    std::string model;
+    std::string golden;
+    bool lines;
+    bool surface;
+};
+
+class Golden : public test::GpuTest, public ::testing::WithParamInterface<GoldenCase> {};
 
 TEST_P(Golden, RenderMatchesGolden) {
-    const auto& [model, golden_name] = GetParam();
-    const RenderedFrame r = render(ctx(), test::data_dir() / "models" / model, 320, 240);
-    const fs::path golden = test::source_dir() / "tests/golden" / golden_name;
+    const GoldenCase& c = GetParam();
+    SceneDesc desc = scene_for_model(test::data_dir() / "models" / c.model);
+    desc.width = 320;
+    desc.height = 240;
+    desc.style.draw_surface = c.surface;
+    desc.lines.enabled = c.lines;
+    const LoadedScene scene = load_scene(desc);
+    const CameraMatrices camera = camera_matrices(scene.camera, 320.0f / 240.0f, scene.bounds);
+    FrameRenderer renderer(ctx(), 320, 240);
+    renderer.set_mesh(scene.mesh, c.lines, desc.lines.params.crease_angle_deg);
+    const ImageRGBA8 image = renderer.render(camera, scene.camera.eye, desc.style, desc.lines).image.color;
+
+    const fs::path golden = test::source_dir() / "tests/golden" / c.golden;
     if (const char* update = std::getenv("LINEWORK_UPDATE_GOLDENS"); update && std::string(update) == "1") {
-        write_png(golden, r.frame.color);
+        write_png(golden, image);
         GTEST_SKIP() << "updated " << golden;
     }
     const ImageRGBA8 expected = read_image_rgba8(golden);
-    const ImageDiff d = compare_images(r.frame.color, expected, 16);
+    const ImageDiff d = compare_images(image, expected, 16);
     EXPECT_GE(d.psnr_db, 40.0);
     EXPECT_LE(d.differing_fraction, 0.005);
     if (d.psnr_db < 40.0 || d.differing_fraction > 0.005) {
         const fs::path out = test::temp_dir();
-        write_png(out / "actual.png", r.frame.color);
+        write_png(out / "actual.png", image);
         write_png(out / "diff.png", d.diff);
         ADD_FAILURE() << "actual and diff written to " << out;
     }
 }
 
 INSTANTIATE_TEST_SUITE_P(Models, Golden,
-                         ::testing::Values(std::make_pair("spot/spot.glb", "spot_toon.png"),
-                                           std::make_pair("Suzanne/Monkey.glb", "suzanne_toon.png")),
-                         [](const auto& param_info) { return param_info.index == 0 ? std::string("Spot") : std::string("Suzanne"); });
+                         ::testing::Values(GoldenCase{"spot/spot.glb", "spot_toon_lines.png", true, true},
+                                           GoldenCase{"LeePerrySmith/LeePerrySmith.glb", "lee_lines_only.png", true, false},
+                                           GoldenCase{"Suzanne/Monkey.glb", "suzanne_toon.png", false, true}),
+                         [](const auto& param_info) { return fs::path(param_info.param.golden).stem().string(); });
 
 }  // namespace
 }  // namespace lw
