@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <tuple>
-#include <unordered_map>
 
 namespace lw {
 
@@ -16,23 +15,54 @@ PathVertex endpoint(const LineSegment& s, int end) {
 
 uint32_t key_of(const LineSegment& s, int end) { return end == 0 ? s.key0 : s.key1; }
 
-// Chains the segments of one line type. `segments` holds only that type.
-void chain_type(const std::vector<LineSegment>& segments, LineType type, std::vector<LinePath>& out) {
-    // Endpoints by key; keys seen other than exactly twice do not link.
-    std::unordered_map<uint32_t, std::vector<std::pair<uint32_t, int>>> by_key;
-    by_key.reserve(segments.size() * 2);
-    for (uint32_t i = 0; i < segments.size(); ++i)
-        for (int end = 0; end < 2; ++end)
-            if (key_of(segments[i], end) != kNoKey) by_key[key_of(segments[i], end)].push_back({i, end});
+bool canonical_less(const LineSegment& a, const LineSegment& b) {
+    return std::tie(a.type, a.face, a.key0, a.key1) < std::tie(b.type, b.face, b.key0, b.key1);
+}
 
+// Chains the segments of one line type: `all[order[i]]` for i in [0, count).
+void chain_type(const std::vector<LineSegment>& all, const uint32_t* order, size_t count, LineType type,
+                std::vector<LinePath>& out) {
+    struct View {  // segments[i] = all[order[i]], without copying them
+        const std::vector<LineSegment>& all;
+        const uint32_t* order;
+        size_t count;
+        const LineSegment& operator[](size_t i) const { return all[order[i]]; }
+        size_t size() const { return count; }
+    } segments{all, order, count};
+    // Link endpoints through their keys: the first endpoint seen with a key waits in
+    // `slot[key]`; the second becomes its partner; a third marks the key a junction, which
+    // links nothing. Keys are mesh edge or vertex indices, so a flat array indexes them.
+    uint32_t max_key = 0;
+    for (size_t i = 0; i < segments.size(); ++i)
+        for (int end = 0; end < 2; ++end)
+            if (key_of(segments[i], end) != kNoKey) max_key = std::max(max_key, key_of(segments[i], end));
+    constexpr int64_t kEmpty = -1, kJunction = -2;
+    std::vector<int64_t> slot(size_t(max_key) + 1, kEmpty);
+    std::vector<int64_t> partner_of(segments.size() * 2, -1);
+    for (size_t i = 0; i < segments.size(); ++i)
+        for (int end = 0; end < 2; ++end) {
+            const uint32_t key = key_of(segments[i], end);
+            if (key == kNoKey) continue;
+            const auto endpoint = int64_t(2 * i + size_t(end));
+            int64_t& waiting = slot[key];
+            if (waiting == kEmpty) {
+                waiting = endpoint;
+            } else if (waiting == kJunction) {
+                continue;
+            } else if (partner_of[size_t(waiting)] < 0) {
+                partner_of[size_t(waiting)] = endpoint;
+                partner_of[size_t(endpoint)] = waiting;
+            } else {  // a third endpoint: undo the pair, the key is a junction
+                partner_of[size_t(partner_of[size_t(waiting)])] = -1;
+                partner_of[size_t(waiting)] = -1;
+                waiting = kJunction;
+            }
+        }
     // The other endpoint sharing this endpoint's key, or {-1, -1}.
     auto partner = [&](uint32_t segment, int end) -> std::pair<int64_t, int> {
-        const uint32_t key = key_of(segments[segment], end);
-        if (key == kNoKey) return {-1, -1};
-        const auto& list = by_key.at(key);
-        if (list.size() != 2) return {-1, -1};
-        const auto& other = list[0].first == segment && list[0].second == end ? list[1] : list[0];
-        return {other.first, other.second};
+        const int64_t other = partner_of[2 * size_t(segment) + size_t(end)];
+        if (other < 0) return {-1, -1};
+        return {other / 2, int(other % 2)};
     };
 
     std::vector<bool> used(segments.size(), false);
@@ -77,20 +107,28 @@ void chain_type(const std::vector<LineSegment>& segments, LineType type, std::ve
 }  // namespace
 
 void sort_segments(std::vector<LineSegment>& segments) {
-    std::sort(segments.begin(), segments.end(), [](const LineSegment& a, const LineSegment& b) {
-        return std::tie(a.type, a.face, a.key0, a.key1) < std::tie(b.type, b.face, b.key0, b.key1);
-    });
+    std::sort(segments.begin(), segments.end(), canonical_less);
 }
 
-std::vector<LinePath> chain_segments(std::vector<LineSegment> segments) {
-    sort_segments(segments);
+std::vector<LinePath> chain_segments(const std::vector<LineSegment>& segments) {
+    // Canonical order by index (cheaper than moving 80-byte segments), then one type at a time.
+    // Sort (type, face) packed in 64 bits with the index; the few ties (segments of one
+    // face and type) are settled by the keys.
+    std::vector<std::pair<uint64_t, uint32_t>> packed(segments.size());
+    for (uint32_t i = 0; i < packed.size(); ++i)
+        packed[i] = {uint64_t(segments[i].type) << 32 | segments[i].face, i};
+    std::sort(packed.begin(), packed.end(), [&](const auto& a, const auto& b) {
+        if (a.first != b.first) return a.first < b.first;
+        return canonical_less(segments[a.second], segments[b.second]);
+    });
+    std::vector<uint32_t> order(segments.size());
+    for (size_t i = 0; i < order.size(); ++i) order[i] = packed[i].second;
     std::vector<LinePath> paths;
     size_t begin = 0;
-    while (begin < segments.size()) {
+    while (begin < order.size()) {
         size_t end = begin;
-        while (end < segments.size() && segments[end].type == segments[begin].type) ++end;
-        std::vector<LineSegment> same(segments.begin() + std::ptrdiff_t(begin), segments.begin() + std::ptrdiff_t(end));
-        chain_type(same, static_cast<LineType>(segments[begin].type), paths);
+        while (end < order.size() && segments[order[end]].type == segments[order[begin]].type) ++end;
+        chain_type(segments, order.data() + begin, end - begin, static_cast<LineType>(segments[order[begin]].type), paths);
         begin = end;
     }
     return paths;

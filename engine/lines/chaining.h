@@ -18,7 +18,7 @@
 
 namespace lw {
 
-[[nodiscard]] std::vector<LinePath> chain_segments(std::vector<LineSegment> segments);
+[[nodiscard]] std::vector<LinePath> chain_segments(const std::vector<LineSegment>& segments);
 
 // Sorts segments into a canonical order (type, face, key0, key1): GPU output made comparable.
 void sort_segments(std::vector<LineSegment>& segments);

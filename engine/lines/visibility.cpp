@@ -14,27 +14,25 @@ float linear_depth(float window_depth, float znear, float zfar) {
 
 namespace {
 
+// Depth is linearized only where samples look (two values per sample, not the image).
 struct DepthTester {
     const DepthImage& image;
     const VisibilityParams& params;
-    std::vector<float> eye;  // linearized depth
-
-    DepthTester(const DepthImage& img, const VisibilityParams& p) : image(img), params(p), eye(img.depth.size()) {
-        for (size_t i = 0; i < eye.size(); ++i) eye[i] = linear_depth(img.depth[i], img.znear, img.zfar);
-    }
 
     bool visible(glm::vec2 pixel, float depth) const {
         const int cx = int(std::floor(pixel.x)), cy = int(std::floor(pixel.y));
         if (cx < 0 || cy < 0 || cx >= image.width || cy >= image.height) return false;  // off screen
-        float farthest = 0.0f, nearest = std::numeric_limits<float>::infinity();
+        // Window depth is monotonic in eye depth: find the extremes first, linearize two.
+        float far_window = 0.0f, near_window = 1.0f;
         for (int y = std::max(cy - 1, 0); y <= std::min(cy + 1, image.height - 1); ++y)
             for (int x = std::max(cx - 1, 0); x <= std::min(cx + 1, image.width - 1); ++x) {
-                const float d = eye[size_t(y) * image.width + x];
-                farthest = std::max(farthest, d);
-                if (std::isfinite(d)) nearest = std::min(nearest, d);
+                const float d = image.depth[size_t(y) * image.width + x];
+                far_window = std::max(far_window, d);
+                if (d < 1.0f) near_window = std::min(near_window, d);
             }
-        if (!std::isfinite(farthest)) return true;  // touches the background: a silhouette
-        const float slope = std::isfinite(nearest) ? farthest - nearest : 0.0f;
+        if (far_window >= 1.0f) return true;  // touches the background: a silhouette
+        const float farthest = linear_depth(far_window, image.znear, image.zfar);
+        const float slope = farthest - linear_depth(near_window, image.znear, image.zfar);
         return depth <= farthest + params.depth_bias * depth + params.slope_scale * slope;
     }
 };
@@ -88,23 +86,26 @@ std::vector<ScreenPath> compute_visibility(const std::vector<LinePath>& paths, c
     std::vector<ScreenPath> out;
     for (size_t p = 0; p < paths.size(); ++p) {
         if (paths[p].vertices.size() < 2) continue;
-        const std::vector<ScreenSample> samples = resample(paths[p], camera, depth, params.sample_spacing_px);
+        std::vector<ScreenSample> samples = resample(paths[p], camera, depth, params.sample_spacing_px);
         if (samples.empty()) continue;
-        std::vector<bool> visible(samples.size());
+        std::vector<uint8_t> visible(samples.size());
         for (size_t i = 0; i < samples.size(); ++i) visible[i] = tester.visible(samples[i].pixel, samples[i].depth);
 
         // Split into runs of equal visibility; neighbouring runs share their boundary sample
-        // so that drawn runs meet without a gap.
+        // so that drawn runs meet without a gap. A path of one run keeps its samples as they are.
+        if (std::all_of(visible.begin(), visible.end(), [&](uint8_t v) { return v == visible[0]; })) {
+            out.push_back(ScreenPath{.type = paths[p].type, .closed = paths[p].closed, .visible = visible[0] != 0,
+                                     .source = p, .samples = std::move(samples)});
+            continue;
+        }
         size_t begin = 0;
         while (begin < samples.size()) {
             size_t end = begin + 1;
             while (end < samples.size() && visible[end] == visible[begin]) ++end;
-            ScreenPath run{.type = paths[p].type, .visible = visible[begin], .source = p};
+            ScreenPath run{.type = paths[p].type, .visible = visible[begin] != 0, .source = p};
             run.samples.assign(samples.begin() + std::ptrdiff_t(begin),
                                samples.begin() + std::ptrdiff_t(std::min(end + 1, samples.size())));
-            const bool whole = begin == 0 && end == samples.size();
-            run.closed = whole && paths[p].closed;
-            if (run.samples.size() >= 2 || whole) out.push_back(std::move(run));
+            if (run.samples.size() >= 2) out.push_back(std::move(run));
             begin = end;
         }
     }

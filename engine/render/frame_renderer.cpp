@@ -9,7 +9,16 @@
 namespace lw {
 
 FrameRenderer::FrameRenderer(const Context& ctx, uint32_t width, uint32_t height)
-    : ctx_(&ctx), target_(ctx, width, height), surface_pass_(ctx), line_pass_(ctx), extractor_(ctx), timer_(ctx) {}
+    : ctx_(&ctx),
+      target_(ctx, width, height),
+      surface_pass_(ctx),
+      line_pass_(ctx),
+      extractor_(ctx),
+      timer_(ctx),
+      depth_readback_(ctx, {.size = VkDeviceSize(width) * height * 4, .usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                            .purpose = MemoryPurpose::Readback, .name = "depth readback"}),
+      color_readback_(ctx, {.size = VkDeviceSize(width) * height * 4, .usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                            .purpose = MemoryPurpose::Readback, .name = "color readback"}) {}
 
 void FrameRenderer::set_mesh(const TriangleMesh& mesh, bool with_lines, float crease_angle_deg) {
     mesh_ = upload_mesh(*ctx_, mesh);
@@ -27,10 +36,8 @@ Frame FrameRenderer::render(const CameraMatrices& camera, const glm::vec3& eye, 
     Timer total;
     Frame frame;
     const VkDeviceSize pixels = VkDeviceSize(target_.width) * target_.height;
-    Buffer depth_readback(*ctx_, {.size = pixels * 4, .usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                  .purpose = MemoryPurpose::Readback, .name = "depth readback"});
-    Buffer color_readback(*ctx_, {.size = pixels * 4, .usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                  .purpose = MemoryPurpose::Readback, .name = "color readback"});
+    Buffer& depth_readback = depth_readback_;
+    Buffer& color_readback = color_readback_;
 
     // (1) Surface and depth; line extraction in the same submission.
     for (int attempt = 0;; ++attempt) {

@@ -60,6 +60,7 @@ private:
     LinePass line_pass_;
     LineExtractor extractor_;
     GpuTimer timer_;
+    Buffer depth_readback_, color_readback_;  // reused every frame
     std::optional<GpuMesh> mesh_;
     std::optional<LineMesh> line_mesh_;
 };

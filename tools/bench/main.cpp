@@ -1,14 +1,17 @@
-// tools/bench/main.cpp — `linework-bench`: GPU timings that can travel.
+// tools/bench/main.cpp — `linework-bench`: GPU and CPU timings that can travel.
 //
 // Links the engine and Vulkan only (no OpenImageIO, no GLFW), so that
 // ../shared/tools/gpu-bundle.sh can carry it to a GPU machine. Figures go to
 // docs/BENCHMARKS.md with the device and the command line.
 //
 //   linework-bench surface MODEL.glb [--subdivide K] [--size WxH] [--frames N] [--device D]
+//   linework-bench lines   MODEL.glb [--subdivide K] [--size WxH] [--frames N] [--device D]
 //
-// surface: the shaded surface pass (colour + depth) of MODEL after K midpoint subdivisions,
-// timed with GPU timestamps; prints the median, min and max over N frames, plus the median
-// wall time of record + submit + wait.
+// surface: the shaded surface pass (colour + depth), GPU time from timestamps.
+// lines:   the whole line frame (surface + extraction + readback + chaining + visibility +
+//          line drawing + colour readback, wall time) and its stages: extraction on the GPU
+//          (timestamps), the CPU reference extraction, chaining and visibility (CPU).
+// Both print the median (and min, max) over N frames after two warm-up frames.
 #include <algorithm>
 #include <cstdio>
 #include <string>
@@ -21,18 +24,14 @@
 #include "geometry/subdivide.h"
 #include "gpu/context.h"
 #include "gpu/timestamps.h"
+#include "lines/extract_reference.h"
+#include "render/frame_renderer.h"
 #include "render/surface_pass.h"
 #include "scene/scene.h"
 
 namespace {
 
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    const size_t n = v.size();
-    return n == 0 ? 0.0 : (n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]));
-}
-
-struct SurfaceBench {
+struct BenchOptions {
     std::string model;
     int subdivide = 0;
     std::string size = "1920x1080";
@@ -40,65 +39,134 @@ struct SurfaceBench {
     std::string device = "auto";
 };
 
-int run_surface(const SurfaceBench& b) {
+struct Series {
+    std::vector<double> values;
+    double median() const {
+        std::vector<double> v = values;
+        std::sort(v.begin(), v.end());
+        const size_t n = v.size();
+        return n == 0 ? 0.0 : (n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]));
+    }
+    void print(const char* name) const {
+        std::printf("  %-22s median %9.3f ms  (min %.3f, max %.3f)\n", name, median(),
+                    *std::min_element(values.begin(), values.end()), *std::max_element(values.begin(), values.end()));
+    }
+};
+
+// Loads, subdivides and frames the model; prints the device and the mesh.
+struct BenchScene {
+    lw::LoadedScene scene;
     int width = 0, height = 0;
-    if (std::sscanf(b.size.c_str(), "%dx%d", &width, &height) != 2 || width < 1 || height < 1)
+    lw::CameraMatrices camera;
+};
+
+BenchScene prepare(const BenchOptions& b, const lw::Context& ctx) {
+    BenchScene s;
+    if (std::sscanf(b.size.c_str(), "%dx%d", &s.width, &s.height) != 2 || s.width < 1 || s.height < 1)
         throw lw::usage_error("--size: expected WxH, got \"" + b.size + "\"");
-
     lw::SceneDesc desc = lw::scene_for_model(b.model);
-    desc.width = width;
-    desc.height = height;
-    lw::LoadedScene scene = lw::load_scene(desc);
+    desc.width = s.width;
+    desc.height = s.height;
+    s.scene = lw::load_scene(desc);
     lw::Timer subdivide_timer;
-    scene.mesh = lw::subdivide_midpoint(scene.mesh, b.subdivide);
-
-    lw::Context ctx({.device = lw::parse_device_choice(b.device)});
+    s.scene.mesh = lw::subdivide_midpoint(s.scene.mesh, b.subdivide);
+    s.camera = lw::camera_matrices(s.scene.camera, float(s.width) / float(s.height), s.scene.bounds);
     std::printf("device: %s\n", ctx.info().describe().c_str());
     std::printf("mesh: %s subdivided %dx: %zu triangles (%.0f ms to build)\n", b.model.c_str(), b.subdivide,
-                scene.mesh.triangle_count(), subdivide_timer.elapsed_ms());
+                s.scene.mesh.triangle_count(), subdivide_timer.elapsed_ms());
     if (!ctx.has_timestamps()) throw lw::Error(ctx.info().name + " has no timestamp queries");
+    return s;
+}
 
-    const lw::CameraMatrices camera = lw::camera_matrices(scene.camera, float(width) / float(height), scene.bounds);
-    lw::GpuMesh mesh = lw::upload_mesh(ctx, scene.mesh);
+int run_surface(const BenchOptions& b) {
+    lw::Context ctx({.device = lw::parse_device_choice(b.device)});
+    BenchScene s = prepare(b, ctx);
+    lw::GpuMesh mesh = lw::upload_mesh(ctx, s.scene.mesh);
     lw::SurfacePass pass(ctx);
-    lw::RenderTarget target(ctx, uint32_t(width), uint32_t(height));
+    lw::RenderTarget target(ctx, uint32_t(s.width), uint32_t(s.height));
     lw::GpuTimer timer(ctx);
-    lw::SurfaceStyle style;
-
-    std::vector<double> gpu_ms, wall_ms;
+    const lw::SurfaceStyle style;
+    Series gpu, wall;
     for (int frame = -2; frame < b.frames; ++frame) {  // two warm-up frames
-        lw::Timer wall;
+        lw::Timer w;
         ctx.submit_and_wait([&](VkCommandBuffer cmd) {
             timer.reset(cmd);
             timer.begin(cmd, "surface");
-            pass.record(cmd, target, mesh, camera, scene.camera.eye, style);
+            pass.record(cmd, target, mesh, s.camera, s.scene.camera.eye, style);
             timer.end(cmd);
         });
-        const double w = wall.elapsed_ms();
+        const double ms = w.elapsed_ms();
         if (frame < 0) continue;
-        wall_ms.push_back(w);
-        gpu_ms.push_back(timer.results().front().ms);
+        wall.values.push_back(ms);
+        gpu.values.push_back(timer.results().front().ms);
     }
-    std::printf("surface pass %dx%d, %d frames: GPU median %.3f ms (min %.3f, max %.3f); wall median %.3f ms\n", width,
-                height, b.frames, median(gpu_ms), *std::min_element(gpu_ms.begin(), gpu_ms.end()),
-                *std::max_element(gpu_ms.begin(), gpu_ms.end()), median(wall_ms));
+    std::printf("surface pass %dx%d, %d frames:\n", s.width, s.height, b.frames);
+    gpu.print("GPU surface");
+    wall.print("wall (submit+wait)");
     return 0;
+}
+
+int run_lines(const BenchOptions& b) {
+    lw::Context ctx({.device = lw::parse_device_choice(b.device)});
+    BenchScene s = prepare(b, ctx);
+    lw::FrameRenderer renderer(ctx, uint32_t(s.width), uint32_t(s.height));
+    const lw::LinesDesc lines;
+    lw::Timer prepare_timer;
+    renderer.set_mesh(s.scene.mesh, true, lines.params.crease_angle_deg);
+    std::printf("line mesh (weld, curvature, feature edges, upload): %.0f ms\n", prepare_timer.elapsed_ms());
+
+    Series frame_ms, extract_gpu, surface_gpu, draw_gpu, chain, visibility, extract_cpu;
+    size_t segments = 0, paths = 0;
+    for (int frame = -2; frame < b.frames; ++frame) {
+        const lw::Frame f = renderer.render(s.camera, s.scene.camera.eye, lw::SurfaceStyle{}, lines);
+        lw::Timer cpu;
+        const auto reference = lw::extract_lines_reference(*renderer.line_mesh(), s.scene.camera.eye, lines.params);
+        const double cpu_ms = cpu.elapsed_ms();
+        if (frame < 0) continue;
+        frame_ms.values.push_back(f.timings.total_ms);
+        chain.values.push_back(f.timings.chain_ms);
+        visibility.values.push_back(f.timings.visibility_ms);
+        extract_cpu.values.push_back(cpu_ms);
+        for (const lw::PassTime& t : f.timings.gpu) {
+            if (t.name == "lines extract") extract_gpu.values.push_back(t.ms);
+            if (t.name == "surface") surface_gpu.values.push_back(t.ms);
+            if (t.name == "lines draw") draw_gpu.values.push_back(t.ms);
+        }
+        segments = f.segments.size();
+        paths = f.paths.size();
+        if (reference.size() != segments) throw lw::Error("GPU and CPU extraction disagree on the segment count");
+    }
+    std::printf("line frame %dx%d, %d frames, %zu segments, %zu paths:\n", s.width, s.height, b.frames, segments, paths);
+    frame_ms.print("whole line frame (wall)");
+    surface_gpu.print("GPU surface + depth");
+    extract_gpu.print("GPU extraction");
+    chain.print("CPU chaining");
+    visibility.print("CPU visibility");
+    draw_gpu.print("GPU line drawing");
+    extract_cpu.print("CPU reference extract");
+    return 0;
+}
+
+void add_options(CLI::App* cmd, BenchOptions& o) {
+    cmd->add_option("model", o.model, "Model (.gltf/.glb)")->required();
+    cmd->add_option("--subdivide", o.subdivide, "Midpoint subdivisions (each ×4 triangles)")
+        ->check(CLI::Range(0, 6))
+        ->capture_default_str();
+    cmd->add_option("--size", o.size, "Image size WxH")->capture_default_str();
+    cmd->add_option("--frames", o.frames, "Timed frames")->check(CLI::Range(1, 100000))->capture_default_str();
+    cmd->add_option("--device", o.device, "auto, cpu, gpu or an index")->capture_default_str();
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-    CLI::App app{"linework-bench — GPU timings of Linework passes (median of N frames, timestamp queries)."};
+    CLI::App app{"linework-bench — timings of Linework passes (median of N frames; GPU time from timestamp queries)."};
     app.require_subcommand(1);
-    SurfaceBench surface;
-    CLI::App* cmd = app.add_subcommand("surface", "Shaded surface pass of a (subdivided) model.");
-    cmd->add_option("model", surface.model, "Model (.gltf/.glb)")->required();
-    cmd->add_option("--subdivide", surface.subdivide, "Midpoint subdivisions (each ×4 triangles)")
-        ->check(CLI::Range(0, 6))
-        ->capture_default_str();
-    cmd->add_option("--size", surface.size, "Image size WxH")->capture_default_str();
-    cmd->add_option("--frames", surface.frames, "Timed frames")->check(CLI::Range(1, 100000))->capture_default_str();
-    cmd->add_option("--device", surface.device, "auto, cpu, gpu or an index")->capture_default_str();
+    BenchOptions surface, lines;
+    CLI::App* surface_cmd = app.add_subcommand("surface", "Shaded surface pass of a (subdivided) model.");
+    add_options(surface_cmd, surface);
+    CLI::App* lines_cmd = app.add_subcommand("lines", "The whole line frame and its stages.");
+    add_options(lines_cmd, lines);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -108,7 +176,8 @@ int main(int argc, char** argv) {
         return 2;
     }
     try {
-        if (cmd->parsed()) return run_surface(surface);
+        if (surface_cmd->parsed()) return run_surface(surface);
+        if (lines_cmd->parsed()) return run_lines(lines);
     } catch (const lw::Error& e) {
         std::fprintf(stderr, "linework-bench: error: %s\n", e.what());
         return e.exit_code();
