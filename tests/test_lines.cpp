@@ -11,7 +11,7 @@
 #include "lines/svg_export.h"
 #include "render/frame_renderer.h"
 #include "scene/scene.h"
-#include "test_meshes.h"
+#include "geometry/test_meshes.h"
 #include "test_support.h"
 
 namespace lw {
@@ -25,7 +25,7 @@ class LinesTest : public test::GpuTest {};
 TEST_F(LinesTest, SphereSilhouetteIsTheAnalyticCircle) {
     const float radius = 1.3f, distance = 6.0f, fov = 40.0f;
     const int width = 400, height = 300;
-    const TriangleMesh sphere = test::uv_sphere(radius, glm::vec3(0.5f, -0.2f, 0.1f), 96, 192);
+    const TriangleMesh sphere = make_icosphere(radius, 6, glm::vec3(0.5f, -0.2f, 0.1f));
     const Bounds bounds = compute_bounds(sphere.positions);
     const ViewCamera view{.eye = glm::vec3(0.5f, -0.2f, 0.1f) + distance * glm::normalize(glm::vec3(0.3f, 0.4f, 1.0f)),
                           .target = glm::vec3(0.5f, -0.2f, 0.1f),
@@ -181,8 +181,8 @@ TEST_F(LinesTest, SvgIsValidAndLinesUpWithThePng) {
 
 TEST_F(LinesTest, HiddenLinesAreHiddenAndCanBeDrawn) {
     // Two spheres, one behind the other: the far one's silhouette is partly hidden.
-    TriangleMesh mesh = test::uv_sphere(1.0f, glm::vec3(0, 0, 0), 48, 96);
-    append_mesh(mesh, test::uv_sphere(1.0f, glm::vec3(0.8f, 0.0f, -3.0f), 48, 96));
+    TriangleMesh mesh = make_icosphere(1.0f, 4);
+    append_mesh(mesh, make_icosphere(1.0f, 4, glm::vec3(0.8f, 0.0f, -3.0f)));
     const Bounds bounds = compute_bounds(mesh.positions);
     const ViewCamera view{.eye = {0, 0, 6}, .target = {0.4f, 0, -1.5f}, .fov_deg = 40};
     const CameraMatrices camera = camera_matrices(view, 4.0f / 3.0f, bounds);

@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "lines/extract_reference.h"
-#include "test_meshes.h"
+#include "geometry/test_meshes.h"
 #include "test_support.h"
 
 namespace lw {
@@ -59,7 +59,8 @@ TEST(SuggestiveContours, LieOnTheAnalyticZeroSetWithPositiveDerivative) {
     const int n = 201;
     const float half = 2.0f;
     const double spacing = 2.0 * half / (n - 1);
-    const TriangleMesh mesh = test::height_field([&](float x, float y) { return float(surface.h(x, y)); }, half, n);
+    const TriangleMesh mesh = make_height_field([&](double x, double y) { return surface.h(x, y); }, glm::vec2(-half),
+                                                glm::vec2(half), n - 1, n - 1);
     const LineMesh line_mesh = build_line_mesh(mesh, 180.0f);
     const glm::vec3 eye(0.4f, -5.0f, 3.0f);
     LineParams params;
