@@ -101,7 +101,9 @@ GraphicsPipeline::GraphicsPipeline(const Context& ctx, const GraphicsPipelineDes
     layout_ = create_layout(ctx, VK_NULL_HANDLE, desc.push_constant_size, stages);
 
     auto vertex = create_shader_module(ctx, desc.vertex_spirv);
-    auto fragment = create_shader_module(ctx, desc.fragment_spirv);
+    // No fragment shader: a depth-only pipeline.
+    Handle<VkShaderModule> fragment;
+    if (!desc.fragment_spirv.empty()) fragment = create_shader_module(ctx, desc.fragment_spirv);
     std::array<VkPipelineShaderStageCreateInfo, 2> shader_stages{{
         {.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, .stage = VK_SHADER_STAGE_VERTEX_BIT,
          .module = vertex, .pName = "main"},
@@ -160,7 +162,7 @@ GraphicsPipeline::GraphicsPipeline(const Context& ctx, const GraphicsPipelineDes
                                             .depthAttachmentFormat = desc.depth_format};
     VkGraphicsPipelineCreateInfo info{.sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO,
                                       .pNext = &rendering,
-                                      .stageCount = static_cast<uint32_t>(shader_stages.size()),
+                                      .stageCount = fragment ? 2u : 1u,
                                       .pStages = shader_stages.data(),
                                       .pVertexInputState = &vertex_input,
                                       .pInputAssemblyState = &input_assembly,

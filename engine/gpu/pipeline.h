@@ -54,7 +54,7 @@ struct VertexAttribute {
 
 struct GraphicsPipelineDesc {
     std::span<const uint32_t> vertex_spirv;
-    std::span<const uint32_t> fragment_spirv;
+    std::span<const uint32_t> fragment_spirv;  // empty: depth only (no colour attachment either)
     uint32_t vertex_stride = 0;                    // one interleaved vertex binding; 0 = none
     std::vector<VertexAttribute> attributes;
     VkPrimitiveTopology topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;

@@ -13,6 +13,7 @@
 // the depth itself, so lines on steeply inclined surfaces are not lost to rasterization.
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "lines/line_types.h"
@@ -30,7 +31,7 @@ struct VisibilityParams {
 struct DepthImage {
     int width = 0;
     int height = 0;
-    std::vector<float> depth;  // window depth in [0, 1], row-major; 1 = background
+    std::span<const float> depth;  // window depth in [0, 1], row-major; 1 = background (not owned)
     float znear = 0.0f;
     float zfar = 0.0f;
 };

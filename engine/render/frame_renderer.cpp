@@ -30,7 +30,7 @@ void FrameRenderer::set_mesh(const TriangleMesh& mesh, bool with_lines, float cr
 }
 
 Frame FrameRenderer::render(const CameraMatrices& camera, const glm::vec3& eye, const SurfaceStyle& surface,
-                            const LinesDesc& lines) {
+                            const LinesDesc& lines, const FrameOutputs& outputs) {
     if (!mesh_) throw Error("FrameRenderer: no mesh set");
     const bool draw_lines = lines.enabled && line_mesh_.has_value();
     Timer total;
@@ -47,7 +47,7 @@ Frame FrameRenderer::render(const CameraMatrices& camera, const glm::vec3& eye, 
             surface_pass_.record(cmd, target_, *mesh_, camera, eye, surface);
             timer_.end(cmd);
             if (draw_lines) extractor_.record(cmd, eye, lines.params, &timer_);
-            record_image_to_buffer(cmd, target_.depth, depth_readback);
+            if (draw_lines || outputs.depth) record_image_to_buffer(cmd, target_.depth, depth_readback);
             record_memory_barrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                                   VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
         });
@@ -56,8 +56,8 @@ Frame FrameRenderer::render(const CameraMatrices& camera, const glm::vec3& eye, 
     }
     frame.timings.gpu = timer_.results();
     depth_readback.invalidate(*ctx_);
-    frame.image.depth.resize(pixels);
-    std::memcpy(frame.image.depth.data(), depth_readback.mapped(), pixels * 4);
+    const std::span<const float> depth_pixels(static_cast<const float*>(depth_readback.mapped()), pixels);
+    if (outputs.depth) frame.image.depth.assign(depth_pixels.begin(), depth_pixels.end());
 
     // Chaining and visibility on the CPU.
     if (draw_lines) {
@@ -65,7 +65,7 @@ Frame FrameRenderer::render(const CameraMatrices& camera, const glm::vec3& eye, 
         frame.paths = chain_segments(frame.segments);
         frame.timings.chain_ms = chain.elapsed_ms();
         Timer visibility;
-        const DepthImage depth{int(target_.width), int(target_.height), frame.image.depth, camera.znear, camera.zfar};
+        const DepthImage depth{int(target_.width), int(target_.height), depth_pixels, camera.znear, camera.zfar};
         frame.screen_paths = compute_visibility(frame.paths, camera, depth, {.sample_spacing_px = lines.sample_spacing_px});
         frame.timings.visibility_ms = visibility.elapsed_ms();
     }
@@ -77,14 +77,16 @@ Frame FrameRenderer::render(const CameraMatrices& camera, const glm::vec3& eye, 
         timer_.begin(cmd, "lines draw");
         if (draw_lines) quads = line_pass_.record(*ctx_, cmd, target_, frame.screen_paths, lines);
         timer_.end(cmd);
-        record_image_to_buffer(cmd, target_.color, color_readback);
+        if (outputs.color) record_image_to_buffer(cmd, target_.color, color_readback);
         record_memory_barrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                               VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
     });
     for (const PassTime& t : timer_.results()) frame.timings.gpu.push_back(t);
-    color_readback.invalidate(*ctx_);
-    frame.image.color = ImageRGBA8{int(target_.width), int(target_.height), std::vector<uint8_t>(pixels * 4)};
-    std::memcpy(frame.image.color.pixels.data(), color_readback.mapped(), pixels * 4);
+    if (outputs.color) {
+        color_readback.invalidate(*ctx_);
+        frame.image.color = ImageRGBA8{int(target_.width), int(target_.height), std::vector<uint8_t>(pixels * 4)};
+        std::memcpy(frame.image.color.pixels.data(), color_readback.mapped(), pixels * 4);
+    }
     frame.timings.total_ms = total.elapsed_ms();
     return frame;
 }

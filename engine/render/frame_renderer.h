@@ -32,6 +32,12 @@ struct FrameTimings {
     std::vector<PassTime> gpu;   // per GPU pass (surface, lines extract, lines draw)
 };
 
+// What to read back besides what the line stages need.
+struct FrameOutputs {
+    bool color = true;   // the final image (false: a viewer or a benchmark that shows nothing)
+    bool depth = false;  // the depth buffer (EXR output)
+};
+
 struct Frame {
     FrameReadback image;
     std::vector<LineSegment> segments;
@@ -51,7 +57,7 @@ public:
     const LineMesh* line_mesh() const { return line_mesh_ ? &*line_mesh_ : nullptr; }
 
     [[nodiscard]] Frame render(const CameraMatrices& camera, const glm::vec3& eye, const SurfaceStyle& surface,
-                               const LinesDesc& lines);
+                               const LinesDesc& lines, const FrameOutputs& outputs = {});
 
 private:
     const Context* ctx_;

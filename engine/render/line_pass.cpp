@@ -22,6 +22,32 @@ struct LineDrawPush {
     float pad;
 };
 
+// Indices of the samples to draw through (greedy: extend the current straight piece while
+// every skipped sample lies within `tolerance` px of it and alpha stays within 0.05).
+std::vector<size_t> simplify(const ScreenPath& path, float tolerance = 0.25f) {
+    const auto& s = path.samples;
+    std::vector<size_t> kept{0};
+    size_t anchor = 0;
+    for (size_t next = 2; next < s.size(); ++next) {
+        const glm::vec2 a = s[anchor].pixel, b = s[next].pixel;
+        const glm::vec2 ab = b - a;
+        const float len = glm::length(ab);
+        bool straight = len > 0.0f;
+        for (size_t k = anchor + 1; k < next && straight; ++k) {
+            const glm::vec2 ak = s[k].pixel - a;
+            const float off_line = std::abs(ab.x * ak.y - ab.y * ak.x) / len;
+            straight = off_line <= tolerance && std::abs(s[k].alpha - s[anchor].alpha) <= 0.05f &&
+                       glm::dot(ak, ab) >= 0.0f;
+        }
+        if (!straight || next - anchor > 64) {  // the cap bounds the quadratic check
+            kept.push_back(next - 1);
+            anchor = next - 1;
+        }
+    }
+    if (s.size() > 1) kept.push_back(s.size() - 1);
+    return kept;
+}
+
 // Two triangles per segment of each run, extended by half the width at both ends (square
 // caps) so that neighbouring quads cover the joint.
 std::vector<LineVertex> build_quads(const std::vector<ScreenPath>& paths, const LinesDesc& style) {
@@ -34,11 +60,16 @@ std::vector<LineVertex> build_quads(const std::vector<ScreenPath>& paths, const 
         const float faint = path.visible || style.hidden != HiddenLines::Faint ? 1.0f : 0.25f;
         const float dashed = !path.visible && style.hidden == HiddenLines::Dashed ? 1.0f : 0.0f;
         const float width = path.visible ? ls.width : std::max(1.0f, 0.6f * ls.width);
-        const size_t n = path.samples.size();
+        // Draw through the samples that matter: a sample is skipped while the polyline from
+        // the last kept one stays within 0.25 px of a straight line and the alpha barely
+        // changes. Visibility samples every δ px are far denser than straight runs need,
+        // and lavapipe pays per triangle.
+        const std::vector<size_t> kept = simplify(path);
+        const size_t n = kept.size();
         const size_t segments = path.closed ? n : n - 1;
         for (size_t i = 0; i < segments; ++i) {
-            const ScreenSample& a = path.samples[i];
-            const ScreenSample& b = path.samples[(i + 1) % n];
+            const ScreenSample& a = path.samples[kept[i]];
+            const ScreenSample& b = path.samples[kept[(i + 1) % n]];
             glm::vec2 dir = b.pixel - a.pixel;
             const float length = glm::length(dir);
             if (length < 1e-6f) continue;

@@ -40,7 +40,8 @@ RenderTarget::RenderTarget(const Context& ctx, uint32_t w, uint32_t h)
     : width(w),
       height(h),
       color(ctx, {.width = w, .height = h, .format = VK_FORMAT_R8G8B8A8_UNORM,
-                  .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                  .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                           VK_IMAGE_USAGE_TRANSFER_DST_BIT,  // cleared by transfer when lines-only
                   .name = "color target"}),
       depth(ctx, {.width = w, .height = h, .format = VK_FORMAT_D32_SFLOAT,
                   .usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
@@ -56,22 +57,26 @@ SurfacePass::SurfacePass(const Context& ctx)
                                       .offset = offsetof(Vertex, normal)}},
                       .cull_mode = VK_CULL_MODE_NONE,  // glTF parts may be single-sided or open
                       .push_constant_size = sizeof(SurfacePush),
-                      .name = "surface"}) {}
+                      .name = "surface"}),
+      depth_only_(ctx, {.vertex_spirv = LW_SPIRV(surface_vert_spv),
+                        .vertex_stride = sizeof(Vertex),
+                        .attributes = {{.location = 0, .format = VK_FORMAT_R32G32B32_SFLOAT, .offset = 0},
+                                       {.location = 1, .format = VK_FORMAT_R32G32B32_SFLOAT,
+                                        .offset = offsetof(Vertex, normal)}},
+                        .cull_mode = VK_CULL_MODE_NONE,
+                        .color_format = VK_FORMAT_UNDEFINED,
+                        .push_constant_size = sizeof(SurfacePush),
+                        .name = "surface depth only"}) {}
 
 glm::vec3 key_light_direction(const CameraMatrices& camera) {
     const glm::vec3 view_space = glm::normalize(glm::vec3(-0.4f, 0.6f, 0.7f));
     return glm::normalize(glm::vec3(glm::inverse(camera.view) * glm::vec4(view_space, 0.0f)));
 }
 
-void SurfacePass::record(VkCommandBuffer cmd, RenderTarget& target, const GpuMesh& mesh,
-                         const CameraMatrices& camera, const glm::vec3& eye, const SurfaceStyle& style) const {
-    record_image_barrier(cmd, target.color,
-                         {.old_layout = VK_IMAGE_LAYOUT_UNDEFINED,
-                          .new_layout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                          .src_stage = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
-                          .src_access = VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT,
-                          .dst_stage = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                          .dst_access = VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT});
+namespace {
+
+// Depth: cleared to 1 (far), written by the mesh, then left readable by copies.
+void begin_depth(VkCommandBuffer cmd, RenderTarget& target) {
     record_image_barrier(cmd, target.depth,
                          {.old_layout = VK_IMAGE_LAYOUT_UNDEFINED,
                           .new_layout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
@@ -81,56 +86,9 @@ void SurfacePass::record(VkCommandBuffer cmd, RenderTarget& target, const GpuMes
                                        VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
                           .dst_access = VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
                                         VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT});
+}
 
-    VkRenderingAttachmentInfo color{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
-                                    .imageView = target.color.view(),
-                                    .imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                                    .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
-                                    .storeOp = VK_ATTACHMENT_STORE_OP_STORE};
-    color.clearValue.color = {{style.background.r, style.background.g, style.background.b, 1.0f}};
-    VkRenderingAttachmentInfo depth{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
-                                    .imageView = target.depth.view(),
-                                    .imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
-                                    .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
-                                    .storeOp = VK_ATTACHMENT_STORE_OP_STORE};
-    depth.clearValue.depthStencil = {1.0f, 0};
-    VkRenderingInfo rendering{.sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
-                              .renderArea = {{0, 0}, {target.width, target.height}},
-                              .layerCount = 1,
-                              .colorAttachmentCount = 1,
-                              .pColorAttachments = &color,
-                              .pDepthAttachment = &depth};
-    vkCmdBeginRendering(cmd, &rendering);
-    VkViewport viewport{0.0f, 0.0f, float(target.width), float(target.height), 0.0f, 1.0f};
-    VkRect2D scissor{{0, 0}, {target.width, target.height}};
-    vkCmdSetViewport(cmd, 0, 1, &viewport);
-    vkCmdSetScissor(cmd, 0, 1, &scissor);
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.get());
-
-    // Lines-only output still needs the depth for visibility: draw the surface in the
-    // background colour, unlit, so it writes depth but no visible shading.
-    const bool unlit = !style.draw_surface || style.shading == Shading::Unlit;
-    const glm::vec3 base = style.draw_surface ? style.color : style.background;
-    SurfacePush push{.view_proj = camera.view_proj,
-                     .eye = glm::vec4(eye, 1.0f),
-                     .light_dir = glm::vec4(key_light_direction(camera), 0.0f),
-                     .base_color = glm::vec4(base, float(unlit ? int(Shading::Unlit) : int(style.shading)))};
-    vkCmdPushConstants(cmd, pipeline_.layout(), VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
-                       sizeof(push), &push);
-    VkDeviceSize offset = 0;
-    VkBuffer vertex_buffer = mesh.vertices.get();
-    vkCmdBindVertexBuffers(cmd, 0, 1, &vertex_buffer, &offset);
-    vkCmdBindIndexBuffer(cmd, mesh.indices.get(), 0, VK_INDEX_TYPE_UINT32);
-    vkCmdDrawIndexed(cmd, mesh.index_count, 1, 0, 0, 0);
-    vkCmdEndRendering(cmd);
-
-    record_image_barrier(cmd, target.color,
-                         {.old_layout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                          .new_layout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                          .src_stage = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                          .src_access = VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
-                          .dst_stage = VK_PIPELINE_STAGE_2_COPY_BIT,
-                          .dst_access = VK_ACCESS_2_TRANSFER_READ_BIT});
+void end_depth(VkCommandBuffer cmd, RenderTarget& target) {
     record_image_barrier(cmd, target.depth,
                          {.old_layout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
                           .new_layout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
@@ -138,6 +96,111 @@ void SurfacePass::record(VkCommandBuffer cmd, RenderTarget& target, const GpuMes
                           .src_access = VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
                           .dst_stage = VK_PIPELINE_STAGE_2_COPY_BIT,
                           .dst_access = VK_ACCESS_2_TRANSFER_READ_BIT});
+}
+
+VkRenderingAttachmentInfo depth_attachment(RenderTarget& target) {
+    VkRenderingAttachmentInfo depth{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
+                                    .imageView = target.depth.view(),
+                                    .imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
+                                    .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
+                                    .storeOp = VK_ATTACHMENT_STORE_OP_STORE};
+    depth.clearValue.depthStencil = {1.0f, 0};
+    return depth;
+}
+
+void draw_mesh(VkCommandBuffer cmd, const GraphicsPipeline& pipeline, RenderTarget& target, const GpuMesh& mesh,
+               const SurfacePush& push) {
+    VkViewport viewport{0.0f, 0.0f, float(target.width), float(target.height), 0.0f, 1.0f};
+    VkRect2D scissor{{0, 0}, {target.width, target.height}};
+    vkCmdSetViewport(cmd, 0, 1, &viewport);
+    vkCmdSetScissor(cmd, 0, 1, &scissor);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.get());
+    vkCmdPushConstants(cmd, pipeline.layout(), VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+                       sizeof(push), &push);
+    VkDeviceSize offset = 0;
+    VkBuffer vertex_buffer = mesh.vertices.get();
+    vkCmdBindVertexBuffers(cmd, 0, 1, &vertex_buffer, &offset);
+    vkCmdBindIndexBuffer(cmd, mesh.indices.get(), 0, VK_INDEX_TYPE_UINT32);
+    vkCmdDrawIndexed(cmd, mesh.index_count, 1, 0, 0, 0);
+}
+
+}  // namespace
+
+void SurfacePass::record_depth_only(VkCommandBuffer cmd, RenderTarget& target, const GpuMesh& mesh,
+                                    const CameraMatrices& camera, const SurfaceStyle& style) const {
+    // The colour is the background: a clear, no fragment shading (much cheaper on lavapipe).
+    record_image_barrier(cmd, target.color,
+                         {.old_layout = VK_IMAGE_LAYOUT_UNDEFINED,
+                          .new_layout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                          .src_stage = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                          .src_access = VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT,
+                          .dst_stage = VK_PIPELINE_STAGE_2_CLEAR_BIT,
+                          .dst_access = VK_ACCESS_2_TRANSFER_WRITE_BIT});
+    VkClearColorValue clear{{style.background.r, style.background.g, style.background.b, 1.0f}};
+    VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    vkCmdClearColorImage(cmd, target.color.get(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &clear, 1, &range);
+    record_image_barrier(cmd, target.color,
+                         {.old_layout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                          .new_layout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                          .src_stage = VK_PIPELINE_STAGE_2_CLEAR_BIT,
+                          .src_access = VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                          .dst_stage = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                          .dst_access = VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT});
+    begin_depth(cmd, target);
+    VkRenderingAttachmentInfo depth = depth_attachment(target);
+    VkRenderingInfo rendering{.sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
+                              .renderArea = {{0, 0}, {target.width, target.height}},
+                              .layerCount = 1,
+                              .pDepthAttachment = &depth};
+    vkCmdBeginRendering(cmd, &rendering);
+    draw_mesh(cmd, depth_only_, target, mesh, SurfacePush{.view_proj = camera.view_proj});
+    vkCmdEndRendering(cmd);
+    end_depth(cmd, target);
+}
+
+void SurfacePass::record(VkCommandBuffer cmd, RenderTarget& target, const GpuMesh& mesh,
+                         const CameraMatrices& camera, const glm::vec3& eye, const SurfaceStyle& style) const {
+    if (!style.draw_surface) {
+        record_depth_only(cmd, target, mesh, camera, style);
+        return;
+    }
+    record_image_barrier(cmd, target.color,
+                         {.old_layout = VK_IMAGE_LAYOUT_UNDEFINED,
+                          .new_layout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                          .src_stage = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                          .src_access = VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT,
+                          .dst_stage = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                          .dst_access = VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT});
+    begin_depth(cmd, target);
+    VkRenderingAttachmentInfo color{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
+                                    .imageView = target.color.view(),
+                                    .imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                                    .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
+                                    .storeOp = VK_ATTACHMENT_STORE_OP_STORE};
+    color.clearValue.color = {{style.background.r, style.background.g, style.background.b, 1.0f}};
+    VkRenderingAttachmentInfo depth = depth_attachment(target);
+    VkRenderingInfo rendering{.sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
+                              .renderArea = {{0, 0}, {target.width, target.height}},
+                              .layerCount = 1,
+                              .colorAttachmentCount = 1,
+                              .pColorAttachments = &color,
+                              .pDepthAttachment = &depth};
+    vkCmdBeginRendering(cmd, &rendering);
+    const int mode = style.shading == Shading::Unlit ? int(Shading::Unlit) : int(style.shading);
+    draw_mesh(cmd, pipeline_, target, mesh,
+              SurfacePush{.view_proj = camera.view_proj,
+                          .eye = glm::vec4(eye, 1.0f),
+                          .light_dir = glm::vec4(key_light_direction(camera), 0.0f),
+                          .base_color = glm::vec4(style.color, float(mode))});
+    vkCmdEndRendering(cmd);
+    record_image_barrier(cmd, target.color,
+                         {.old_layout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                          .new_layout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                          .src_stage = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                          .src_access = VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
+                          .dst_stage = VK_PIPELINE_STAGE_2_COPY_BIT,
+                          .dst_access = VK_ACCESS_2_TRANSFER_READ_BIT});
+    end_depth(cmd, target);
 }
 
 FrameReadback render_surface_frame(const Context& ctx, const SurfacePass& pass, RenderTarget& target,

@@ -45,12 +45,17 @@ class SurfacePass {
 public:
     explicit SurfacePass(const Context& ctx);
 
-    // Records the pass: clears, draws, and leaves both images in TRANSFER_SRC_OPTIMAL.
+    // Records the pass: clears, draws, and leaves both images in TRANSFER_SRC_OPTIMAL. With
+    // `style.draw_surface` off, the colour is only cleared and the mesh drawn depth-only.
     void record(VkCommandBuffer cmd, RenderTarget& target, const GpuMesh& mesh, const CameraMatrices& camera,
                 const glm::vec3& eye, const SurfaceStyle& style) const;
 
 private:
+    void record_depth_only(VkCommandBuffer cmd, RenderTarget& target, const GpuMesh& mesh,
+                           const CameraMatrices& camera, const SurfaceStyle& style) const;
+
     GraphicsPipeline pipeline_;
+    GraphicsPipeline depth_only_;  // lines over the background: depth, no shading
 };
 
 struct FrameReadback {

@@ -8,8 +8,9 @@
 //   linework-bench lines   MODEL.glb [--subdivide K] [--size WxH] [--frames N] [--device D]
 //
 // surface: the shaded surface pass (colour + depth), GPU time from timestamps.
-// lines:   the whole line frame (surface + extraction + readback + chaining + visibility +
-//          line drawing + colour readback, wall time) and its stages: extraction on the GPU
+// lines:   the whole line frame (surface + extraction + depth readback + chaining +
+//          visibility + line drawing, wall time; the finished image stays on the GPU as a
+//          viewer's would) and its stages: extraction on the GPU
 //          (timestamps), the CPU reference extraction, chaining and visibility (CPU).
 // Both print the median (and min, max) over N frames after two warm-up frames.
 #include <algorithm>
@@ -37,6 +38,7 @@ struct BenchOptions {
     std::string size = "1920x1080";
     int frames = 20;
     std::string device = "auto";
+    bool shaded = false;  // lines: toon shading under the lines (default: depth only)
 };
 
 struct Series {
@@ -115,14 +117,25 @@ int run_lines(const BenchOptions& b) {
     renderer.set_mesh(s.scene.mesh, true, lines.params.crease_angle_deg);
     std::printf("line mesh (weld, curvature, feature edges, upload): %.0f ms\n", prepare_timer.elapsed_ms());
 
-    Series frame_ms, extract_gpu, surface_gpu, draw_gpu, chain, visibility, extract_cpu;
+    // The extraction alone in its own submission, wall-clock: checks the timestamps.
+    lw::LineExtractor extractor(ctx);
+    extractor.set_mesh(*renderer.line_mesh());
+
+    lw::SurfaceStyle surface;
+    surface.draw_surface = b.shaded;
+
+    Series frame_ms, extract_gpu, extract_wall, surface_gpu, draw_gpu, chain, visibility, extract_cpu;
     size_t segments = 0, paths = 0;
     for (int frame = -2; frame < b.frames; ++frame) {
-        const lw::Frame f = renderer.render(s.camera, s.scene.camera.eye, lw::SurfaceStyle{}, lines);
+        const lw::Frame f = renderer.render(s.camera, s.scene.camera.eye, surface, lines, {.color = false});
         lw::Timer cpu;
         const auto reference = lw::extract_lines_reference(*renderer.line_mesh(), s.scene.camera.eye, lines.params);
         const double cpu_ms = cpu.elapsed_ms();
+        lw::Timer gpu_wall;
+        const auto gpu_segments = extractor.extract(s.scene.camera.eye, lines.params);
+        const double gpu_wall_ms = gpu_wall.elapsed_ms();
         if (frame < 0) continue;
+        extract_wall.values.push_back(gpu_wall_ms);
         frame_ms.values.push_back(f.timings.total_ms);
         chain.values.push_back(f.timings.chain_ms);
         visibility.values.push_back(f.timings.visibility_ms);
@@ -136,10 +149,12 @@ int run_lines(const BenchOptions& b) {
         paths = f.paths.size();
         if (reference.size() != segments) throw lw::Error("GPU and CPU extraction disagree on the segment count");
     }
-    std::printf("line frame %dx%d, %d frames, %zu segments, %zu paths:\n", s.width, s.height, b.frames, segments, paths);
-    frame_ms.print("whole line frame (wall)");
-    surface_gpu.print("GPU surface + depth");
+    std::printf("line frame %dx%d (%s), %d frames, %zu segments, %zu paths:\n", s.width, s.height,
+                b.shaded ? "over toon shading" : "over the background: depth-only pass", b.frames, segments, paths);
+    frame_ms.print("line frame (wall)");
+    surface_gpu.print(b.shaded ? "GPU surface + depth" : "GPU depth pass");
     extract_gpu.print("GPU extraction");
+    extract_wall.print("  same, wall (submit+wait+readback)");
     chain.print("CPU chaining");
     visibility.print("CPU visibility");
     draw_gpu.print("GPU line drawing");
@@ -167,6 +182,7 @@ int main(int argc, char** argv) {
     add_options(surface_cmd, surface);
     CLI::App* lines_cmd = app.add_subcommand("lines", "The whole line frame and its stages.");
     add_options(lines_cmd, lines);
+    lines_cmd->add_flag("--shaded", lines.shaded, "Draw the lines over toon shading instead of the background");
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

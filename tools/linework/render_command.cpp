@@ -100,7 +100,7 @@ int run_render(const RenderOptions& o) {
         std::printf("lines: %zu welded vertices, feature size %.4g, curvature in %.0f ms\n", lm->mesh.positions.size(),
                     double(lm->feature_size), prepare_timer.elapsed_ms());
 
-    const Frame frame = renderer.render(camera, scene.camera.eye, desc.style, desc.lines);
+    const Frame frame = renderer.render(camera, scene.camera.eye, desc.style, desc.lines, {.color = true, .depth = o.exr});
 
     const std::filesystem::path png = out_dir / "frame_0000.png";
     write_png(png, frame.image.color);
