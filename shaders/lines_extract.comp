@@ -27,8 +27,10 @@ layout(push_constant) uniform LinesPush {
     uint pad;
 } pc;
 
+// The cheap per-view quantities first; the suggestive test only for faces that need it
+// (most faces have no zero crossing at all). Same expressions as view_quantities.h.
 struct View {
-    float ndotv, kr, num, den;
+    float ndotv, kr, u, w;
 };
 
 View vertex_view(uint i) {
@@ -38,19 +40,29 @@ View vertex_view(uint i) {
     v = vec3(v.x * inv_len, v.y * inv_len, v.z * inv_len);
     vec3 n = cv.normal.xyz, e1 = cv.pdir1_k1.xyz, e2 = cv.pdir2_k2.xyz;
     float k1 = cv.pdir1_k1.w, k2 = cv.pdir2_k2.w;
-    vec4 C = cv.dcurv;
     precise float ndotv = n.x * v.x + n.y * v.y + n.z * v.z;
     precise float u = v.x * e1.x + v.y * e1.y + v.z * e1.z;
     precise float w = v.x * e2.x + v.y * e2.y + v.z * e2.z;
     precise float u2 = u * u;
     precise float w2 = w * w;
     precise float kr = k1 * u2 + k2 * w2;
+    return View(ndotv, kr, u, w);
+}
+
+// The suggestive-contour test numerator (threshold subtracted); the denominator is n·v.
+float test_numerator(uint i, View b) {
+    CurvVertex cv = vertices[i];
+    float k1 = cv.pdir1_k1.w, k2 = cv.pdir2_k2.w;
+    vec4 C = cv.dcurv;
+    float u = b.u, w = b.w, ndotv = b.ndotv;
+    precise float u2 = u * u;
+    precise float w2 = w * w;
     precise float csc2 = 1.0 / (u2 + w2);
     precise float num0 = (u2 * (u * C[0] + 3.0 * w * C[1]) + w2 * (3.0 * u * C[2] + w * C[3])) * csc2;
     precise float tr = (k2 - k1) * u * w * csc2;
     precise float num1 = num0 - 2.0 * ndotv * (tr * tr);
     precise float test_num = num1 - pc.eye.w * ndotv;
-    return View(ndotv, kr, test_num, ndotv);
+    return test_num;
 }
 
 void append(LineSegment s) {
@@ -143,13 +155,16 @@ void main() {
 
     if ((pc.flags & FLAG_SUGGESTIVE) != 0u) {
         vec3 val = vec3(v0.kr, v1.kr, v2.kr);
-        vec3 num = vec3(v0.num, v1.num, v2.num);
-        vec3 den = vec3(v0.den, v1.den, v2.den);
         bool back_facing = v0.ndotv <= 0.0 && v1.ndotv <= 0.0 && v2.ndotv <= 0.0;
-        bool rejected = (num[0] <= 0.0 && den[0] >= 0.0 && num[1] <= 0.0 && den[1] >= 0.0 && num[2] <= 0.0 && den[2] >= 0.0) ||
-                        (num[0] >= 0.0 && den[0] <= 0.0 && num[1] >= 0.0 && den[1] <= 0.0 && num[2] >= 0.0 && den[2] <= 0.0);
-        if (has_both_signs(val) && !back_facing && !rejected)
-            face_isoline(f, corners, val, num, den, true, pc.fade, LINE_SUGGESTIVE);
+        if (has_both_signs(val) && !back_facing) {
+            vec3 num = vec3(test_numerator(corners[0], v0), test_numerator(corners[1], v1),
+                            test_numerator(corners[2], v2));
+            vec3 den = vec3(v0.ndotv, v1.ndotv, v2.ndotv);
+            bool rejected =
+                (num[0] <= 0.0 && den[0] >= 0.0 && num[1] <= 0.0 && den[1] >= 0.0 && num[2] <= 0.0 && den[2] >= 0.0) ||
+                (num[0] >= 0.0 && den[0] <= 0.0 && num[1] >= 0.0 && den[1] <= 0.0 && num[2] >= 0.0 && den[2] <= 0.0);
+            if (!rejected) face_isoline(f, corners, val, num, den, true, pc.fade, LINE_SUGGESTIVE);
+        }
     }
     if ((pc.flags & FLAG_SILHOUETTES) != 0u) {
         vec3 val = vec3(v0.ndotv, v1.ndotv, v2.ndotv);

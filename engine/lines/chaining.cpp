@@ -1,7 +1,11 @@
 #include "lines/chaining.h"
 
 #include <algorithm>
+#include <array>
+#include <iterator>
 #include <tuple>
+
+#include "core/parallel.h"
 
 namespace lw {
 
@@ -112,25 +116,51 @@ void sort_segments(std::vector<LineSegment>& segments) {
 
 std::vector<LinePath> chain_segments(const std::vector<LineSegment>& segments) {
     // Canonical order by index (cheaper than moving 80-byte segments), then one type at a time.
-    // Sort (type, face) packed in 64 bits with the index; the few ties (segments of one
-    // face and type) are settled by the keys.
-    std::vector<std::pair<uint64_t, uint32_t>> packed(segments.size());
-    for (uint32_t i = 0; i < packed.size(); ++i)
-        packed[i] = {uint64_t(segments[i].type) << 32 | segments[i].face, i};
-    std::sort(packed.begin(), packed.end(), [&](const auto& a, const auto& b) {
-        if (a.first != b.first) return a.first < b.first;
-        return canonical_less(segments[a.second], segments[b.second]);
-    });
+    // Canonical order (type, face, key0, key1) by counting sorts — linear, unlike a
+    // comparison sort: bucket by face, settle the few segments of one face by insertion,
+    // then a stable bucket by type.
+    uint32_t face_count = 0;
+    for (const LineSegment& s : segments) face_count = std::max(face_count, s.face + 1);
+    std::vector<uint32_t> face_start(size_t(face_count) + 1, 0);
+    for (const LineSegment& s : segments) ++face_start[s.face + 1];
+    for (size_t f = 0; f < face_count; ++f) face_start[f + 1] += face_start[f];
+    std::vector<uint32_t> by_face(segments.size());
+    {
+        std::vector<uint32_t> fill(face_start.begin(), face_start.end() - 1);
+        for (uint32_t i = 0; i < segments.size(); ++i) by_face[fill[segments[i].face]++] = i;
+    }
+    for (size_t f = 0; f < face_count; ++f)
+        for (uint32_t a = face_start[f] + 1; a < face_start[f + 1]; ++a)
+            for (uint32_t b = a; b > face_start[f] && canonical_less(segments[by_face[b]], segments[by_face[b - 1]]); --b)
+                std::swap(by_face[b], by_face[b - 1]);
+    std::array<uint32_t, kLineTypeCount + 1> type_start{};
+    for (const LineSegment& s : segments) ++type_start[std::min<uint32_t>(s.type, kLineTypeCount - 1) + 1];
+    for (int t = 0; t < kLineTypeCount; ++t) type_start[size_t(t) + 1] += type_start[size_t(t)];
     std::vector<uint32_t> order(segments.size());
-    for (size_t i = 0; i < order.size(); ++i) order[i] = packed[i].second;
-    std::vector<LinePath> paths;
-    size_t begin = 0;
-    while (begin < order.size()) {
+    {
+        std::array<uint32_t, kLineTypeCount> fill{};
+        std::copy(type_start.begin(), type_start.end() - 1, fill.begin());
+        for (uint32_t i : by_face) order[fill[std::min<uint32_t>(segments[i].type, kLineTypeCount - 1)]++] = i;
+    }
+
+    // Types chain independently: one task per type, concatenated in type order.
+    std::vector<std::pair<size_t, size_t>> ranges;  // [begin, end) of each type in `order`
+    for (size_t begin = 0; begin < order.size();) {
         size_t end = begin;
         while (end < order.size() && segments[order[end]].type == segments[order[begin]].type) ++end;
-        chain_type(segments, order.data() + begin, end - begin, static_cast<LineType>(segments[order[begin]].type), paths);
+        ranges.push_back({begin, end});
         begin = end;
     }
+    std::vector<std::vector<LinePath>> per_type(ranges.size());
+    parallel_for(ranges.size(), 1, [&](size_t first, size_t last, size_t) {
+        for (size_t r = first; r < last; ++r) {
+            const auto [begin, end] = ranges[r];
+            chain_type(segments, order.data() + begin, end - begin, static_cast<LineType>(segments[order[begin]].type),
+                       per_type[r]);
+        }
+    });
+    std::vector<LinePath> paths;
+    for (auto& list : per_type) std::move(list.begin(), list.end(), std::back_inserter(paths));
     return paths;
 }
 
