@@ -32,10 +32,10 @@ RenderedFrame render(Context& ctx, const fs::path& model, int width, int height,
     desc.style.shading = shading;
     RenderedFrame r{.scene = load_scene(desc)};
     r.camera = camera_matrices(r.scene.camera, float(width) / float(height), r.scene.bounds);
-    GpuMesh mesh = upload_mesh(ctx, r.scene.mesh);
-    SurfacePass pass(ctx);
-    RenderTarget target(ctx, uint32_t(width), uint32_t(height));
-    r.frame = render_surface_frame(ctx, pass, target, mesh, r.camera, r.scene.camera.eye, desc.style);
+    FrameRenderer renderer(ctx, uint32_t(width), uint32_t(height));
+    renderer.set_mesh(r.scene.mesh, false, 0.0f);
+    desc.lines.enabled = false;
+    r.frame = renderer.render(r.camera, r.scene.camera.eye, desc.style, desc.lines, {.color = true, .depth = true}).image;
     return r;
 }
 

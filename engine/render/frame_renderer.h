@@ -32,6 +32,11 @@ struct FrameTimings {
     std::vector<PassTime> gpu;   // per GPU pass (surface, lines extract, lines draw)
 };
 
+struct FrameReadback {
+    ImageRGBA8 color;
+    std::vector<float> depth;  // window-space depth in [0, 1], row-major, 1 = background
+};
+
 // What to read back besides what the line stages need.
 struct FrameOutputs {
     bool color = true;   // the final image (false: a viewer or a benchmark that shows nothing)

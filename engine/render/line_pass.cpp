@@ -113,13 +113,7 @@ Buffer LinePass::record(const Context& ctx, VkCommandBuffer cmd, RenderTarget& t
                         .purpose = MemoryPurpose::Upload, .name = "line quads"});
     std::memcpy(buffer.mapped(), vertices.data(), vertices.size() * sizeof(LineVertex));
 
-    record_image_barrier(cmd, target.color,
-                         {.old_layout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                          .new_layout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                          .src_stage = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
-                          .src_access = VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT,
-                          .dst_stage = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                          .dst_access = VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT});
+    target.color_to_attachment(cmd, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
     VkRenderingAttachmentInfo color{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
                                     .imageView = target.color.view(),
                                     .imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
@@ -131,10 +125,7 @@ Buffer LinePass::record(const Context& ctx, VkCommandBuffer cmd, RenderTarget& t
                               .colorAttachmentCount = 1,
                               .pColorAttachments = &color};
     vkCmdBeginRendering(cmd, &rendering);
-    VkViewport viewport{0.0f, 0.0f, float(target.width), float(target.height), 0.0f, 1.0f};
-    VkRect2D scissor{{0, 0}, {target.width, target.height}};
-    vkCmdSetViewport(cmd, 0, 1, &viewport);
-    vkCmdSetScissor(cmd, 0, 1, &scissor);
+    target.set_viewport(cmd);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.get());
     const LineDrawPush push{{float(target.width), float(target.height)}, 8.0f, 0.0f};
     vkCmdPushConstants(cmd, pipeline_.layout(), VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
@@ -144,13 +135,7 @@ Buffer LinePass::record(const Context& ctx, VkCommandBuffer cmd, RenderTarget& t
     vkCmdBindVertexBuffers(cmd, 0, 1, &vertex_buffer, &offset);
     vkCmdDraw(cmd, static_cast<uint32_t>(vertices.size()), 1, 0, 0);
     vkCmdEndRendering(cmd);
-    record_image_barrier(cmd, target.color,
-                         {.old_layout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                          .new_layout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                          .src_stage = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                          .src_access = VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
-                          .dst_stage = VK_PIPELINE_STAGE_2_COPY_BIT,
-                          .dst_access = VK_ACCESS_2_TRANSFER_READ_BIT});
+    target.color_to_transfer_src(cmd);
     return buffer;
 }
 

@@ -36,18 +36,6 @@ GpuMesh upload_mesh(const Context& ctx, const TriangleMesh& mesh) {
         .index_count = static_cast<uint32_t>(mesh.indices.size())};
 }
 
-RenderTarget::RenderTarget(const Context& ctx, uint32_t w, uint32_t h)
-    : width(w),
-      height(h),
-      color(ctx, {.width = w, .height = h, .format = VK_FORMAT_R8G8B8A8_UNORM,
-                  .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
-                           VK_IMAGE_USAGE_TRANSFER_DST_BIT,  // cleared by transfer when lines-only
-                  .name = "color target"}),
-      depth(ctx, {.width = w, .height = h, .format = VK_FORMAT_D32_SFLOAT,
-                  .usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
-                           VK_IMAGE_USAGE_SAMPLED_BIT,
-                  .name = "depth target"}) {}
-
 SurfacePass::SurfacePass(const Context& ctx)
     : pipeline_(ctx, {.vertex_spirv = LW_SPIRV(surface_vert_spv),
                       .fragment_spirv = LW_SPIRV(surface_frag_spv),
@@ -110,10 +98,7 @@ VkRenderingAttachmentInfo depth_attachment(RenderTarget& target) {
 
 void draw_mesh(VkCommandBuffer cmd, const GraphicsPipeline& pipeline, RenderTarget& target, const GpuMesh& mesh,
                const SurfacePush& push) {
-    VkViewport viewport{0.0f, 0.0f, float(target.width), float(target.height), 0.0f, 1.0f};
-    VkRect2D scissor{{0, 0}, {target.width, target.height}};
-    vkCmdSetViewport(cmd, 0, 1, &viewport);
-    vkCmdSetScissor(cmd, 0, 1, &scissor);
+    target.set_viewport(cmd);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.get());
     vkCmdPushConstants(cmd, pipeline.layout(), VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                        sizeof(push), &push);
@@ -164,13 +149,7 @@ void SurfacePass::record(VkCommandBuffer cmd, RenderTarget& target, const GpuMes
         record_depth_only(cmd, target, mesh, camera, style);
         return;
     }
-    record_image_barrier(cmd, target.color,
-                         {.old_layout = VK_IMAGE_LAYOUT_UNDEFINED,
-                          .new_layout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                          .src_stage = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
-                          .src_access = VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT,
-                          .dst_stage = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                          .dst_access = VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT});
+    target.color_to_attachment(cmd, VK_IMAGE_LAYOUT_UNDEFINED);
     begin_depth(cmd, target);
     VkRenderingAttachmentInfo color{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
                                     .imageView = target.color.view(),
@@ -193,45 +172,8 @@ void SurfacePass::record(VkCommandBuffer cmd, RenderTarget& target, const GpuMes
                           .light_dir = glm::vec4(key_light_direction(camera), 0.0f),
                           .base_color = glm::vec4(style.color, float(mode))});
     vkCmdEndRendering(cmd);
-    record_image_barrier(cmd, target.color,
-                         {.old_layout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                          .new_layout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                          .src_stage = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                          .src_access = VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
-                          .dst_stage = VK_PIPELINE_STAGE_2_COPY_BIT,
-                          .dst_access = VK_ACCESS_2_TRANSFER_READ_BIT});
+    target.color_to_transfer_src(cmd);
     end_depth(cmd, target);
-}
-
-FrameReadback render_surface_frame(const Context& ctx, const SurfacePass& pass, RenderTarget& target,
-                                   const GpuMesh& mesh, const CameraMatrices& camera, const glm::vec3& eye,
-                                   const SurfaceStyle& style, GpuTimer* timer) {
-    const VkDeviceSize pixels = VkDeviceSize(target.width) * target.height;
-    Buffer color_readback(ctx, {.size = pixels * 4, .usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                .purpose = MemoryPurpose::Readback, .name = "color readback"});
-    Buffer depth_readback(ctx, {.size = pixels * 4, .usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                .purpose = MemoryPurpose::Readback, .name = "depth readback"});
-    ctx.submit_and_wait([&](VkCommandBuffer cmd) {
-        if (timer) {
-            timer->reset(cmd);
-            timer->begin(cmd, "surface");
-        }
-        pass.record(cmd, target, mesh, camera, eye, style);
-        if (timer) timer->end(cmd);
-        record_image_to_buffer(cmd, target.color, color_readback);
-        record_image_to_buffer(cmd, target.depth, depth_readback);
-        record_memory_barrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                              VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
-    });
-    color_readback.invalidate(ctx);
-    depth_readback.invalidate(ctx);
-
-    FrameReadback out;
-    out.color = ImageRGBA8{int(target.width), int(target.height), std::vector<uint8_t>(pixels * 4)};
-    std::memcpy(out.color.pixels.data(), color_readback.mapped(), pixels * 4);
-    out.depth.resize(pixels);
-    std::memcpy(out.depth.data(), depth_readback.mapped(), pixels * 4);
-    return out;
 }
 
 }  // namespace lw

@@ -2,8 +2,8 @@
 //
 // Input:  a world-space `TriangleMesh` (uploaded once as a `GpuMesh`), camera matrices and
 //         a `SurfaceStyle`.
-// Output: an RGBA8 colour image and a D32 depth image in a `RenderTarget`, readable back
-//         to the host as `ImageRGBA8` and linear floats. The depth image is also what the
+// Output: an RGBA8 colour image and a D32 depth image in a `RenderTarget` (see
+//         frame_renderer.h for reading them back). The depth image is also what the
 //         visibility stage tests line samples against.
 //
 // Headless is the only platform here: render into VkImages with dynamic rendering, copy
@@ -20,6 +20,7 @@
 #include "gpu/pipeline.h"
 #include "gpu/resources.h"
 #include "gpu/timestamps.h"
+#include "render/render_target.h"
 #include "scene/camera.h"
 #include "scene/style.h"
 #include "scene/triangle_mesh.h"
@@ -33,13 +34,6 @@ struct GpuMesh {
     uint32_t index_count = 0;
 };
 [[nodiscard]] GpuMesh upload_mesh(const Context& ctx, const TriangleMesh& mesh);
-
-struct RenderTarget {
-    RenderTarget(const Context& ctx, uint32_t width, uint32_t height);
-    uint32_t width, height;
-    Image color;  // R8G8B8A8_UNORM
-    Image depth;  // D32_SFLOAT, cleared to 1
-};
 
 class SurfacePass {
 public:
@@ -58,16 +52,6 @@ private:
     GraphicsPipeline depth_only_;  // lines over the background: depth, no shading
 };
 
-struct FrameReadback {
-    ImageRGBA8 color;
-    std::vector<float> depth;  // window-space depth in [0, 1], row-major, 1 = background
-};
-
-// Renders one frame and reads it back; `timer` (optional) gets the pass's GPU time.
-[[nodiscard]] FrameReadback render_surface_frame(const Context& ctx, const SurfacePass& pass, RenderTarget& target,
-                                                 const GpuMesh& mesh, const CameraMatrices& camera,
-                                                 const glm::vec3& eye, const SurfaceStyle& style,
-                                                 GpuTimer* timer = nullptr);
 
 // The key light: from the upper left of the view and in front, fixed to the camera so that
 // every view of a model is lit the same way.

@@ -1,0 +1,44 @@
+#include "render/render_target.h"
+
+namespace lw {
+
+RenderTarget::RenderTarget(const Context& ctx, uint32_t w, uint32_t h)
+    : width(w),
+      height(h),
+      color(ctx, {.width = w, .height = h, .format = VK_FORMAT_R8G8B8A8_UNORM,
+                  .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                           VK_IMAGE_USAGE_TRANSFER_DST_BIT,  // cleared by transfer when lines-only
+                  .name = "color target"}),
+      depth(ctx, {.width = w, .height = h, .format = VK_FORMAT_D32_SFLOAT,
+                  .usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                           VK_IMAGE_USAGE_SAMPLED_BIT,
+                  .name = "depth target"}) {}
+
+void RenderTarget::color_to_attachment(VkCommandBuffer cmd, VkImageLayout from) const {
+    record_image_barrier(cmd, color,
+                         {.old_layout = from,
+                          .new_layout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                          .src_stage = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                          .src_access = VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT,
+                          .dst_stage = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                          .dst_access = VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT});
+}
+
+void RenderTarget::color_to_transfer_src(VkCommandBuffer cmd) const {
+    record_image_barrier(cmd, color,
+                         {.old_layout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                          .new_layout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                          .src_stage = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                          .src_access = VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
+                          .dst_stage = VK_PIPELINE_STAGE_2_COPY_BIT,
+                          .dst_access = VK_ACCESS_2_TRANSFER_READ_BIT});
+}
+
+void RenderTarget::set_viewport(VkCommandBuffer cmd) const {
+    VkViewport viewport{0.0f, 0.0f, float(width), float(height), 0.0f, 1.0f};
+    VkRect2D scissor{{0, 0}, {width, height}};
+    vkCmdSetViewport(cmd, 0, 1, &viewport);
+    vkCmdSetScissor(cmd, 0, 1, &scissor);
+}
+
+}  // namespace lw

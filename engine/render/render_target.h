@@ -1,0 +1,29 @@
+// engine/render/render_target.h — the colour and depth images a frame renders into.
+//
+// Passes hand the images to each other in TRANSFER_SRC_OPTIMAL (ready to be read back);
+// the helpers here move the colour image into and out of attachment use and set the
+// viewport to the whole target, so that every pass does it the same way.
+#pragma once
+
+#include <cstdint>
+
+#include "gpu/context.h"
+#include "gpu/resources.h"
+
+namespace lw {
+
+struct RenderTarget {
+    RenderTarget(const Context& ctx, uint32_t width, uint32_t height);
+    uint32_t width, height;
+    Image color;  // R8G8B8A8_UNORM
+    Image depth;  // D32_SFLOAT, cleared to 1
+
+    // Colour from `from` (UNDEFINED discards, TRANSFER_SRC keeps) to COLOR_ATTACHMENT_OPTIMAL.
+    void color_to_attachment(VkCommandBuffer cmd, VkImageLayout from) const;
+    // Colour from COLOR_ATTACHMENT_OPTIMAL back to TRANSFER_SRC_OPTIMAL.
+    void color_to_transfer_src(VkCommandBuffer cmd) const;
+    // Viewport and scissor covering the whole target (dynamic state of every pipeline).
+    void set_viewport(VkCommandBuffer cmd) const;
+};
+
+}  // namespace lw
