@@ -110,4 +110,20 @@ WeldedMesh weld(const TriangleMesh& mesh) {
     return out;
 }
 
+void update_positions(WeldedMesh& welded, const TriangleMesh& deformed) {
+    if (deformed.positions.size() != welded.welded_index.size())
+        throw Error("update_positions: the deformed mesh has " + std::to_string(deformed.positions.size()) +
+                    " vertices, the welded mesh was built from " + std::to_string(welded.welded_index.size()));
+    std::vector<char> seen(welded.positions.size(), 0);
+    for (size_t v = 0; v < deformed.positions.size(); ++v) {
+        const uint32_t w = welded.welded_index[v];
+        if (w >= welded.positions.size())
+            throw Error("update_positions: welded vertex " + std::to_string(w) + " is past the welded vertex count " +
+                        std::to_string(welded.positions.size()));
+        if (seen[w]) continue;  // several inputs share w: the first one speaks for it
+        seen[w] = 1;
+        welded.positions[w] = deformed.positions[v];
+    }
+}
+
 }  // namespace lw

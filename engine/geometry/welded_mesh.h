@@ -38,4 +38,12 @@ struct WeldedMesh {
 
 [[nodiscard]] WeldedMesh weld(const TriangleMesh& mesh);
 
+// Animation: refreshes the positions of a mesh welded once (from the rest pose) from a
+// deformed mesh of the same vertex numbering (flatten_posed of another pose), keeping the
+// faces, edges and adjacency. Each welded vertex takes the position of the first input
+// vertex welded into it. The topology stays that of the weld: vertices that meet only in
+// the deformed pose are not merged, and faces that collapse in it are not dropped.
+// Throws lw::Error when the vertex counts differ.
+void update_positions(WeldedMesh& welded, const TriangleMesh& deformed);
+
 }  // namespace lw

@@ -32,6 +32,42 @@ Handle<VkPipelineLayout> create_layout(const Context& ctx, VkDescriptorSetLayout
     return Handle<VkPipelineLayout>(ctx.device(), layout, vkDestroyPipelineLayout);
 }
 
+// A push-descriptor set layout of `count` storage buffers at bindings 0..count-1 (none if 0).
+Handle<VkDescriptorSetLayout> create_storage_set_layout(const Context& ctx, uint32_t count, VkShaderStageFlags stages) {
+    if (count == 0) return {};
+    std::vector<VkDescriptorSetLayoutBinding> bindings;
+    for (uint32_t i = 0; i < count; ++i)
+        bindings.push_back({.binding = i,
+                            .descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+                            .descriptorCount = 1,
+                            .stageFlags = stages});
+    VkDescriptorSetLayoutCreateInfo info{.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO,
+                                         .flags = VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR,
+                                         .bindingCount = static_cast<uint32_t>(bindings.size()),
+                                         .pBindings = bindings.data()};
+    VkDescriptorSetLayout set_layout = VK_NULL_HANDLE;
+    LW_VK(vkCreateDescriptorSetLayout(ctx.device(), &info, nullptr, &set_layout));
+    return Handle<VkDescriptorSetLayout>(ctx.device(), set_layout, vkDestroyDescriptorSetLayout);
+}
+
+void push_buffers(const Context& ctx, VkCommandBuffer cmd, VkPipelineBindPoint bind_point, VkPipelineLayout layout,
+                  uint32_t expected, std::initializer_list<const Buffer*> buffers) {
+    if (buffers.size() != expected)
+        throw Error("push descriptors: " + std::to_string(buffers.size()) + " buffers for " +
+                    std::to_string(expected) + " bindings");
+    if (expected == 0) return;
+    std::vector<VkDescriptorBufferInfo> infos;
+    for (const Buffer* b : buffers) infos.push_back({.buffer = b->get(), .offset = 0, .range = VK_WHOLE_SIZE});
+    std::vector<VkWriteDescriptorSet> writes;
+    for (uint32_t i = 0; i < expected; ++i)
+        writes.push_back({.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
+                          .dstBinding = i,
+                          .descriptorCount = 1,
+                          .descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+                          .pBufferInfo = &infos[i]});
+    ctx.cmd_push_descriptor_set(cmd, bind_point, layout, 0, static_cast<uint32_t>(writes.size()), writes.data());
+}
+
 }  // namespace
 
 ComputePipeline::ComputePipeline(const Context& ctx, const ComputePipelineDesc& desc)
@@ -40,21 +76,7 @@ ComputePipeline::ComputePipeline(const Context& ctx, const ComputePipelineDesc& 
         throw Error(ctx.info().name + " lacks VK_KHR_push_descriptor, which compute passes need");
     if (desc.push_constant_size > 128) throw Error("push constants over 128 bytes are not portable");
 
-    std::vector<VkDescriptorSetLayoutBinding> bindings;
-    for (uint32_t i = 0; i < desc.storage_buffers; ++i)
-        bindings.push_back({.binding = i,
-                            .descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-                            .descriptorCount = 1,
-                            .stageFlags = VK_SHADER_STAGE_COMPUTE_BIT});
-    if (!bindings.empty()) {
-        VkDescriptorSetLayoutCreateInfo info{.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO,
-                                             .flags = VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR,
-                                             .bindingCount = static_cast<uint32_t>(bindings.size()),
-                                             .pBindings = bindings.data()};
-        VkDescriptorSetLayout set_layout = VK_NULL_HANDLE;
-        LW_VK(vkCreateDescriptorSetLayout(ctx.device(), &info, nullptr, &set_layout));
-        set_layout_ = Handle<VkDescriptorSetLayout>(ctx.device(), set_layout, vkDestroyDescriptorSetLayout);
-    }
+    set_layout_ = create_storage_set_layout(ctx, desc.storage_buffers, VK_SHADER_STAGE_COMPUTE_BIT);
     layout_ = create_layout(ctx, set_layout_.get(), desc.push_constant_size, VK_SHADER_STAGE_COMPUTE_BIT);
 
     auto module = create_shader_module(ctx, desc.spirv);
@@ -74,31 +96,40 @@ ComputePipeline::ComputePipeline(const Context& ctx, const ComputePipelineDesc& 
 void ComputePipeline::dispatch(const Context& ctx, VkCommandBuffer cmd, std::initializer_list<const Buffer*> buffers,
                                const void* push_constants, uint32_t groups_x, uint32_t groups_y,
                                uint32_t groups_z) const {
-    if (buffers.size() != storage_buffers_)
-        throw Error("compute dispatch: " + std::to_string(buffers.size()) + " buffers for " +
-                    std::to_string(storage_buffers_) + " bindings");
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
-    if (storage_buffers_ > 0) {
-        std::vector<VkDescriptorBufferInfo> infos;
-        for (const Buffer* b : buffers) infos.push_back({.buffer = b->get(), .offset = 0, .range = VK_WHOLE_SIZE});
-        std::vector<VkWriteDescriptorSet> writes;
-        for (uint32_t i = 0; i < storage_buffers_; ++i)
-            writes.push_back({.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
-                              .dstBinding = i,
-                              .descriptorCount = 1,
-                              .descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-                              .pBufferInfo = &infos[i]});
-        ctx.cmd_push_descriptor_set(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0,
-                                    static_cast<uint32_t>(writes.size()), writes.data());
-    }
+    push_buffers(ctx, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, storage_buffers_, buffers);
     if (push_constant_size_ > 0)
         vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, push_constant_size_, push_constants);
     vkCmdDispatch(cmd, groups_x, groups_y, groups_z);
 }
 
-GraphicsPipeline::GraphicsPipeline(const Context& ctx, const GraphicsPipelineDesc& desc) {
+GraphicsPipeline::GraphicsPipeline(const Context& ctx, const GraphicsPipelineDesc& desc)
+    : storage_buffers_(desc.storage_buffers) {
     const VkShaderStageFlags stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
-    layout_ = create_layout(ctx, VK_NULL_HANDLE, desc.push_constant_size, stages);
+    // Push descriptors: storage buffers at bindings [0, S), sampled images at [S, S + I).
+    if (desc.storage_buffers + desc.sampled_images > 0) {
+        if (!ctx.has_push_descriptors())
+            throw Error(ctx.info().name + " lacks VK_KHR_push_descriptor, which this pass needs");
+        std::vector<VkDescriptorSetLayoutBinding> bindings;
+        for (uint32_t i = 0; i < desc.storage_buffers; ++i)
+            bindings.push_back({.binding = i,
+                                .descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+                                .descriptorCount = 1,
+                                .stageFlags = stages});
+        for (uint32_t i = 0; i < desc.sampled_images; ++i)
+            bindings.push_back({.binding = desc.storage_buffers + i,
+                                .descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                                .descriptorCount = 1,
+                                .stageFlags = VK_SHADER_STAGE_FRAGMENT_BIT});
+        VkDescriptorSetLayoutCreateInfo info{.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO,
+                                             .flags = VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR,
+                                             .bindingCount = static_cast<uint32_t>(bindings.size()),
+                                             .pBindings = bindings.data()};
+        VkDescriptorSetLayout set_layout = VK_NULL_HANDLE;
+        LW_VK(vkCreateDescriptorSetLayout(ctx.device(), &info, nullptr, &set_layout));
+        set_layout_ = Handle<VkDescriptorSetLayout>(ctx.device(), set_layout, vkDestroyDescriptorSetLayout);
+    }
+    layout_ = create_layout(ctx, set_layout_.get(), desc.push_constant_size, stages);
 
     auto vertex = create_shader_module(ctx, desc.vertex_spirv);
     // No fragment shader: a depth-only pipeline.
@@ -111,8 +142,10 @@ GraphicsPipeline::GraphicsPipeline(const Context& ctx, const GraphicsPipelineDes
          .module = fragment, .pName = "main"},
     }};
 
-    VkVertexInputBindingDescription binding{.binding = 0, .stride = desc.vertex_stride,
-                                            .inputRate = VK_VERTEX_INPUT_RATE_VERTEX};
+    VkVertexInputBindingDescription binding{
+        .binding = 0,
+        .stride = desc.vertex_stride,
+        .inputRate = desc.per_instance ? VK_VERTEX_INPUT_RATE_INSTANCE : VK_VERTEX_INPUT_RATE_VERTEX};
     std::vector<VkVertexInputAttributeDescription> attributes;
     for (const auto& a : desc.attributes)
         attributes.push_back({.location = a.location, .binding = 0, .format = a.format, .offset = a.offset});
@@ -138,12 +171,13 @@ GraphicsPipeline::GraphicsPipeline(const Context& ctx, const GraphicsPipelineDes
                                                 .depthTestEnable = desc.depth_test,
                                                 .depthWriteEnable = desc.depth_write,
                                                 .depthCompareOp = VK_COMPARE_OP_LESS_OR_EQUAL};
+    const bool additive = desc.blend == BlendMode::Additive;
     VkPipelineColorBlendAttachmentState blend_attachment{
-        .blendEnable = desc.alpha_blend,
-        .srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA,
-        .dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA,
+        .blendEnable = desc.blend != BlendMode::None,
+        .srcColorBlendFactor = additive ? VK_BLEND_FACTOR_ONE : VK_BLEND_FACTOR_SRC_ALPHA,
+        .dstColorBlendFactor = additive ? VK_BLEND_FACTOR_ONE : VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA,
         .colorBlendOp = VK_BLEND_OP_ADD,
-        .srcAlphaBlendFactor = VK_BLEND_FACTOR_ZERO,
+        .srcAlphaBlendFactor = additive ? VK_BLEND_FACTOR_ONE : VK_BLEND_FACTOR_ZERO,
         .dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE,
         .alphaBlendOp = VK_BLEND_OP_ADD,
         .colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT |
@@ -177,6 +211,23 @@ GraphicsPipeline::GraphicsPipeline(const Context& ctx, const GraphicsPipelineDes
     LW_VK(vkCreateGraphicsPipelines(ctx.device(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
     pipeline_ = Handle<VkPipeline>(ctx.device(), pipeline, vkDestroyPipeline);
     ctx.set_name(VK_OBJECT_TYPE_PIPELINE, reinterpret_cast<uint64_t>(pipeline), desc.name);
+}
+
+void GraphicsPipeline::push_image(const Context& ctx, VkCommandBuffer cmd, uint32_t binding, VkImageView view,
+                                  VkSampler sampler) const {
+    VkDescriptorImageInfo image{.sampler = sampler, .imageView = view,
+                                .imageLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    VkWriteDescriptorSet write{.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
+                               .dstBinding = binding,
+                               .descriptorCount = 1,
+                               .descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                               .pImageInfo = &image};
+    ctx.cmd_push_descriptor_set(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &write);
+}
+
+void GraphicsPipeline::push_storage_buffers(const Context& ctx, VkCommandBuffer cmd,
+                                            std::initializer_list<const Buffer*> buffers) const {
+    push_buffers(ctx, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, storage_buffers_, buffers);
 }
 
 }  // namespace lw

@@ -52,6 +52,8 @@ struct VertexAttribute {
     uint32_t offset = 0;
 };
 
+enum class BlendMode { None, Alpha, Additive };
+
 struct GraphicsPipelineDesc {
     std::span<const uint32_t> vertex_spirv;
     std::span<const uint32_t> fragment_spirv;  // empty: depth only (no colour attachment either)
@@ -63,9 +65,14 @@ struct GraphicsPipelineDesc {
     VkFormat depth_format = VK_FORMAT_D32_SFLOAT;      // VK_FORMAT_UNDEFINED = no depth
     bool depth_test = true;
     bool depth_write = true;
-    bool alpha_blend = false;  // src·α + dst·(1 − α) on colour, α kept from the destination
+    // Alpha: src·α + dst·(1 − α) on colour, α kept from the destination; Additive: src + dst
+    // on every channel (splatting sums).
+    BlendMode blend = BlendMode::None;
+    uint32_t storage_buffers = 0;  // bindings [0, S): storage buffers (vertex and fragment), pushed per draw
+    uint32_t sampled_images = 0;   // bindings [S, S + I): combined image samplers (fragment), pushed per draw
     uint32_t push_constant_size = 0;
     const char* name = nullptr;
+    bool per_instance = false;  // the vertex binding advances per instance, not per vertex
 };
 
 // A pipeline for dynamic rendering; viewport and scissor are dynamic state.
@@ -77,7 +84,15 @@ public:
     VkPipeline get() const { return pipeline_; }
     VkPipelineLayout layout() const { return layout_; }
 
+    // Binds `view` with `sampler` at `binding` (push descriptor) for the following draws.
+    void push_image(const Context& ctx, VkCommandBuffer cmd, uint32_t binding, VkImageView view,
+                    VkSampler sampler) const;
+    // Binds the storage buffers to bindings 0.. (push descriptors) for the following draws.
+    void push_storage_buffers(const Context& ctx, VkCommandBuffer cmd, std::initializer_list<const Buffer*> buffers) const;
+
 private:
+    uint32_t storage_buffers_ = 0;
+    Handle<VkDescriptorSetLayout> set_layout_;
     Handle<VkPipelineLayout> layout_;
     Handle<VkPipeline> pipeline_;
 };

@@ -1,5 +1,6 @@
 #include "gpu/resources.h"
 
+#include <cstring>
 #include <string>
 
 #include "core/error.h"
@@ -123,7 +124,8 @@ uint32_t format_texel_size(VkFormat format) {
     }
 }
 
-Image::Image(const Context& ctx, const ImageDesc& desc) : format_(desc.format), extent_{desc.width, desc.height} {
+Image::Image(const Context& ctx, const ImageDesc& desc)
+    : format_(desc.format), extent_{desc.width, desc.height}, depth_(desc.depth) {
     if (desc.width == 0 || desc.height == 0) throw Error("image size must be positive");
     const uint32_t max_dim = ctx.properties().limits.maxImageDimension2D;
     if (desc.width > max_dim || desc.height > max_dim)
@@ -131,10 +133,11 @@ Image::Image(const Context& ctx, const ImageDesc& desc) : format_(desc.format), 
                     std::to_string(max_dim));
     const bool depth = desc.format == VK_FORMAT_D32_SFLOAT || desc.format == VK_FORMAT_D16_UNORM;
     aspect_ = depth ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT;
+    const bool volume = desc.depth > 1;
     VkImageCreateInfo info{.sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO,
-                           .imageType = VK_IMAGE_TYPE_2D,
+                           .imageType = volume ? VK_IMAGE_TYPE_3D : VK_IMAGE_TYPE_2D,
                            .format = desc.format,
-                           .extent = {desc.width, desc.height, 1},
+                           .extent = {desc.width, desc.height, desc.depth},
                            .mipLevels = 1,
                            .arrayLayers = 1,
                            .samples = VK_SAMPLE_COUNT_1_BIT,
@@ -154,12 +157,49 @@ Image::Image(const Context& ctx, const ImageDesc& desc) : format_(desc.format), 
 
     VkImageViewCreateInfo view_info{.sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO,
                                     .image = image,
-                                    .viewType = VK_IMAGE_VIEW_TYPE_2D,
+                                    .viewType = volume ? VK_IMAGE_VIEW_TYPE_3D : VK_IMAGE_VIEW_TYPE_2D,
                                     .format = desc.format,
                                     .subresourceRange = {aspect_, 0, 1, 0, 1}};
     VkImageView view = VK_NULL_HANDLE;
     LW_VK(vkCreateImageView(ctx.device(), &view_info, nullptr, &view));
     view_ = Handle<VkImageView>(ctx.device(), view, vkDestroyImageView);
+}
+
+void upload_image(const Context& ctx, const Image& image, std::span<const std::byte> bytes) {
+    Buffer staging(ctx, {.size = bytes.size(), .usage = VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                         .purpose = MemoryPurpose::Upload, .name = "image staging"});
+    std::memcpy(staging.mapped(), bytes.data(), bytes.size());
+    ctx.submit_and_wait([&](VkCommandBuffer cmd) {
+        record_image_barrier(cmd, image,
+                             {.old_layout = VK_IMAGE_LAYOUT_UNDEFINED,
+                              .new_layout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                              .dst_stage = VK_PIPELINE_STAGE_2_COPY_BIT,
+                              .dst_access = VK_ACCESS_2_TRANSFER_WRITE_BIT});
+        VkBufferImageCopy region{.imageSubresource = {image.aspect(), 0, 0, 1},
+                                 .imageExtent = {image.extent().width, image.extent().height, image.depth()}};
+        vkCmdCopyBufferToImage(cmd, staging.get(), image.get(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+        record_image_barrier(cmd, image,
+                             {.old_layout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                              .new_layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                              .src_stage = VK_PIPELINE_STAGE_2_COPY_BIT,
+                              .src_access = VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                              .dst_stage = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                              .dst_access = VK_ACCESS_2_SHADER_SAMPLED_READ_BIT});
+    });
+}
+
+Handle<VkSampler> create_sampler(const Context& ctx, const SamplerDesc& desc) {
+    VkSamplerCreateInfo info{.sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO,
+                             .magFilter = desc.filter,
+                             .minFilter = desc.filter,
+                             .mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST,
+                             .addressModeU = desc.address_u,
+                             .addressModeV = desc.address_v,
+                             .addressModeW = desc.address_w,
+                             .maxLod = 0.0f};
+    VkSampler sampler = VK_NULL_HANDLE;
+    LW_VK(vkCreateSampler(ctx.device(), &info, nullptr, &sampler));
+    return Handle<VkSampler>(ctx.device(), sampler, vkDestroySampler);
 }
 
 void record_image_to_buffer(VkCommandBuffer cmd, const Image& image, const Buffer& buffer) {

@@ -71,12 +71,14 @@ template <typename T>
 struct ImageDesc {
     uint32_t width = 0;
     uint32_t height = 0;
+    uint32_t depth = 1;  // > 1: a 3D image (e.g. a SLAM's levels)
     VkFormat format = VK_FORMAT_R8G8B8A8_UNORM;
     VkImageUsageFlags usage = 0;
     const char* name = nullptr;
 };
 
-// A 2D, single-mip image in Device memory with a view of its whole extent.
+// A 2D (or 3D, when depth > 1), single-mip image in Device memory with a view of its whole
+// extent.
 class Image {
 public:
     Image() = default;
@@ -86,6 +88,7 @@ public:
     VkImageView view() const { return view_; }
     VkFormat format() const { return format_; }
     VkExtent2D extent() const { return extent_; }
+    uint32_t depth() const { return depth_; }
     VkImageAspectFlags aspect() const { return aspect_; }
 
 private:
@@ -94,8 +97,21 @@ private:
     Handle<VkImageView> view_;
     VkFormat format_ = VK_FORMAT_UNDEFINED;
     VkExtent2D extent_{};
+    uint32_t depth_ = 1;
     VkImageAspectFlags aspect_ = 0;
 };
+
+// Fills a colour image created with TRANSFER_DST | SAMPLED usage from `bytes` (tightly
+// packed texels) and leaves it in SHADER_READ_ONLY_OPTIMAL (waits for the copy).
+void upload_image(const Context& ctx, const Image& image, std::span<const std::byte> bytes);
+
+struct SamplerDesc {
+    VkFilter filter = VK_FILTER_LINEAR;
+    VkSamplerAddressMode address_u = VK_SAMPLER_ADDRESS_MODE_REPEAT;
+    VkSamplerAddressMode address_v = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    VkSamplerAddressMode address_w = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+};
+[[nodiscard]] Handle<VkSampler> create_sampler(const Context& ctx, const SamplerDesc& desc);
 
 // Bytes per texel of the formats the engine reads back.
 uint32_t format_texel_size(VkFormat format);

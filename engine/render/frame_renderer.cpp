@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "core/timer.h"
+#include "geometry/welded_mesh.h"
 #include "lines/chaining.h"
 
 namespace lw {
@@ -29,8 +30,21 @@ void FrameRenderer::set_mesh(const TriangleMesh& mesh, bool with_lines, float cr
     }
 }
 
+void FrameRenderer::deform(const TriangleMesh& posed) {
+    mesh_ = upload_mesh(*ctx_, posed);
+    if (!line_mesh_) return;
+    update_positions(line_mesh_->mesh, posed);
+    line_mesh_->curvature = compute_curvature(line_mesh_->mesh);
+    extractor_.set_mesh(*line_mesh_);
+}
+
+void FrameRenderer::set_slam(LineType type, const Slam& slam) {
+    slams_[size_t(type)] = std::make_unique<SlamTexture>(*ctx_, slam);
+    if (!stroke_pass_) stroke_pass_ = std::make_unique<StrokePass>(*ctx_);
+}
+
 Frame FrameRenderer::render(const CameraMatrices& camera, const glm::vec3& eye, const SurfaceStyle& surface,
-                            const LinesDesc& lines, const FrameOutputs& outputs) {
+                            const LinesDesc& lines, const FrameOutputs& outputs, const CoherenceParams* coherence) {
     if (!mesh_) throw Error("FrameRenderer: no mesh set");
     const bool draw_lines = lines.enabled && line_mesh_.has_value();
     Timer total;
@@ -70,12 +84,43 @@ Frame FrameRenderer::render(const CameraMatrices& camera, const glm::vec3& eye, 
         frame.timings.visibility_ms = visibility.elapsed_ms();
     }
 
-    // (2) Lines over the surface, colour read back. The quads must outlive the submission.
+    // Coherent parameterization of the visible paths (§4), for strokes and dumps.
+    if (draw_lines && coherence) {
+        if (!tracker_) tracker_ = std::make_unique<CoherenceTracker>(*ctx_, target_.width, target_.height);
+        Timer param_timer;
+        frame.params = tracker_->update(frame.screen_paths, camera,
+                                        {&line_mesh_->mesh.positions, &line_mesh_->mesh.faces}, *coherence);
+        frame.timings.coherence_ms = param_timer.elapsed_ms();
+    }
+
+    // Stroke geometry per SLAM-styled type; the other types stay plain lines.
+    LinesDesc plain = lines;
+    std::array<std::vector<StrokeVertex>, kLineTypeCount> strokes;
+    if (draw_lines && !frame.params.empty())
+        for (size_t p = 0; p < frame.screen_paths.size(); ++p) {
+            const ScreenPath& path = frame.screen_paths[p];
+            const auto t = size_t(path.type);
+            if (!slams_[t] || !path.visible || !line_type_enabled(lines.params, path.type)) continue;
+            const LineStyle& style = lines.styles[t];
+            append_stroke(path,
+                          StrokeParams{.rho = frame.params[p].rho, .phi = frame.params[p].phi,
+                                       .fold = frame.params[p].fold, .width = style.width, .color = style.color,
+                                       .taper_px = style.taper_px},
+                          strokes[t]);
+        }
+    for (int t = 0; t < kLineTypeCount; ++t)
+        if (slams_[size_t(t)] && !frame.params.empty()) disable_line_type(plain.params, LineType(t));
+
+    // (2) Lines and strokes over the surface, colour read back. Vertex buffers must outlive
+    // the submission.
     Buffer quads;
+    std::array<Buffer, kLineTypeCount> stroke_buffers;
     ctx_->submit_and_wait([&](VkCommandBuffer cmd) {
         timer_.reset(cmd);
         timer_.begin(cmd, "lines draw");
-        if (draw_lines) quads = line_pass_.record(*ctx_, cmd, target_, frame.screen_paths, lines);
+        if (draw_lines) quads = line_pass_.record(*ctx_, cmd, target_, frame.screen_paths, plain);
+        for (size_t t = 0; t < strokes.size(); ++t)
+            if (!strokes[t].empty()) stroke_buffers[t] = stroke_pass_->record(*ctx_, cmd, target_, strokes[t], *slams_[t]);
         timer_.end(cmd);
         if (outputs.color) record_image_to_buffer(cmd, target_.color, color_readback);
         record_memory_barrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,

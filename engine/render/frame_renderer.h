@@ -14,6 +14,7 @@
 #include <optional>
 #include <vector>
 
+#include "coherence/coherence.h"
 #include "gpu/context.h"
 #include "gpu/timestamps.h"
 #include "lines/extract_gpu.h"
@@ -22,6 +23,9 @@
 #include "render/line_pass.h"
 #include "render/surface_pass.h"
 #include "scene/style.h"
+#include "stroke/slam.h"
+#include "stroke/slam_texture.h"
+#include "stroke/stroke_pass.h"
 
 namespace lw {
 
@@ -29,6 +33,7 @@ struct FrameTimings {
     double total_ms = 0.0;       // wall, whole frame
     double chain_ms = 0.0;       // CPU
     double visibility_ms = 0.0;  // CPU
+    double coherence_ms = 0.0;   // votes + RANSAC + splat, wall
     std::vector<PassTime> gpu;   // per GPU pass (surface, lines extract, lines draw)
 };
 
@@ -48,6 +53,7 @@ struct Frame {
     std::vector<LineSegment> segments;
     std::vector<LinePath> paths;
     std::vector<ScreenPath> screen_paths;
+    std::vector<PathParam> params;  // per screen path, when strokes are parameterized
     FrameTimings timings;
 };
 
@@ -59,10 +65,22 @@ public:
     // line mesh (weld, curvature, feature edges) with `crease_angle_deg`.
     void set_mesh(const TriangleMesh& mesh, bool with_lines, float crease_angle_deg);
 
+    // A new pose of the mesh given to set_mesh (same topology: an animation frame). The
+    // line mesh keeps its welding and feature size; positions, curvature and its derivative
+    // are recomputed (a deforming surface changes its curvature).
+    void deform(const TriangleMesh& posed);
+
     const LineMesh* line_mesh() const { return line_mesh_ ? &*line_mesh_ : nullptr; }
 
+    // Lines of `type` are drawn as strokes textured with `slam` (others stay plain lines).
+    void set_slam(LineType type, const Slam& slam);
+
+    // One frame. With `coherence`, every visible path is parameterized (§4: votes from the
+    // previous frame, RANSAC, splat for the next one) — call it for consecutive frames in
+    // order — and stroked where a SLAM is set; without, lines are drawn plain.
     [[nodiscard]] Frame render(const CameraMatrices& camera, const glm::vec3& eye, const SurfaceStyle& surface,
-                               const LinesDesc& lines, const FrameOutputs& outputs = {});
+                               const LinesDesc& lines, const FrameOutputs& outputs = {},
+                               const CoherenceParams* coherence = nullptr);
 
 private:
     const Context* ctx_;
@@ -74,6 +92,9 @@ private:
     Buffer depth_readback_, color_readback_;  // reused every frame
     std::optional<GpuMesh> mesh_;
     std::optional<LineMesh> line_mesh_;
+    std::unique_ptr<CoherenceTracker> tracker_;  // made on first use: it holds a float target
+    std::unique_ptr<StrokePass> stroke_pass_;
+    std::array<std::unique_ptr<SlamTexture>, kLineTypeCount> slams_;
 };
 
 }  // namespace lw

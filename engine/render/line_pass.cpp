@@ -101,7 +101,7 @@ LinePass::LinePass(const Context& ctx)
                       .depth_format = VK_FORMAT_UNDEFINED,
                       .depth_test = false,
                       .depth_write = false,
-                      .alpha_blend = true,
+                      .blend = BlendMode::Alpha,
                       .push_constant_size = sizeof(LineDrawPush),
                       .name = "lines draw"}) {}
 
@@ -113,19 +113,7 @@ Buffer LinePass::record(const Context& ctx, VkCommandBuffer cmd, RenderTarget& t
                         .purpose = MemoryPurpose::Upload, .name = "line quads"});
     std::memcpy(buffer.mapped(), vertices.data(), vertices.size() * sizeof(LineVertex));
 
-    target.color_to_attachment(cmd, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
-    VkRenderingAttachmentInfo color{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
-                                    .imageView = target.color.view(),
-                                    .imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                                    .loadOp = VK_ATTACHMENT_LOAD_OP_LOAD,
-                                    .storeOp = VK_ATTACHMENT_STORE_OP_STORE};
-    VkRenderingInfo rendering{.sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
-                              .renderArea = {{0, 0}, {target.width, target.height}},
-                              .layerCount = 1,
-                              .colorAttachmentCount = 1,
-                              .pColorAttachments = &color};
-    vkCmdBeginRendering(cmd, &rendering);
-    target.set_viewport(cmd);
+    target.begin_overlay(cmd);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.get());
     const LineDrawPush push{{float(target.width), float(target.height)}, 8.0f, 0.0f};
     vkCmdPushConstants(cmd, pipeline_.layout(), VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
@@ -134,8 +122,7 @@ Buffer LinePass::record(const Context& ctx, VkCommandBuffer cmd, RenderTarget& t
     VkBuffer vertex_buffer = buffer.get();
     vkCmdBindVertexBuffers(cmd, 0, 1, &vertex_buffer, &offset);
     vkCmdDraw(cmd, static_cast<uint32_t>(vertices.size()), 1, 0, 0);
-    vkCmdEndRendering(cmd);
-    target.color_to_transfer_src(cmd);
+    target.end_overlay(cmd);
     return buffer;
 }
 

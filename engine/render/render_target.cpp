@@ -41,4 +41,25 @@ void RenderTarget::set_viewport(VkCommandBuffer cmd) const {
     vkCmdSetScissor(cmd, 0, 1, &scissor);
 }
 
+void RenderTarget::begin_overlay(VkCommandBuffer cmd) const {
+    color_to_attachment(cmd, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+    VkRenderingAttachmentInfo attachment{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
+                                         .imageView = color.view(),
+                                         .imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                                         .loadOp = VK_ATTACHMENT_LOAD_OP_LOAD,
+                                         .storeOp = VK_ATTACHMENT_STORE_OP_STORE};
+    VkRenderingInfo rendering{.sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
+                              .renderArea = {{0, 0}, {width, height}},
+                              .layerCount = 1,
+                              .colorAttachmentCount = 1,
+                              .pColorAttachments = &attachment};
+    vkCmdBeginRendering(cmd, &rendering);
+    set_viewport(cmd);
+}
+
+void RenderTarget::end_overlay(VkCommandBuffer cmd) const {
+    vkCmdEndRendering(cmd);
+    color_to_transfer_src(cmd);
+}
+
 }  // namespace lw

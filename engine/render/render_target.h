@@ -24,6 +24,11 @@ struct RenderTarget {
     void color_to_transfer_src(VkCommandBuffer cmd) const;
     // Viewport and scissor covering the whole target (dynamic state of every pipeline).
     void set_viewport(VkCommandBuffer cmd) const;
+
+    // An overlay pass draws over the finished colour (no depth): begin moves the colour to
+    // attachment use, starts rendering with LOAD and sets the viewport; end moves it back.
+    void begin_overlay(VkCommandBuffer cmd) const;
+    void end_overlay(VkCommandBuffer cmd) const;
 };
 
 }  // namespace lw

@@ -1,5 +1,7 @@
 #include "scene/scene.h"
 
+#include <algorithm>
+
 #include "core/error.h"
 
 namespace lw {
@@ -18,13 +20,33 @@ LoadedScene load_scene(const SceneDesc& desc) {
     for (const auto& path : desc.models) {
         scene.models.push_back(load_gltf(path));
         const Model& model = scene.models.back();
-        append_mesh(scene.mesh, flatten(model, world_transforms(model)));
+        // The rest pose, skinned: a skinned mesh's node transform does not place it (glTF 2.0
+        // §3.7.3), its joints do — RobotExpressive's hands sit at its wrists only so.
+        append_mesh(scene.mesh, flatten_posed(model, rest_pose(model)));
     }
     if (scene.mesh.indices.empty()) throw Error(desc.models.front().string() + ": no triangles to draw");
     scene.bounds = compute_bounds(scene.mesh.positions);
     const float aspect = float(desc.width) / float(desc.height);
     scene.camera = desc.camera ? *desc.camera : frame_bounds(scene.bounds, aspect, desc.fov_deg);
     return scene;
+}
+
+TriangleMesh pose_scene(const LoadedScene& scene, float seconds) {
+    TriangleMesh mesh;
+    for (const Model& model : scene.models) {
+        const std::vector<int> clips =
+            scene.desc.animation.play ? select_clips(model, scene.desc.animation.clip) : std::vector<int>{};
+        append_mesh(mesh, flatten_posed(model, clips.empty() ? rest_pose(model) : evaluate_pose(model, clips, seconds)));
+    }
+    return mesh;
+}
+
+float animation_duration(const LoadedScene& scene) {
+    if (!scene.desc.animation.play) return 0.0f;
+    float duration = 0.0f;
+    for (const Model& model : scene.models)
+        duration = std::max(duration, clips_duration(model, select_clips(model, scene.desc.animation.clip)));
+    return duration;
 }
 
 }  // namespace lw

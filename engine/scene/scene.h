@@ -8,6 +8,7 @@
 
 #include <vector>
 
+#include "scene/animation.h"
 #include "scene/camera.h"
 #include "scene/model.h"
 #include "scene/scene_file.h"
@@ -24,6 +25,14 @@ struct LoadedScene {
 };
 
 [[nodiscard]] LoadedScene load_scene(const SceneDesc& desc);
+
+// The scene's geometry at `seconds` on the animation clock: every model posed by its
+// selected clips (the scene's "animation"), skinned; the rest pose when nothing plays.
+// Vertex and triangle order are the same at every time (coherence relies on it).
+[[nodiscard]] TriangleMesh pose_scene(const LoadedScene& scene, float seconds);
+
+// The longest selected clip over the scene's models, seconds (0 when nothing plays).
+[[nodiscard]] float animation_duration(const LoadedScene& scene);
 
 // Appends `part` to `mesh` (indices offset).
 void append_mesh(TriangleMesh& mesh, const TriangleMesh& part);

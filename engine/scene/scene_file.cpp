@@ -102,10 +102,30 @@ private:
     std::set<std::string> known_;
 };
 
-ViewCamera read_camera(ObjectReader& parent, const std::filesystem::path& file, float* fov_deg) {
+// A look-at camera must see something: eye and target apart, up not along the view.
+void check_view(const ObjectReader& r, const glm::vec3& eye, const glm::vec3& target, const glm::vec3& up) {
+    if (eye == target) r.fail("eye and target coincide");
+    if (glm::length(glm::cross(target - eye, up)) < 1e-9f) r.fail_key("up", "is parallel to the view direction");
+}
+
+// "camera": a fixed camera (eye and target required), optionally turned by "orbit" degrees
+// over the frame range. With "orbit", eye and target may both be left out: the framing
+// camera turns, and only "fov" (the framing field of view) may accompany it.
+void read_camera(ObjectReader& parent, const std::filesystem::path& file, SceneDesc& scene) {
     ObjectReader r(parent.at("camera"), "camera", file);
     ViewCamera camera;
-    const bool has_eye = r.has("eye"), has_target = r.has("target");
+    const bool has_eye = r.has("eye"), has_target = r.has("target"), has_orbit = r.has("orbit");
+    if (has_orbit) {
+        scene.camera_path.kind = CameraPath::Kind::Orbit;
+        scene.camera_path.orbit.degrees = static_cast<float>(r.number("orbit", -36000.0, 36000.0));
+    }
+    if (has_orbit && !has_eye && !has_target) {
+        for (const char* key : {"up", "near", "far"})
+            if (r.has(key)) r.fail_key(key, "needs eye and target (an orbit without them turns the framing camera)");
+        if (r.has("fov")) scene.fov_deg = static_cast<float>(r.number("fov", 1.0, 170.0));
+        r.reject_unknown();
+        return;
+    }
     if (!has_eye) r.fail_key("eye", "required");
     if (!has_target) r.fail_key("target", "required");
     camera.eye = r.vec3("eye");
@@ -115,11 +135,82 @@ ViewCamera read_camera(ObjectReader& parent, const std::filesystem::path& file, 
     if (r.has("near")) camera.znear = static_cast<float>(r.number("near", 1e-6, 1e30));
     if (r.has("far")) camera.zfar = static_cast<float>(r.number("far", 1e-6, 1e30));
     r.reject_unknown();
-    if (camera.eye == camera.target) r.fail("eye and target coincide");
-    if (glm::length(glm::cross(camera.target - camera.eye, camera.up)) < 1e-9f) r.fail_key("up", "is parallel to the view direction");
+    check_view(r, camera.eye, camera.target, camera.up);
     if (camera.zfar > 0.0f && camera.znear > 0.0f && camera.zfar <= camera.znear) r.fail_key("far", "must exceed near");
-    *fov_deg = camera.fov_deg;
-    return camera;
+    // A turntable turns about the camera's own up: +y unless the scene is z-up.
+    scene.camera_path.orbit.axis = camera.up;
+    scene.fov_deg = camera.fov_deg;
+    scene.camera = camera;
+}
+
+// "camera_path": {"keyframes": [{"time", "eye", "target", "up"?, "fov"?}, ...]}, times in
+// seconds and strictly increasing; a keyframe without "fov" takes the scene's "fov".
+CameraPath read_camera_path(ObjectReader& parent, const std::filesystem::path& file, float default_fov) {
+    ObjectReader r(parent.at("camera_path"), "camera_path", file);
+    if (!r.has("keyframes")) r.fail_key("keyframes", "required");
+    const json& keys = r.at("keyframes");
+    if (!keys.is_array() || keys.empty()) r.fail_key("keyframes", "expected a non-empty array of keyframes");
+    CameraPath path;
+    path.kind = CameraPath::Kind::Keyframes;
+    for (size_t i = 0; i < keys.size(); ++i) {
+        ObjectReader k(keys[i], "camera_path.keyframes[" + std::to_string(i) + "]", file);
+        for (const char* key : {"time", "eye", "target"})
+            if (!k.has(key)) k.fail_key(key, "required");
+        CameraKeyframe key;
+        key.time = static_cast<float>(k.number("time", 0.0, 1e6));
+        if (!path.keyframes.empty() && !(key.time > path.keyframes.back().time))
+            k.fail_key("time", "must be later than the previous keyframe's (" +
+                                   k.at("time").dump() + " after " + keys[i - 1].at("time").dump() + ")");
+        key.eye = k.vec3("eye");
+        key.target = k.vec3("target");
+        if (k.has("up")) key.up = k.vec3("up");
+        key.fov_deg = k.has("fov") ? static_cast<float>(k.number("fov", 1.0, 170.0)) : default_fov;
+        k.reject_unknown();
+        check_view(k, key.eye, key.target, key.up);
+        path.keyframes.push_back(key);
+    }
+    r.reject_unknown();
+    return path;
+}
+
+// "animation": {"clip": name | index | "all", "fps": 24, "frames": [first, last]}, all
+// optional. Clip names are checked against the model when it is loaded (select_clips).
+AnimationDesc read_animation(ObjectReader& parent, const std::filesystem::path& file) {
+    ObjectReader r(parent.at("animation"), "animation", file);
+    AnimationDesc desc;
+    desc.play = true;
+    if (r.has("clip")) {
+        const json& v = r.at("clip");
+        if (v.is_string()) {
+            desc.clip.name = v.get<std::string>();
+            if (desc.clip.name.empty()) r.fail_key("clip", "empty name (an unnamed clip is chosen by its index)");
+            desc.clip.kind = desc.clip.name == "all" ? ClipChoice::Kind::All : ClipChoice::Kind::Name;
+        } else if (v.is_number_integer()) {
+            const long long index = v.get<long long>();
+            if (index < 0 || index > 1000000) r.fail_key("clip", "clip index must be 0 or more, got " + v.dump());
+            desc.clip.kind = ClipChoice::Kind::Index;
+            desc.clip.index = static_cast<int>(index);
+        } else {
+            r.fail_key("clip", "expected a clip name, a clip index or \"all\", got " + std::string(v.type_name()) +
+                                   " " + v.dump());
+        }
+    }
+    if (r.has("fps")) {
+        desc.fps = static_cast<float>(r.number("fps", 0.0, 1000.0));
+        if (!(desc.fps > 0.0f)) r.fail_key("fps", "must be greater than 0, got " + r.at("fps").dump());
+    }
+    if (r.has("frames")) {
+        const json& f = r.at("frames");
+        if (!f.is_array() || f.size() != 2 || !f[0].is_number_integer() || !f[1].is_number_integer())
+            r.fail_key("frames", "expected [first, last] frame numbers");
+        const long long first = f[0].get<long long>(), last = f[1].get<long long>();
+        if (first < 0 || last > 10000000) r.fail_key("frames", "frame numbers must be 0..10000000");
+        if (last < first)
+            r.fail_key("frames", "last frame " + std::to_string(last) + " is before first frame " + std::to_string(first));
+        desc.frames = FrameRange{static_cast<int>(first), static_cast<int>(last)};
+    }
+    r.reject_unknown();
+    return desc;
 }
 
 LineStyle read_line_type(ObjectReader& lines, LineType type, const std::filesystem::path& file, LinesDesc& desc) {
@@ -227,7 +318,12 @@ SceneDesc parse_scene_json(const std::string& text, const std::filesystem::path&
         scene.height = static_cast<int>(h);
     }
     if (r.has("fov")) scene.fov_deg = static_cast<float>(r.number("fov", 1.0, 170.0));
-    if (r.has("camera")) scene.camera = read_camera(r, source, &scene.fov_deg);
+    if (r.has("camera")) read_camera(r, source, scene);
+    if (r.has("camera_path")) {
+        if (r.has("camera")) r.fail_key("camera_path", "cannot be combined with camera (the keyframes set the camera)");
+        scene.camera_path = read_camera_path(r, source, scene.fov_deg);
+    }
+    if (r.has("animation")) scene.animation = read_animation(r, source);
     if (r.has("shading")) {
         const std::string s = r.string_of("shading", {"flat", "toon", "unlit", "none"});
         if (s == "flat") scene.style.shading = Shading::Flat;

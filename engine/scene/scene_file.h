@@ -2,7 +2,8 @@
 //
 // Input:  a scene file (see README "Scene files") or a bare .gltf/.glb path.
 // Output: `SceneDesc` — model paths (resolved against the scene file's folder), image
-//         size, an optional fixed camera, and the surface style.
+//         size, an optional fixed camera or a camera path, the animation timeline, and the
+//         surface style.
 //
 // Every key is checked: an unknown key or a value of the wrong type or range is an
 // lw::Error naming the file and the key path (e.g. `camera.fov`). No silent defaults for
@@ -14,10 +15,23 @@
 #include <string>
 #include <vector>
 
+#include "scene/animation.h"
 #include "scene/camera.h"
+#include "scene/camera_path.h"
 #include "scene/style.h"
 
 namespace lw {
+
+// The timeline of an image sequence ("animation" in the scene file).
+struct AnimationDesc {
+    bool play = false;                 // the file has "animation": clips play; else the rest pose
+    ClipChoice clip;                   // "clip": a name, an index or "all" (the default); the
+                                       // string "all" means every clip, even if one is named so
+    float fps = 24.0f;                 // "fps": frame f is at f / fps seconds, for the clips and
+                                       // camera keyframes alike
+    std::optional<FrameRange> frames;  // "frames": [first, last], inclusive; absent: the
+                                       // renderer's default (frame 0 to the clips' duration)
+};
 
 struct SceneDesc {
     std::filesystem::path source;                // the scene file; empty for a bare model
@@ -25,6 +39,10 @@ struct SceneDesc {
     int width = 960;
     int height = 720;
     std::optional<ViewCamera> camera;            // absent: frame the bounding box
+    // Fixed, or "camera.orbit" (the axis is the camera's up, +y for the framing camera, and
+    // the centre its target), or "camera_path" keyframes (then `camera` is absent).
+    CameraPath camera_path;
+    AnimationDesc animation;
     float fov_deg = 40.0f;                       // used when framing
     SurfaceStyle style;
     LinesDesc lines;

@@ -3,6 +3,7 @@
 
 #include <array>
 #include <cstdint>
+#include <string>
 
 #include <glm/glm.hpp>
 
@@ -26,6 +27,8 @@ namespace lw {
 struct LineStyle {
     float width = 2.0f;
     glm::vec3 color{0.0f};
+    std::string slam;      // SLAM file: draw this type as textured strokes (empty: plain lines)
+    float taper_px = 0.0f; // strokes: width tapers to the ends over this length
 };
 
 enum class HiddenLines { None, Dashed, Faint };
@@ -66,13 +69,22 @@ inline bool line_type_enabled(const LineParams& p, LineType type) {
     return false;
 }
 
+inline void disable_line_type(LineParams& p, LineType type) {
+    switch (type) {
+        case LineType::Silhouette: p.silhouettes = false; break;
+        case LineType::Suggestive: p.suggestive = false; break;
+        case LineType::Crease: p.creases = false; break;
+        case LineType::Border: p.borders = false; break;
+    }
+}
+
 // Everything about lines a scene file sets.
 struct LinesDesc {
     bool enabled = true;  // extract and draw lines at all
     LineParams params;
     std::array<LineStyle, kLineTypeCount> styles{
-        LineStyle{2.5f, glm::vec3(0.0f)}, LineStyle{2.5f, glm::vec3(0.0f)},
-        LineStyle{1.5f, glm::vec3(0.15f)}, LineStyle{1.5f, glm::vec3(0.15f)}};
+        LineStyle{2.5f, glm::vec3(0.0f), "", 0.0f}, LineStyle{2.5f, glm::vec3(0.0f), "", 0.0f},
+        LineStyle{1.5f, glm::vec3(0.15f), "", 0.0f}, LineStyle{1.5f, glm::vec3(0.15f), "", 0.0f}};
     HiddenLines hidden = HiddenLines::None;
     float sample_spacing_px = 2.0f;  // δ of the visibility stage
 };

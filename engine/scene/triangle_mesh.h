@@ -1,9 +1,14 @@
 // engine/scene/triangle_mesh.h — every mesh instance of a model, in world space.
 //
-// Input:  a validated `Model` and world transforms per node (rest pose or animated).
+// Input:  a validated `Model` and world transforms per node (rest pose or animated), and
+//         optionally the joint matrices of its skins (scene/animation.h computes them).
 // Output: `TriangleMesh` — one indexed triangle list holding every node's mesh transformed
 //         to world space, with per-vertex normals (the file's, or area-weighted face normals
 //         when it has none). This is what the shading pass draws; the line stages weld it.
+//
+// Vertex and triangle order depend only on the model (nodes depth-first from the roots,
+// children and primitives in file order), never on the transforms: every frame of an
+// animation has the same vertex numbering, so a mesh welded once can be updated in place.
 #pragma once
 
 #include <cstdint>
@@ -30,7 +35,19 @@ struct Bounds {
     float radius() const { return 0.5f * glm::length(max - min); }  // bounding-sphere radius of the box
 };
 
+// Every mesh instance rigidly transformed by its node's world transform; skins ignored.
 [[nodiscard]] TriangleMesh flatten(const Model& model, const std::vector<glm::mat4>& world);
+
+// As above, but primitives with JOINTS_0/WEIGHTS_0 on a node with a skin are deformed by
+// linear blend skinning (glTF 2.0 §3.7.3 "Skins"): `joint_matrices[skin][j]` is
+// world(joint j) × inverse bind matrix j, one list per skin of the model (or empty for no
+// skinning at all). Weights are renormalized to sum 1; a vertex whose weights are all zero
+// stays rigid at its node's world transform. As the spec requires, the skinned node's own
+// transform is otherwise ignored. Skinned triangles keep the file's winding (bind-space
+// orientation), so their index order never depends on the pose; a rigid instance's winding
+// is flipped back where its world transform mirrors.
+[[nodiscard]] TriangleMesh flatten(const Model& model, const std::vector<glm::mat4>& world,
+                                   const std::vector<std::vector<glm::mat4>>& joint_matrices);
 [[nodiscard]] Bounds compute_bounds(const std::vector<glm::vec3>& positions);
 
 // Area-weighted vertex normals of an indexed triangle list (zero-area faces ignored).

@@ -4,11 +4,20 @@
 #include <memory>
 #include <optional>
 
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <fstream>
+
+#include "coherence/path_dump.h"
 #include "commands.h"
 #include "core/error.h"
 #include "core/timer.h"
 #include "gpu/context.h"
 #include "io/image_io.h"
+#include "io/slam_io.h"
 #include "lines/svg_export.h"
 #include "render/frame_renderer.h"
 #include "scene/scene.h"
@@ -30,6 +39,14 @@ struct RenderOptions {
     bool no_lines = false;
     std::string svg;
     std::string hidden;
+    std::string frames;
+    int warmup = 0;
+    std::optional<float> orbit;
+    std::string param;
+    std::string dump_paths;
+    std::string slam;
+    float stroke_width = 6.0f;
+    float length_scale = 0.0f;  // 0: square texels (the SLAM's height over the stroke width)
 };
 
 // Applies command-line overrides to the scene description. A partial camera (only --eye)
@@ -68,23 +85,127 @@ void apply_camera_overrides(const RenderOptions& o, LoadedScene& scene) {
     if (scene.camera.eye == scene.camera.target) throw usage_error("--eye and --target coincide");
 }
 
+// "A:B" (inclusive) or "N" (one frame).
+FrameRange parse_frames(const std::string& text) {
+    FrameRange range;
+    const auto colon = text.find(':');
+    try {
+        size_t used = 0;
+        if (colon == std::string::npos) {
+            range.first = range.last = std::stoi(text, &used);
+            if (used != text.size()) throw 0;
+        } else {
+            range.first = std::stoi(text.substr(0, colon), &used);
+            if (used != colon) throw 0;
+            range.last = std::stoi(text.substr(colon + 1), &used);
+            if (used != text.size() - colon - 1) throw 0;
+        }
+    } catch (...) {
+        throw usage_error("--frames: expected A:B (inclusive) or N, got \"" + text + "\"");
+    }
+    if (range.last < range.first) throw usage_error("--frames: " + text + " ends before it starts");
+    return range;
+}
+
+std::string frame_name(int frame, const char* extension) {
+    char name[64];
+    std::snprintf(name, sizeof name, "frame_%04d.%s", frame, extension);
+    return name;
+}
+
+// A progress bar on a terminal, a line every tenth of the work otherwise (logs stay short).
+class Progress {
+public:
+    explicit Progress(int total) : total_(total), tty_(isatty(fileno(stderr)) != 0) {}
+    void update(int done, int frame, double ms) {
+        if (total_ <= 1) return;
+        if (tty_) {
+            const int width = 30, filled = width * done / total_;
+            std::fprintf(stderr, "\r[%s%s] %d/%d frame %d (%.0f ms)%s", std::string(size_t(filled), '#').c_str(),
+                         std::string(size_t(width - filled), '.').c_str(), done, total_, frame, ms,
+                         done == total_ ? "\n" : "");
+        } else if (done == total_ || done * 10 / total_ != (done - 1) * 10 / total_) {
+            std::fprintf(stderr, "progress: %d/%d frames (frame %d, %.0f ms)\n", done, total_, frame, ms);
+        }
+    }
+
+private:
+    int total_;
+    bool tty_;
+};
+
+void write_text(const std::filesystem::path& path, const std::string& text) {
+    std::ofstream out(path, std::ios::binary);
+    if (!out || !(out << text) || !out.flush()) throw Error(path.string() + ": cannot write");
+}
+
 int run_render(const RenderOptions& o) {
     const std::filesystem::path input(o.input);
     if (!std::filesystem::exists(input)) throw Error(o.input + ": no such file");
     SceneDesc desc = is_model_path(input) ? scene_for_model(input) : load_scene_file(input);
     apply_overrides(o, desc);
+    if (o.orbit) desc.camera_path = CameraPath{.kind = CameraPath::Kind::Orbit, .orbit = {.degrees = *o.orbit}};
+    if (!o.slam.empty())
+        for (LineType type : {LineType::Silhouette, LineType::Suggestive}) {
+            LineStyle& style = desc.lines.styles[size_t(type)];
+            style.slam = o.slam;
+            style.width = o.stroke_width;
+            style.taper_px = 2.0f * o.stroke_width;
+        }
+    if (o.warmup < 0) throw usage_error("--warmup: must be 0 or more");
 
-    const std::filesystem::path out_dir(o.output);
+    std::filesystem::path out_dir(o.output);
     std::error_code ec;
     std::filesystem::create_directories(out_dir, ec);
     if (ec || !std::filesystem::is_directory(out_dir))
         throw Error(o.output + ": cannot create output folder" + (ec ? " (" + ec.message() + ")" : ""));
+    if (!o.dump_paths.empty()) {
+        std::filesystem::create_directories(o.dump_paths, ec);
+        if (ec || !std::filesystem::is_directory(o.dump_paths))
+            throw Error(o.dump_paths + ": cannot create dump folder" + (ec ? " (" + ec.message() + ")" : ""));
+    }
 
     Timer load_timer;
     LoadedScene scene = load_scene(desc);
     apply_camera_overrides(o, scene);
+    // Frames: the command line, else the scene's, else the clips' length (one frame without).
+    const float fps = desc.animation.fps;
+    FrameRange range{0, 0};
+    if (!o.frames.empty())
+        range = parse_frames(o.frames);
+    else if (desc.animation.frames)
+        range = *desc.animation.frames;
+    else if (desc.animation.play)
+        range.last = std::max(0, int(std::ceil(animation_duration(scene) * fps)) - 1);
+    const bool sequence = range.last > range.first || o.warmup > 0 || desc.animation.play ||
+                          desc.camera_path.kind != CameraPath::Kind::Fixed;
     std::printf("scene: %s (%zu triangles, loaded in %.0f ms)\n", o.input.c_str(), scene.mesh.triangle_count(),
                 load_timer.elapsed_ms());
+
+    // SLAM files named by the styles (a SLAM shared by several types is read once).
+    std::array<std::optional<Slam>, kLineTypeCount> slams;
+    for (int t = 0; t < kLineTypeCount; ++t) {
+        const std::string& file = desc.lines.styles[size_t(t)].slam;
+        if (file.empty()) continue;
+        for (int u = 0; u < t; ++u)
+            if (slams[size_t(u)] && desc.lines.styles[size_t(u)].slam == file) slams[size_t(t)] = slams[size_t(u)];
+        if (!slams[size_t(t)]) slams[size_t(t)] = read_slam(file);
+    }
+    const bool strokes = std::any_of(slams.begin(), slams.end(), [](const auto& s) { return s.has_value(); });
+    const bool coherent = desc.lines.enabled && (strokes || !o.dump_paths.empty() || !o.param.empty());
+    CoherenceParams coherence;
+    if (o.param == "arclength") coherence.policy = ParamPolicy::Arclength;
+    if (o.param == "stretch") coherence.policy = ParamPolicy::Stretch;
+    coherence.splat_radius_px = desc.lines.sample_spacing_px * 2.0f;
+    for (int t = 0; t < kLineTypeCount; ++t)
+        if (slams[size_t(t)]) {
+            coherence.slam_length_px = float(slams[size_t(t)]->length);
+            // κ default: texels stay square — the texture's height spans the stroke's width.
+            coherence.length_scale = o.length_scale > 0.0f
+                                         ? o.length_scale
+                                         : float(slams[size_t(t)]->height) / desc.lines.styles[size_t(t)].width;
+        }
+    if (o.length_scale > 0.0f) coherence.length_scale = o.length_scale;
 
     const bool validation = o.validation || validation_from_environment();
     Context ctx({.device = parse_device_choice(o.device), .validation = validation});
@@ -92,39 +213,70 @@ int run_render(const RenderOptions& o) {
     std::printf("size: %dx%d\n", desc.width, desc.height);
 
     const auto width = static_cast<uint32_t>(desc.width), height = static_cast<uint32_t>(desc.height);
-    const CameraMatrices camera = camera_matrices(scene.camera, float(width) / float(height), scene.bounds);
     FrameRenderer renderer(ctx, width, height);
+    for (int t = 0; t < kLineTypeCount; ++t)
+        if (slams[size_t(t)]) renderer.set_slam(LineType(t), *slams[size_t(t)]);
     Timer prepare_timer;
-    renderer.set_mesh(scene.mesh, desc.lines.enabled, desc.lines.params.crease_angle_deg);
+    const bool animated = desc.animation.play;
+    renderer.set_mesh(animated ? pose_scene(scene, frame_time(range.first - o.warmup, range, fps).seconds) : scene.mesh,
+                      desc.lines.enabled, desc.lines.params.crease_angle_deg);
     if (const LineMesh* lm = renderer.line_mesh())
         std::printf("lines: %zu welded vertices, feature size %.4g, curvature in %.0f ms\n", lm->mesh.positions.size(),
                     double(lm->feature_size), prepare_timer.elapsed_ms());
+    if (sequence)
+        std::printf("frames: %d to %d%s at %g fps\n", range.first, range.last,
+                    o.warmup ? (", after " + std::to_string(o.warmup) + " warm-up frames").c_str() : "", double(fps));
 
-    const Frame frame = renderer.render(camera, scene.camera.eye, desc.style, desc.lines, {.color = true, .depth = o.exr});
+    Progress progress(range.last - range.first + 1 + o.warmup);
+    int done = 0;
+    double total_ms = 0.0;
+    for (int f = range.first - o.warmup; f <= range.last; ++f) {
+        const PathTime when = frame_time(f, range, fps);
+        if (animated && f != range.first - o.warmup) renderer.deform(pose_scene(scene, when.seconds));
+        const ViewCamera view = camera_at(desc.camera_path, scene.camera, when);
+        const CameraMatrices camera = camera_matrices(view, float(width) / float(height), scene.bounds);
+        const bool write = f >= range.first;
+        const Frame frame = renderer.render(camera, view.eye, desc.style, desc.lines,
+                                            {.color = write, .depth = write && o.exr},
+                                            coherent ? &coherence : nullptr);
+        ++done;
+        total_ms += frame.timings.total_ms;
+        progress.update(done, f, frame.timings.total_ms);
+        if (!write) continue;
 
-    const std::filesystem::path png = out_dir / "frame_0000.png";
-    write_png(png, frame.image.color);
-    std::optional<std::filesystem::path> exr;
-    if (o.exr) {
-        exr = out_dir / "frame_0000.exr";
-        write_exr(*exr, frame.image.color, frame.image.depth);
+        const std::filesystem::path png = out_dir / frame_name(f, "png");
+        write_png(png, frame.image.color);
+        if (o.exr) write_exr(out_dir / frame_name(f, "exr"), frame.image.color, frame.image.depth);
+        if (!o.svg.empty()) {
+            std::filesystem::path svg(o.svg);
+            if (sequence) svg = svg.parent_path() / (svg.stem().string() + "_" + frame_name(f, "svg").substr(6));
+            write_lines_svg(svg, desc.width, desc.height, frame.screen_paths, desc.lines.styles);
+        }
+        if (!o.dump_paths.empty())
+            write_text(std::filesystem::path(o.dump_paths) / frame_name(f, "json"),
+                       path_dump_json(f, desc.width, desc.height, frame.screen_paths, frame.params));
+        if (!sequence) {
+            std::printf("frame %d: %.2f ms", f, frame.timings.total_ms);
+            for (const PassTime& t : frame.timings.gpu)
+                if (t.ms >= 0.0) std::printf(" (GPU %s %.3f ms)", t.name.c_str(), t.ms);
+            std::printf("\n");
+            if (desc.lines.enabled) {
+                size_t visible = 0;
+                for (const auto& p : frame.screen_paths) visible += p.visible;
+                std::printf("lines: %zu segments, %zu paths, %zu visible runs (chain %.2f ms, visibility %.2f ms)\n",
+                            frame.segments.size(), frame.paths.size(), visible, frame.timings.chain_ms,
+                            frame.timings.visibility_ms);
+            }
+            std::printf("wrote %s\n", png.string().c_str());
+            if (o.exr) std::printf("wrote %s\n", (out_dir / frame_name(f, "exr")).string().c_str());
+            if (!o.svg.empty()) std::printf("wrote %s\n", o.svg.c_str());
+        }
     }
-    if (!o.svg.empty()) write_lines_svg(o.svg, desc.width, desc.height, frame.screen_paths, desc.lines.styles);
-
-    std::printf("frame 0: %.2f ms", frame.timings.total_ms);
-    for (const PassTime& t : frame.timings.gpu)
-        if (t.ms >= 0.0) std::printf(" (GPU %s %.3f ms)", t.name.c_str(), t.ms);
-    std::printf("\n");
-    if (desc.lines.enabled) {
-        size_t visible = 0;
-        for (const auto& p : frame.screen_paths) visible += p.visible;
-        std::printf("lines: %zu segments, %zu paths, %zu visible runs (chain %.2f ms, visibility %.2f ms)\n",
-                    frame.segments.size(), frame.paths.size(), visible, frame.timings.chain_ms,
-                    frame.timings.visibility_ms);
+    if (sequence) {
+        std::printf("time per frame: %.2f ms (mean of %d)\n", total_ms / std::max(done, 1), done);
+        std::printf("wrote %s/frame_%04d.png … frame_%04d.png\n", out_dir.string().c_str(), range.first, range.last);
+        if (!o.dump_paths.empty()) std::printf("wrote path dumps to %s\n", o.dump_paths.c_str());
     }
-    std::printf("wrote %s\n", png.string().c_str());
-    if (exr) std::printf("wrote %s\n", exr->string().c_str());
-    if (!o.svg.empty()) std::printf("wrote %s\n", o.svg.c_str());
 
     if (validation) {
         const auto messages = ctx.validation_messages();
@@ -162,6 +314,24 @@ Runner add_render_command(CLI::App& app) {
                     "Also write the visible lines as SVG (pixel coordinates, one <g> per line type)");
     cmd->add_option("--hidden", o->hidden, "Hidden lines: none (default), dashed or faint")
         ->check(CLI::IsMember({"none", "dashed", "faint"}));
+    cmd->add_option("--frames", o->frames,
+                    "Render frames A:B (inclusive) to OUT/frame_NNNN.png (default: the scene's, else one frame)");
+    cmd->add_option("--warmup", o->warmup,
+                    "Render K frames before A without writing them, so a range starts coherent");
+    cmd->add_option("--orbit", o->orbit, "Turn the camera DEG degrees about the bounding-box centre over the frames");
+    cmd->add_option("--param", o->param,
+                    "Stroke parameterization: coherent (default; Bénard et al. 2010 §4), arclength (tiling) or "
+                    "stretch (one texture per path)")
+        ->check(CLI::IsMember({"coherent", "arclength", "stretch"}));
+    cmd->add_option("--slam", o->slam, "Draw silhouettes and suggestive contours as strokes textured by this SLAM (.exr)");
+    cmd->add_option("--length-scale", o->length_scale,
+                    "κ: SLAM periods per native texture length (default: square texels, the SLAM's height over "
+                    "the stroke width)")
+        ->check(CLI::PositiveNumber);
+    cmd->add_option("--stroke-width", o->stroke_width, "Width of SLAM strokes in pixels (default 6)")
+        ->check(CLI::PositiveNumber);
+    cmd->add_option("--dump-paths", o->dump_paths,
+                    "Write DIR/frame_NNNN.json per frame: visible paths, their (ρ, φ), level and samples");
     cmd->add_flag("--validation", o->validation,
                   "Enable the Khronos validation layer; any warning or error fails the run "
                   "(also LINEWORK_VALIDATION=1)");

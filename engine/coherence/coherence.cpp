@@ -1,0 +1,221 @@
+#include "coherence/coherence.h"
+
+#include <cmath>
+#include <cstring>
+
+#include "coherence_splat_frag.h"
+#include "coherence_splat_vert.h"
+#include "core/error.h"
+
+namespace lw {
+
+namespace {
+
+struct SplatPush {  // mirrors shaders/coherence_splat.*
+    glm::vec2 viewport;
+    float radius;
+    float pad;
+};
+
+struct Sprite {
+    glm::vec2 center;
+    float t;
+};
+
+float path_length(const ScreenPath& path) {
+    return path.samples.size() < 2 ? 0.0f : path.samples.back().s - path.samples.front().s;
+}
+
+}  // namespace
+
+std::vector<glm::vec2> splat_reference(const std::vector<ScreenPath>& paths, const std::vector<PathParam>& params,
+                                       int width, int height, float radius) {
+    std::vector<glm::vec2> buffer(size_t(width) * height, glm::vec2(0.0f));
+    for (size_t p = 0; p < paths.size(); ++p) {
+        if (!paths[p].visible) continue;
+        for (size_t k = 0; k < paths[p].samples.size(); ++k) {
+            const glm::vec2 c = paths[p].samples[k].pixel;
+            const float t = params[p].rho * path_arclength(paths[p], k) + params[p].phi;
+            const int x0 = std::max(0, int(std::floor(c.x - radius))), x1 = std::min(width - 1, int(std::ceil(c.x + radius)));
+            const int y0 = std::max(0, int(std::floor(c.y - radius))), y1 = std::min(height - 1, int(std::ceil(c.y + radius)));
+            for (int y = y0; y <= y1; ++y)
+                for (int x = x0; x <= x1; ++x) {
+                    const float d = glm::length(glm::vec2(float(x) + 0.5f, float(y) + 0.5f) - c);
+                    const float w = std::clamp(1.0f - d / radius, 0.0f, 1.0f);
+                    if (w > 0.0f) buffer[size_t(y) * width + x] += glm::vec2(w * t, w);
+                }
+        }
+    }
+    return buffer;
+}
+
+CoherenceTracker::CoherenceTracker(const Context& ctx, uint32_t width, uint32_t height)
+    : ctx_(&ctx),
+      width_(width),
+      height_(height),
+      splat_image_(ctx, {.width = width, .height = height, .format = VK_FORMAT_R32G32_SFLOAT,
+                         .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                         .name = "parameterization splat"}),
+      splat_pipeline_(ctx, {.vertex_spirv = LW_SPIRV(coherence_splat_vert_spv),
+                            .fragment_spirv = LW_SPIRV(coherence_splat_frag_spv),
+                            .vertex_stride = sizeof(Sprite),
+                            .attributes = {{.location = 0, .format = VK_FORMAT_R32G32_SFLOAT, .offset = 0},
+                                           {.location = 1, .format = VK_FORMAT_R32_SFLOAT,
+                                            .offset = offsetof(Sprite, t)}},
+                            .color_format = VK_FORMAT_R32G32_SFLOAT,
+                            .depth_format = VK_FORMAT_UNDEFINED,
+                            .depth_test = false,
+                            .depth_write = false,
+                            .blend = BlendMode::Additive,
+                            .push_constant_size = sizeof(SplatPush),
+                            .name = "coherence splat",
+                            .per_instance = true}),
+      splat_readback_(ctx, {.size = VkDeviceSize(width) * height * sizeof(glm::vec2),
+                            .usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                            .purpose = MemoryPurpose::Readback,
+                            .name = "splat readback"}),
+      fitter_(ctx) {
+    VkFormatProperties props{};
+    vkGetPhysicalDeviceFormatProperties(ctx.physical_device(), VK_FORMAT_R32G32_SFLOAT, &props);
+    if (!(props.optimalTilingFeatures & VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BLEND_BIT))
+        throw Error(ctx.info().name + " cannot blend into RG32F attachments, which the parameterization splat needs");
+}
+
+VoteSet CoherenceTracker::gather_votes(const std::vector<ScreenPath>& paths, const SurfaceFrame& surface) const {
+    VoteSet set;
+    const bool track_surface = surface.positions && surface.faces &&
+                               previous_positions_.size() == surface.positions->size();
+    for (const ScreenPath& path : paths) {
+        if (path.visible && has_previous_)
+            for (size_t k = 0; k < path.samples.size(); ++k) {
+                const ScreenSample& sample = path.samples[k];
+                // The sample's surface point one frame earlier: moved with its face.
+                glm::vec3 previous = sample.position;
+                if (track_surface && sample.face < surface.faces->size()) {
+                    const glm::uvec3 c = (*surface.faces)[sample.face];
+                    for (int i = 0; i < 3; ++i)
+                        previous += sample.bary[i] * (previous_positions_[c[i]] - (*surface.positions)[c[i]]);
+                }
+                const glm::vec3 pixel = project_to_pixel(previous_camera_, previous, float(width_), float(height_));
+                if (pixel.z <= 0.0f || pixel.x < 0.0f || pixel.y < 0.0f || pixel.x >= float(width_) ||
+                    pixel.y >= float(height_))
+                    continue;
+                const glm::vec2 sum = splat_[size_t(pixel.y) * width_ + size_t(pixel.x)];
+                if (sum.y > 1e-6f) set.votes.push_back({sum.x / sum.y, path_arclength(path, k)});
+            }
+        set.offsets.push_back(uint32_t(set.votes.size()));
+    }
+    return set;
+}
+
+void CoherenceTracker::splat(const std::vector<ScreenPath>& paths, const std::vector<PathParam>& params, float radius,
+                             GpuTimer* timer) {
+    std::vector<Sprite> sprites;
+    for (size_t p = 0; p < paths.size(); ++p) {
+        if (!paths[p].visible) continue;
+        for (size_t k = 0; k < paths[p].samples.size(); ++k)
+            sprites.push_back({paths[p].samples[k].pixel, params[p].rho * path_arclength(paths[p], k) + params[p].phi});
+    }
+    Buffer sprite_buffer;
+    if (!sprites.empty()) {
+        sprite_buffer = Buffer(*ctx_, {.size = sprites.size() * sizeof(Sprite), .usage = VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
+                                       .purpose = MemoryPurpose::Upload, .name = "splat sprites"});
+        std::memcpy(sprite_buffer.mapped(), sprites.data(), sprites.size() * sizeof(Sprite));
+    }
+    ctx_->submit_and_wait([&](VkCommandBuffer cmd) {
+        if (timer) {
+            timer->reset(cmd);
+            timer->begin(cmd, "splat");
+        }
+        record_image_barrier(cmd, splat_image_,
+                             {.old_layout = VK_IMAGE_LAYOUT_UNDEFINED,
+                              .new_layout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                              .src_stage = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                              .src_access = VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT,
+                              .dst_stage = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                              .dst_access = VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT |
+                                            VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT});
+        VkRenderingAttachmentInfo attachment{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
+                                             .imageView = splat_image_.view(),
+                                             .imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                                             .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
+                                             .storeOp = VK_ATTACHMENT_STORE_OP_STORE};
+        VkRenderingInfo rendering{.sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
+                                  .renderArea = {{0, 0}, {width_, height_}},
+                                  .layerCount = 1,
+                                  .colorAttachmentCount = 1,
+                                  .pColorAttachments = &attachment};
+        vkCmdBeginRendering(cmd, &rendering);
+        if (!sprites.empty()) {
+            VkViewport viewport{0.0f, 0.0f, float(width_), float(height_), 0.0f, 1.0f};
+            VkRect2D scissor{{0, 0}, {width_, height_}};
+            vkCmdSetViewport(cmd, 0, 1, &viewport);
+            vkCmdSetScissor(cmd, 0, 1, &scissor);
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, splat_pipeline_.get());
+            const SplatPush push{{float(width_), float(height_)}, radius, 0.0f};
+            vkCmdPushConstants(cmd, splat_pipeline_.layout(), VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT,
+                               0, sizeof(push), &push);
+            VkDeviceSize offset = 0;
+            VkBuffer vb = sprite_buffer.get();
+            vkCmdBindVertexBuffers(cmd, 0, 1, &vb, &offset);
+            vkCmdDraw(cmd, 6, uint32_t(sprites.size()), 0, 0);
+        }
+        vkCmdEndRendering(cmd);
+        record_image_barrier(cmd, splat_image_,
+                             {.old_layout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                              .new_layout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                              .src_stage = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                              .src_access = VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
+                              .dst_stage = VK_PIPELINE_STAGE_2_COPY_BIT,
+                              .dst_access = VK_ACCESS_2_TRANSFER_READ_BIT});
+        if (timer) timer->end(cmd);
+        record_image_to_buffer(cmd, splat_image_, splat_readback_);
+        record_memory_barrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                              VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
+    });
+    splat_readback_.invalidate(*ctx_);
+    splat_.resize(size_t(width_) * height_);
+    std::memcpy(splat_.data(), splat_readback_.mapped(), splat_.size() * sizeof(glm::vec2));
+}
+
+std::vector<PathParam> CoherenceTracker::update(const std::vector<ScreenPath>& paths, const CameraMatrices& camera,
+                                                const SurfaceFrame& surface, const CoherenceParams& params,
+                                                GpuTimer* timer, VoteSet* votes_out) {
+    std::vector<PathParam> out(paths.size());
+    std::vector<PathFit> fits;
+    if (params.policy == ParamPolicy::Coherent) {
+        const VoteSet votes = gather_votes(paths, surface);
+        fits = fitter_.fit(votes, params.ransac);
+        if (votes_out) *votes_out = votes;
+    }
+    for (size_t p = 0; p < paths.size(); ++p) {
+        PathParam& param = out[p];
+        param.length_px = path_length(paths[p]);
+        const float stretch_rho = param.length_px > 0.0f ? 1.0f / param.length_px : 1.0f;
+        switch (params.policy) {
+            case ParamPolicy::Coherent:
+                param.votes = fits[p].votes;
+                param.fitted = fits[p].fitted;
+                // Fewer than two votes (or no consistent fit): T(s) = s/L (§4.2).
+                param.rho = param.fitted ? fits[p].rho : stretch_rho;
+                param.phi = param.fitted ? fits[p].phi : 0.0f;
+                param.fold = fold_slam_level(param.rho, params.length_scale, params.slam_length_px);
+                break;
+            case ParamPolicy::Arclength:  // tiling: one period per texture length on screen
+                param.rho = params.length_scale / params.slam_length_px;
+                param.fold = SlamFold{};
+                break;
+            case ParamPolicy::Stretch:  // the whole texture stretched over the path
+                param.rho = stretch_rho;
+                param.fold = SlamFold{};
+                break;
+        }
+    }
+    splat(paths, out, params.splat_radius_px, timer);
+    has_previous_ = true;
+    previous_camera_ = camera;
+    if (surface.positions) previous_positions_ = *surface.positions;
+    return out;
+}
+
+}  // namespace lw

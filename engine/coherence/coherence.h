@@ -1,0 +1,98 @@
+// engine/coherence/coherence.h — coherent stroke parameterization across frames.
+//
+// Bénard et al. 2010, §4. Each visible path has T(s) = ρ·s + φ over its screen arclength s
+// (pixels from the path's first sample). Per frame f:
+//   1. votes: every sample of the new paths is carried to frame f − 1 (its surface point
+//      moved with the mesh, projected with frame f − 1's camera) and reads the splat buffer
+//      (Σ w·t, Σ w) there; where Σ w > 0 it votes (Σwt/Σw, s) — §4.2;
+//   2. fit: RANSAC per path on the GPU (ransac_gpu.h); fewer than two votes: T(s) = s/L;
+//   3. splat: every sample writes t = T(s) as a sprite of radius δ,
+//      w = clamp(1 − d/δ, 0, 1), additive, into an RG32F buffer read back for frame f + 1 — §4.1.
+// The two comparison policies of the issue: arclength (tiling, T = s·κ / Lmax) and stretch
+// (T = s/L, one texture stretched over the path, no level folding).
+#pragma once
+
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "coherence/ransac.h"
+#include "coherence/ransac_gpu.h"
+#include "gpu/context.h"
+#include "gpu/pipeline.h"
+#include "gpu/resources.h"
+#include "gpu/timestamps.h"
+#include "lines/visibility.h"
+#include "scene/camera.h"
+#include "stroke/slam_level.h"
+
+namespace lw {
+
+enum class ParamPolicy { Coherent, Arclength, Stretch };
+
+struct CoherenceParams {
+    ParamPolicy policy = ParamPolicy::Coherent;
+    float splat_radius_px = 4.0f;   // δ of the splat sprites
+    float length_scale = 1.0f;      // κ: 1 draws the texture at its native pixel scale
+    float slam_length_px = 1024.0f; // Lmax: the SLAM's texture length
+    RansacParams ransac;
+};
+
+struct PathParam {
+    float rho = 0.0f;
+    float phi = 0.0f;
+    uint32_t votes = 0;
+    bool fitted = false;  // from votes (coherent policy); false: a fallback or another policy
+    SlamFold fold;        // level and the coordinate scale actually sampled
+    float length_px = 0.0f;
+};
+
+// Arclength of a sample along its path (the path's own origin).
+inline float path_arclength(const ScreenPath& path, size_t sample) { return path.samples[sample].s - path.samples.front().s; }
+
+// The surface the paths' samples lie on at this frame (welded positions and faces; the
+// topology must stay the same from frame to frame). The tracker keeps a copy of the
+// positions to carry the next frame's samples back.
+struct SurfaceFrame {
+    const std::vector<glm::vec3>* positions = nullptr;
+    const std::vector<glm::uvec3>* faces = nullptr;
+};
+
+// CPU reference of the splat: (Σ w·t, Σ w) per pixel for sprites of radius δ.
+[[nodiscard]] std::vector<glm::vec2> splat_reference(const std::vector<ScreenPath>& paths,
+                                                     const std::vector<PathParam>& params, int width, int height,
+                                                     float radius);
+
+class CoherenceTracker {
+public:
+    CoherenceTracker(const Context& ctx, uint32_t width, uint32_t height);
+
+    // Parameterizes this frame's visible paths (entries for hidden paths stay default) and
+    // splats them for the next frame. `votes_out` (optional) receives the votes used.
+    [[nodiscard]] std::vector<PathParam> update(const std::vector<ScreenPath>& paths, const CameraMatrices& camera,
+                                                const SurfaceFrame& surface, const CoherenceParams& params,
+                                                GpuTimer* timer = nullptr, VoteSet* votes_out = nullptr);
+
+    // Forgets the previous frame (a cut).
+    void reset() { has_previous_ = false; }
+
+    const std::vector<glm::vec2>& splat_buffer() const { return splat_; }
+
+private:
+    [[nodiscard]] VoteSet gather_votes(const std::vector<ScreenPath>& paths, const SurfaceFrame& surface) const;
+    void splat(const std::vector<ScreenPath>& paths, const std::vector<PathParam>& params, float radius,
+               GpuTimer* timer);
+
+    const Context* ctx_;
+    uint32_t width_, height_;
+    Image splat_image_;
+    GraphicsPipeline splat_pipeline_;
+    Buffer splat_readback_;
+    RansacFitter fitter_;
+    bool has_previous_ = false;
+    CameraMatrices previous_camera_;
+    std::vector<glm::vec3> previous_positions_;
+    std::vector<glm::vec2> splat_;  // previous frame's (Σ w·t, Σ w), row-major
+};
+
+}  // namespace lw

@@ -1,0 +1,141 @@
+#include "coherence/path_dump.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <unordered_map>
+
+#include <nlohmann/json.hpp>
+
+#include "core/error.h"
+
+namespace lw {
+
+std::string path_dump_json(int frame, int width, int height, const std::vector<ScreenPath>& paths,
+                           const std::vector<PathParam>& params) {
+    using nlohmann::json;
+    json out = {{"frame", frame}, {"width", width}, {"height", height}, {"paths", json::array()}};
+    for (size_t p = 0; p < paths.size(); ++p) {
+        const ScreenPath& path = paths[p];
+        if (!path.visible) continue;
+        const PathParam& param = p < params.size() ? params[p] : PathParam{};
+        json samples = json::array();
+        for (size_t k = 0; k < path.samples.size(); ++k) {
+            const ScreenSample& s = path.samples[k];
+            const float arclength = path_arclength(path, k);
+            const float t = param.rho * arclength + param.phi;
+            samples.push_back({{"x", s.pixel.x}, {"y", s.pixel.y}, {"s", arclength}, {"t", t},
+                               {"u", param.fold.scale * t}, {"p", {s.position.x, s.position.y, s.position.z}}});
+        }
+        out["paths"].push_back({{"type", line_type_name(path.type)}, {"closed", path.closed}, {"rho", param.rho},
+                                {"phi", param.phi}, {"level", param.fold.level}, {"votes", param.votes},
+                                {"samples", std::move(samples)}});
+    }
+    return out.dump();
+}
+
+PathDump read_path_dump(const std::filesystem::path& file) {
+    std::ifstream in(file);
+    if (!in) throw Error(file.string() + ": cannot open path dump");
+    PathDump dump;
+    try {
+        const nlohmann::json j = nlohmann::json::parse(in);
+        dump.frame = j.at("frame").get<int>();
+        for (const auto& p : j.at("paths")) {
+            DumpPath path{p.at("type").get<std::string>(), p.at("rho").get<float>(), {}};
+            for (const auto& s : p.at("samples"))
+                path.samples.push_back({{s.at("x").get<float>(), s.at("y").get<float>()}, s.at("s").get<float>(),
+                                        s.at("t").get<float>(), s.at("u").get<float>()});
+            dump.paths.push_back(std::move(path));
+        }
+    } catch (const nlohmann::json::exception& e) {
+        throw Error(file.string() + ": malformed path dump: " + e.what());
+    }
+    return dump;
+}
+
+namespace {
+
+// Samples of a frame in a grid of `cell`-pixel buckets for neighbour queries.
+struct SampleGrid {
+    float cell;
+    std::unordered_map<int64_t, std::vector<const DumpSample*>> buckets;
+    static int64_t key(int x, int y) { return int64_t(x) << 32 ^ int64_t(uint32_t(y)); }
+    SampleGrid(const PathDump& frame, float c) : cell(c) {
+        for (const auto& path : frame.paths)
+            for (const auto& s : path.samples)
+                buckets[key(int(std::floor(s.pixel.x / cell)), int(std::floor(s.pixel.y / cell)))].push_back(&s);
+    }
+    const DumpSample* nearest(glm::vec2 p, float radius) const {
+        const DumpSample* best = nullptr;
+        float best_d = radius;
+        const int cx = int(std::floor(p.x / cell)), cy = int(std::floor(p.y / cell));
+        for (int y = cy - 1; y <= cy + 1; ++y)
+            for (int x = cx - 1; x <= cx + 1; ++x) {
+                const auto it = buckets.find(key(x, y));
+                if (it == buckets.end()) continue;
+                for (const DumpSample* s : it->second) {
+                    const float d = glm::length(s->pixel - p);
+                    if (d <= best_d) {
+                        best_d = d;
+                        best = s;
+                    }
+                }
+            }
+        return best;
+    }
+};
+
+double median(std::vector<double> v) {
+    if (v.empty()) return 0.0;
+    std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(v.size() / 2), v.end());
+    return v[v.size() / 2];
+}
+
+}  // namespace
+
+SlidingMeasure measure_sliding(const std::vector<PathDump>& frames, float match_px) {
+    std::vector<double> dts;
+    for (size_t f = 1; f < frames.size(); ++f) {
+        const SampleGrid previous(frames[f - 1], std::max(match_px, 1.0f));
+        for (const auto& path : frames[f].paths)
+            for (const auto& s : path.samples) {
+                const DumpSample* match = previous.nearest(s.pixel, match_px);
+                if (!match) continue;
+                double dt = double(s.t) - double(match->t);
+                dt -= std::round(dt);  // wrapped to half a period
+                dts.push_back(std::abs(dt));
+            }
+    }
+    return {median(dts), dts.size()};
+}
+
+StretchMeasure measure_stretch(const std::vector<PathDump>& frames) {
+    std::vector<double> ds_du;
+    for (const auto& frame : frames)
+        for (const auto& path : frame.paths)
+            for (size_t k = 1; k < path.samples.size(); ++k) {
+                const double du = std::abs(double(path.samples[k].u) - double(path.samples[k - 1].u));
+                const double ds = double(path.samples[k].s) - double(path.samples[k - 1].s);
+                if (du > 0.0 && ds > 0.0) ds_du.push_back(ds / du);
+            }
+    StretchMeasure m;
+    m.samples = ds_du.size();
+    if (ds_du.empty()) return m;
+    std::sort(ds_du.begin(), ds_du.end());
+    m.median_ds_du = ds_du[ds_du.size() / 2];
+    // The factor-of-2 window holding the most samples (two pointers over the sorted values).
+    size_t best = 0, j = 0;
+    for (size_t i = 0; i < ds_du.size(); ++i) {
+        while (j < ds_du.size() && ds_du[j] < 2.0 * ds_du[i]) ++j;
+        if (j - i > best) {
+            best = j - i;
+            m.band_low = ds_du[i];
+        }
+    }
+    m.share_in_band = double(best) / double(ds_du.size());
+    return m;
+}
+
+}  // namespace lw

@@ -1,0 +1,62 @@
+// engine/coherence/path_dump.h — per-frame path dumps, and the coherence measures read from them.
+//
+// Dump contract (`linework render --dump-paths DIR`, one DIR/frame_NNNN.json per frame):
+//   {"frame": f, "width": W, "height": H, "paths": [{"type": "silhouette|suggestive|crease|border",
+//    "closed": bool, "rho": ρ, "phi": φ, "level": l, "votes": n, "samples": [{"x": px, "y": px,
+//    "s": arclength px, "t": T(s) = ρs + φ, "u": the coordinate along the SLAM level actually
+//    sampled, in periods of that level's texture, "p": [x, y, z] surface position}]}]}
+// Only visible paths are dumped.
+//
+// Measures (the coherence issue's acceptance, computed from dumps so outside tools agree):
+//   sliding — for consecutive frames, the median |Δt| (wrapped to half a period) between
+//             samples of the two frames lying within 1.5 px of each other on screen;
+//   stretch — per sample, the on-screen length of one period of the sampled texture,
+//             ds/du, and the share of samples inside the best factor-of-2 band [x, 2x).
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "coherence/coherence.h"
+#include "lines/visibility.h"
+
+namespace lw {
+
+[[nodiscard]] std::string path_dump_json(int frame, int width, int height, const std::vector<ScreenPath>& paths,
+                                         const std::vector<PathParam>& params);
+
+struct DumpSample {
+    glm::vec2 pixel;
+    float s, t, u;
+};
+struct DumpPath {
+    std::string type;
+    float rho = 0.0f;
+    std::vector<DumpSample> samples;
+};
+struct PathDump {
+    int frame = 0;
+    std::vector<DumpPath> paths;
+};
+
+// Throws lw::Error naming the file on malformed input.
+[[nodiscard]] PathDump read_path_dump(const std::filesystem::path& file);
+
+struct SlidingMeasure {
+    double median_dt = 0.0;  // median |Δt| over matched sample pairs, periods
+    size_t pairs = 0;
+};
+[[nodiscard]] SlidingMeasure measure_sliding(const std::vector<PathDump>& frames, float match_px = 1.5f);
+
+struct StretchMeasure {
+    double band_low = 0.0;           // the best band is [band_low, 2·band_low) pixels per period
+    double share_in_band = 0.0;      // of all samples
+    double median_ds_du = 0.0;
+    size_t samples = 0;
+};
+[[nodiscard]] StretchMeasure measure_stretch(const std::vector<PathDump>& frames);
+
+}  // namespace lw

@@ -1,0 +1,55 @@
+#include "stroke/stroke_pass.h"
+
+#include <cstring>
+
+#include "stroke_frag.h"
+#include "stroke_vert.h"
+
+namespace lw {
+
+namespace {
+struct StrokePush {  // mirrors shaders/stroke.vert
+    glm::vec2 viewport;
+    float levels;
+    float pad;
+};
+}  // namespace
+
+StrokePass::StrokePass(const Context& ctx)
+    : pipeline_(ctx, {.vertex_spirv = LW_SPIRV(stroke_vert_spv),
+                      .fragment_spirv = LW_SPIRV(stroke_frag_spv),
+                      .vertex_stride = sizeof(StrokeVertex),
+                      .attributes = {{.location = 0, .format = VK_FORMAT_R32G32_SFLOAT, .offset = 0},
+                                     {.location = 1, .format = VK_FORMAT_R32G32B32_SFLOAT,
+                                      .offset = offsetof(StrokeVertex, tex)},
+                                     {.location = 2, .format = VK_FORMAT_R32G32B32A32_SFLOAT,
+                                      .offset = offsetof(StrokeVertex, color)}},
+                      .depth_format = VK_FORMAT_UNDEFINED,
+                      .depth_test = false,
+                      .depth_write = false,
+                      .blend = BlendMode::Alpha,
+                      .sampled_images = 1,
+                      .push_constant_size = sizeof(StrokePush),
+                      .name = "strokes"}) {}
+
+Buffer StrokePass::record(const Context& ctx, VkCommandBuffer cmd, const RenderTarget& target,
+                          const std::vector<StrokeVertex>& vertices, const SlamTexture& slam) const {
+    if (vertices.empty()) return Buffer();
+    Buffer buffer(ctx, {.size = vertices.size() * sizeof(StrokeVertex), .usage = VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
+                        .purpose = MemoryPurpose::Upload, .name = "stroke quads"});
+    std::memcpy(buffer.mapped(), vertices.data(), vertices.size() * sizeof(StrokeVertex));
+    target.begin_overlay(cmd);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.get());
+    pipeline_.push_image(ctx, cmd, 0, slam.view(), slam.sampler());
+    const StrokePush push{{float(target.width), float(target.height)}, float(slam.levels()), 0.0f};
+    vkCmdPushConstants(cmd, pipeline_.layout(), VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+                       sizeof(push), &push);
+    VkDeviceSize offset = 0;
+    VkBuffer vertex_buffer = buffer.get();
+    vkCmdBindVertexBuffers(cmd, 0, 1, &vertex_buffer, &offset);
+    vkCmdDraw(cmd, static_cast<uint32_t>(vertices.size()), 1, 0, 0);
+    target.end_overlay(cmd);
+    return buffer;
+}
+
+}  // namespace lw

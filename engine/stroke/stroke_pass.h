@@ -1,0 +1,30 @@
+// engine/stroke/stroke_pass.h — SLAM-textured strokes over the colour target.
+//
+// Input:  `StrokeVertex` triangles (stroke_geometry.h) and the SLAM texture they sample.
+// Output: the strokes alpha-blended into the render target's colour (an overlay pass: the
+//         colour comes and goes in TRANSFER_SRC_OPTIMAL, like the line pass).
+#pragma once
+
+#include <vector>
+
+#include "gpu/context.h"
+#include "gpu/pipeline.h"
+#include "render/render_target.h"
+#include "stroke/slam_texture.h"
+#include "stroke/stroke_geometry.h"
+
+namespace lw {
+
+class StrokePass {
+public:
+    explicit StrokePass(const Context& ctx);
+
+    // Records the draw; the returned vertex buffer must live until the submission completed.
+    [[nodiscard]] Buffer record(const Context& ctx, VkCommandBuffer cmd, const RenderTarget& target,
+                                const std::vector<StrokeVertex>& vertices, const SlamTexture& slam) const;
+
+private:
+    GraphicsPipeline pipeline_;
+};
+
+}  // namespace lw

@@ -1,0 +1,20 @@
+#version 450
+// Stroke pass, vertex stage: quads built on the CPU in pixels (engine/stroke/stroke_geometry.cpp).
+layout(push_constant) uniform StrokePush {
+    vec2 viewport;
+    float levels;  // SLAM level count
+    float pad;
+} pc;
+
+layout(location = 0) in vec2 in_pixel;
+layout(location = 1) in vec3 in_tex;
+layout(location = 2) in vec4 in_color;
+
+layout(location = 0) out vec3 out_tex;
+layout(location = 1) out vec4 out_color;
+
+void main() {
+    out_tex = in_tex;
+    out_color = in_color;
+    gl_Position = vec4(in_pixel / pc.viewport * 2.0 - 1.0, 0.0, 1.0);
+}
