@@ -1,5 +1,6 @@
 #include "coherence/coherence.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -27,6 +28,41 @@ float path_length(const ScreenPath& path) {
 }
 
 }  // namespace
+
+ScreenPath resample_at_phase(const ScreenPath& path, const PathParam& param, float spacing) {
+    ScreenPath out = path;
+    const auto& in = path.samples;
+    if (in.size() < 2 || param.rho == 0.0f || !(spacing > 0.0f)) return out;
+    out.samples.clear();
+    const double step = std::abs(double(param.rho)) * spacing;  // T between samples
+    const double s0 = path_arclength(path, 0), s1 = path_arclength(path, in.size() - 1);
+    const double t0 = double(param.rho) * s0 + param.phi, t1 = double(param.rho) * s1 + param.phi;
+    // Phases k·step inside [t0, t1] (or [t1, t0]), walked in the direction of increasing s.
+    const double lo = std::min(t0, t1), hi = std::max(t0, t1);
+    std::vector<double> arclengths{s0};
+    for (double k = std::ceil(lo / step); k * step <= hi; k += 1.0) {
+        const double s = (k * step - param.phi) / double(param.rho);
+        if (s > s0 + 1e-3 && s < s1 - 1e-3) arclengths.push_back(s);
+    }
+    std::sort(arclengths.begin() + 1, arclengths.end());
+    arclengths.push_back(s1);
+    size_t segment = 0;
+    for (double s : arclengths) {
+        while (segment + 2 < in.size() && path_arclength(path, segment + 1) < s) ++segment;
+        const ScreenSample& a = in[segment];
+        const ScreenSample& b = in[segment + 1];
+        const double sa = path_arclength(path, segment), sb = path_arclength(path, segment + 1);
+        const float u = sb > sa ? float(std::clamp((s - sa) / (sb - sa), 0.0, 1.0)) : 0.0f;
+        out.samples.push_back(ScreenSample{.pixel = glm::mix(a.pixel, b.pixel, u),
+                                           .depth = glm::mix(a.depth, b.depth, u),
+                                           .s = in.front().s + float(s),
+                                           .position = glm::mix(a.position, b.position, u),
+                                           .face = u < 0.5f ? a.face : b.face,
+                                           .bary = u < 0.5f ? a.bary : b.bary,
+                                           .alpha = glm::mix(a.alpha, b.alpha, u)});
+    }
+    return out;
+}
 
 std::vector<glm::vec2> splat_reference(const std::vector<ScreenPath>& paths, const std::vector<PathParam>& params,
                                        int width, int height, float radius) {
@@ -183,10 +219,20 @@ std::vector<PathParam> CoherenceTracker::update(const std::vector<ScreenPath>& p
                                                 GpuTimer* timer, VoteSet* votes_out) {
     std::vector<PathParam> out(paths.size());
     std::vector<PathFit> fits;
+    VoteSet votes;
+    float typical_rho = params.length_scale / params.slam_length_px;
     if (params.policy == ParamPolicy::Coherent) {
-        const VoteSet votes = gather_votes(paths, surface);
+        votes = gather_votes(paths, surface);
         fits = fitter_.fit(votes, params.ransac);
-        if (votes_out) *votes_out = votes;
+        // The scale most paths settled on: for paths whose votes agree on a phase but cannot
+        // give a slope (all at one arclength, or sub-pixel paths with equal t).
+        std::vector<float> rhos;
+        for (const PathFit& fit : fits)
+            if (fit.fitted) rhos.push_back(std::abs(fit.rho));
+        if (!rhos.empty()) {
+            std::nth_element(rhos.begin(), rhos.begin() + std::ptrdiff_t(rhos.size() / 2), rhos.end());
+            typical_rho = rhos[rhos.size() / 2];
+        }
     }
     for (size_t p = 0; p < paths.size(); ++p) {
         PathParam& param = out[p];
@@ -196,9 +242,22 @@ std::vector<PathParam> CoherenceTracker::update(const std::vector<ScreenPath>& p
             case ParamPolicy::Coherent:
                 param.votes = fits[p].votes;
                 param.fitted = fits[p].fitted;
-                // Fewer than two votes (or no consistent fit): T(s) = s/L (§4.2).
-                param.rho = param.fitted ? fits[p].rho : stretch_rho;
-                param.phi = param.fitted ? fits[p].phi : 0.0f;
+                if (param.fitted) {
+                    param.rho = fits[p].rho;
+                    param.phi = fits[p].phi;
+                } else if (param.votes >= 2) {
+                    // Votes without a slope: keep their phase at the typical scale, so that the
+                    // texture does not jump (§4.2 leaves this case open).
+                    param.rho = typical_rho;
+                    double phase = 0.0;
+                    for (uint32_t k = votes.offsets[p]; k < votes.offsets[p + 1]; ++k)
+                        phase += votes.votes[k].t - typical_rho * votes.votes[k].s;
+                    param.phi = float(phase / param.votes);
+                } else {
+                    // Fewer than two votes: T(s) = s/L (§4.2).
+                    param.rho = stretch_rho;
+                    param.phi = 0.0f;
+                }
                 param.fold = fold_slam_level(param.rho, params.length_scale, params.slam_length_px);
                 break;
             case ParamPolicy::Arclength:  // tiling: one period per texture length on screen
@@ -211,6 +270,7 @@ std::vector<PathParam> CoherenceTracker::update(const std::vector<ScreenPath>& p
                 break;
         }
     }
+    if (votes_out) *votes_out = std::move(votes);
     splat(paths, out, params.splat_radius_px, timer);
     has_previous_ = true;
     previous_camera_ = camera;

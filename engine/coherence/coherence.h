@@ -58,6 +58,12 @@ struct SurfaceFrame {
     const std::vector<glm::uvec3>* faces = nullptr;
 };
 
+// The path resampled where its parameterization crosses multiples of ρ·spacing: samples
+// about `spacing` pixels apart that sit at the same texture phases from frame to frame (so
+// stroke vertices and dumped samples stay put on a path that does not slide). Attributes
+// are interpolated linearly between the original samples; `s` keeps the path's arclength.
+[[nodiscard]] ScreenPath resample_at_phase(const ScreenPath& path, const PathParam& param, float spacing);
+
 // CPU reference of the splat: (Σ w·t, Σ w) per pixel for sprites of radius δ.
 [[nodiscard]] std::vector<glm::vec2> splat_reference(const std::vector<ScreenPath>& paths,
                                                      const std::vector<PathParam>& params, int width, int height,

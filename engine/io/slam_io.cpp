@@ -61,7 +61,7 @@ Slam read_slam(const std::filesystem::path& path) {
             throw Error(name + ": level " + std::to_string(i) + " is " + std::to_string(spec.width) + "x" +
                         std::to_string(spec.height) + ", level 0 is " + std::to_string(slam.length) + "x" +
                         std::to_string(slam.height));
-        if (!in->read_image(0, 0, 0, 1, OIIO::TypeDesc::FLOAT, slam.ink.data() + part * size_t(i)))
+        if (!in->read_image(i, 0, 0, 1, OIIO::TypeDesc::FLOAT, slam.ink.data() + part * size_t(i)))
             throw Error(name + ": cannot read level " + std::to_string(i) + ": " + in->geterror());
     }
     return slam;

@@ -90,6 +90,10 @@ Frame FrameRenderer::render(const CameraMatrices& camera, const glm::vec3& eye, 
         Timer param_timer;
         frame.params = tracker_->update(frame.screen_paths, camera,
                                         {&line_mesh_->mesh.positions, &line_mesh_->mesh.faces}, *coherence);
+        // Strokes and dumps use samples at fixed texture phases (see resample_at_phase).
+        for (size_t p = 0; p < frame.screen_paths.size(); ++p)
+            if (frame.screen_paths[p].visible)
+                frame.screen_paths[p] = resample_at_phase(frame.screen_paths[p], frame.params[p], lines.sample_spacing_px);
         frame.timings.coherence_ms = param_timer.elapsed_ms();
     }
 

@@ -26,6 +26,7 @@ int main(int argc, char** argv) {
     add(&lw::cli::add_diff_command);
     add(&lw::cli::add_devices_command);
     add(&lw::cli::add_slam_pattern_command);
+    add(&lw::cli::add_coherence_report_command);
 
     try {
         app.parse(argc, argv);

@@ -140,6 +140,9 @@ void write_text(const std::filesystem::path& path, const std::string& text) {
 }
 
 int run_render(const RenderOptions& o) {
+    // Usage first: a bad flag is exit code 2 whatever the files.
+    const std::optional<FrameRange> frames_flag = o.frames.empty() ? std::nullopt : std::optional(parse_frames(o.frames));
+    if (o.warmup < 0) throw usage_error("--warmup: must be 0 or more");
     const std::filesystem::path input(o.input);
     if (!std::filesystem::exists(input)) throw Error(o.input + ": no such file");
     SceneDesc desc = is_model_path(input) ? scene_for_model(input) : load_scene_file(input);
@@ -152,7 +155,6 @@ int run_render(const RenderOptions& o) {
             style.width = o.stroke_width;
             style.taper_px = 2.0f * o.stroke_width;
         }
-    if (o.warmup < 0) throw usage_error("--warmup: must be 0 or more");
 
     std::filesystem::path out_dir(o.output);
     std::error_code ec;
@@ -171,8 +173,8 @@ int run_render(const RenderOptions& o) {
     // Frames: the command line, else the scene's, else the clips' length (one frame without).
     const float fps = desc.animation.fps;
     FrameRange range{0, 0};
-    if (!o.frames.empty())
-        range = parse_frames(o.frames);
+    if (frames_flag)
+        range = *frames_flag;
     else if (desc.animation.frames)
         range = *desc.animation.frames;
     else if (desc.animation.play)

@@ -1,0 +1,197 @@
+// Coherent parameterization and SLAM strokes: splat, votes across frames, level folding,
+// SLAM files, dumps.
+#include <cmath>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "coherence/coherence.h"
+#include "coherence/path_dump.h"
+#include "core/error.h"
+#include "geometry/test_meshes.h"
+#include "io/image_io.h"
+#include "io/slam_io.h"
+#include "render/frame_renderer.h"
+#include "scene/scene.h"
+#include "stroke/slam.h"
+#include "stroke/slam_level.h"
+#include "test_support.h"
+
+namespace lw {
+namespace {
+
+TEST(Slam, ProceduralSlamsAreSelfSimilarAndSmooth) {
+    for (SlamPattern pattern : {SlamPattern::Dots, SlamPattern::Dashes, SlamPattern::Pencil}) {
+        const Slam slam = make_procedural_slam(pattern, 17, 1024, 32, 3);
+        EXPECT_EQ(slam_self_similarity_error(slam), 0.0f) << int(pattern);
+        EXPECT_LT(slam_max_level_step(slam), 0.07f) << int(pattern);  // 1/16 of the full change
+        // Doubling the level count halves the step between adjacent levels.
+        const Slam dense = make_procedural_slam(pattern, 33, 1024, 32, 3);
+        EXPECT_NEAR(slam_max_level_step(dense), 0.5f * slam_max_level_step(slam), 0.01f);
+    }
+}
+
+TEST(Slam, FileRoundTripKeepsLevelsAndMetadata) {
+    const Slam slam = make_procedural_slam(SlamPattern::Dashes, 5, 64, 8, 9);
+    const auto path = test::temp_dir() / "dashes.exr";
+    write_slam(path, slam);
+    const Slam back = read_slam(path);
+    EXPECT_EQ(back.levels, 5);
+    EXPECT_EQ(back.length, 64);
+    EXPECT_EQ(back.height, 8);
+    EXPECT_EQ(back.exemplar, "procedural:dashes");
+    EXPECT_EQ(back.seed, 9u);
+    EXPECT_EQ(back.ink, slam.ink);
+}
+
+TEST(Slam, BadFilesNameTheProblem) {
+    const auto dir = test::temp_dir();
+    EXPECT_THROW((void)read_slam(dir / "missing.exr"), Error);
+    ImageRGBA8 plain{4, 4, std::vector<uint8_t>(64, 255)};
+    write_png(dir / "plain.png", plain);
+    try {
+        (void)read_slam(dir / "plain.png");
+        FAIL();
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("plain.png: not a SLAM file"), std::string::npos) << e.what();
+    }
+}
+
+TEST(SlamLevel, FoldsIntoHalfToOne) {
+    // λ = κ / (|ρ| Lmax): one period of 1/ρ px over a 1024 px texture.
+    const SlamFold a = fold_slam_level(1.0f / 768.0f, 1.0f, 1024.0f);  // λ = 0.75: no fold
+    EXPECT_FLOAT_EQ(a.scale, 1.0f);
+    EXPECT_NEAR(a.level, 0.75f, 1e-6f);
+    EXPECT_NEAR(a.w, 0.5f, 1e-6f);
+    const SlamFold b = fold_slam_level(1.0f / 3072.0f, 1.0f, 1024.0f);  // λ = 3: t = 2
+    EXPECT_FLOAT_EQ(b.scale, 4.0f);
+    EXPECT_NEAR(b.level, 0.75f, 1e-6f);
+    const SlamFold c = fold_slam_level(1.0f / 100.0f, 1.0f, 1024.0f);  // λ ≈ 0.098: t = −3
+    EXPECT_FLOAT_EQ(c.scale, 0.125f);
+    EXPECT_GT(c.level, 0.5f);
+    EXPECT_LE(c.level, 1.0f);
+    // On screen, a period of the sampled level spans l·Lmax/κ pixels: within (0.5, 1]·Lmax/κ.
+    for (float period_px = 3.0f; period_px < 1e5f; period_px *= 1.37f) {
+        const SlamFold f = fold_slam_level(1.0f / period_px, 1.0f, 1024.0f);
+        const float pixels_per_u = period_px / f.scale;
+        EXPECT_GT(pixels_per_u, 512.0f * 0.999f) << period_px;
+        EXPECT_LE(pixels_per_u, 1024.0f * 1.001f) << period_px;
+    }
+}
+
+ScreenPath straight_path(glm::vec2 from, glm::vec2 to, float spacing) {
+    ScreenPath path{.type = LineType::Silhouette, .visible = true};
+    const float length = glm::length(to - from);
+    for (float s = 0.0f; s <= length; s += spacing)
+        path.samples.push_back(ScreenSample{.pixel = from + (to - from) * (s / length), .depth = 1.0f, .s = s,
+                                            .position = glm::vec3(0.0f), .face = 0, .bary = glm::vec3(1, 0, 0),
+                                            .alpha = 1.0f});
+    return path;
+}
+
+TEST(Coherence, ResampleAtPhaseSitsOnMultiplesOfTheStep) {
+    const ScreenPath path = straight_path({10, 10}, {110, 60}, 2.0f);
+    const PathParam param{.rho = 0.013f, .phi = 0.37f};
+    const ScreenPath aligned = resample_at_phase(path, param, 2.0f);
+    ASSERT_GT(aligned.samples.size(), 40u);
+    const double step = 0.013 * 2.0;
+    for (size_t k = 1; k + 1 < aligned.samples.size(); ++k) {
+        const double t = 0.013 * path_arclength(aligned, k) + 0.37;
+        EXPECT_NEAR(t / step, std::round(t / step), 1e-3) << k;
+    }
+    EXPECT_EQ(aligned.samples.front().pixel, path.samples.front().pixel);
+}
+
+class CoherenceGpu : public test::GpuTest {};
+
+TEST_F(CoherenceGpu, SplatMatchesTheCpuReference) {
+    const int width = 96, height = 64;
+    std::vector<ScreenPath> paths{straight_path({5.3f, 7.1f}, {90.2f, 40.7f}, 2.0f),
+                                  straight_path({20.0f, 60.0f}, {60.5f, 3.5f}, 2.0f)};
+    CoherenceTracker tracker(ctx(), width, height);
+    CoherenceParams params{.policy = ParamPolicy::Arclength, .splat_radius_px = 4.0f};
+    const auto fitted = tracker.update(paths, CameraMatrices{}, {}, params);
+    const auto reference = splat_reference(paths, fitted, width, height, 4.0f);
+    const auto& gpu = tracker.splat_buffer();
+    ASSERT_EQ(gpu.size(), reference.size());
+    size_t covered = 0;
+    for (size_t i = 0; i < gpu.size(); ++i) {
+        EXPECT_NEAR(gpu[i].x, reference[i].x, 1e-4f * std::max(1.0f, std::abs(reference[i].x))) << i;
+        EXPECT_NEAR(gpu[i].y, reference[i].y, 1e-4f) << i;
+        covered += reference[i].y > 0.0f;
+    }
+    EXPECT_GT(covered, 500u);
+}
+
+TEST_F(CoherenceGpu, AStillViewKeepsItsParameterization) {
+    // Frame 1 starts from T = s/L; frame 2 of the same view votes it back: same ρ and φ.
+    const TriangleMesh mesh = make_icosphere(1.0f, 4);
+    const Bounds bounds = compute_bounds(mesh.positions);
+    const ViewCamera view{.eye = {0.3f, 0.2f, 4.0f}, .target = {0, 0, 0}, .fov_deg = 40};
+    const CameraMatrices camera = camera_matrices(view, 4.0f / 3.0f, bounds);
+    FrameRenderer renderer(ctx(), 320, 240);
+    renderer.set_mesh(mesh, true, 45.0f);
+    LinesDesc lines;
+    const CoherenceParams coherence;
+    const Frame first = renderer.render(camera, view.eye, SurfaceStyle{}, lines, {.color = false}, &coherence);
+    const Frame second = renderer.render(camera, view.eye, SurfaceStyle{}, lines, {.color = false}, &coherence);
+    ASSERT_EQ(first.params.size(), 1u);  // the silhouette loop
+    ASSERT_EQ(second.params.size(), 1u);
+    EXPECT_EQ(first.params[0].votes, 0u);
+    EXPECT_GT(second.params[0].votes, 100u);
+    EXPECT_TRUE(second.params[0].fitted);
+    EXPECT_NEAR(second.params[0].rho, first.params[0].rho, 0.01f * first.params[0].rho);
+    // Same texture phase along the loop: T differs by less than a pixel's worth.
+    EXPECT_NEAR(second.params[0].phi, first.params[0].phi, first.params[0].rho * 1.0f);
+}
+
+TEST(Cli, SequenceWritesFramesAndDumps) {
+    const auto dir = test::temp_dir();
+    const auto r = test::run_linework("render " + test::quote(test::data_dir() / "models/spot/spot.glb") + " -o " +
+                                      test::quote(dir) + " --device cpu --size 160x120 --frames 2:4 --warmup 2 --orbit 30 " +
+                                      "--slam " + test::quote(test::source_dir() / "scenes/slams/dots.exr") +
+                                      " --dump-paths " + test::quote(dir / "dump"));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    for (int f = 0; f < 2; ++f) EXPECT_FALSE(std::filesystem::exists(dir / ("frame_000" + std::to_string(f) + ".png")));
+    for (int f = 2; f <= 4; ++f) {
+        EXPECT_TRUE(std::filesystem::exists(dir / ("frame_000" + std::to_string(f) + ".png")));
+        std::ifstream in(dir / "dump" / ("frame_000" + std::to_string(f) + ".json"));
+        const auto j = nlohmann::json::parse(in);
+        EXPECT_EQ(j.at("frame"), f);
+        EXPECT_EQ(j.at("width"), 160);
+        EXPECT_EQ(j.at("height"), 120);
+        ASSERT_FALSE(j.at("paths").empty());
+        const auto& p = j.at("paths")[0];
+        for (const char* key : {"type", "closed", "rho", "phi", "level", "votes", "samples"}) EXPECT_TRUE(p.contains(key)) << key;
+        const auto& s = p.at("samples")[0];
+        for (const char* key : {"x", "y", "s", "t", "u", "p"}) EXPECT_TRUE(s.contains(key)) << key;
+        EXPECT_EQ(s.at("p").size(), 3u);
+        // t = ρs + φ, exactly as dumped.
+        EXPECT_NEAR(double(s.at("t")), double(p.at("rho")) * double(s.at("s")) + double(p.at("phi")), 1e-4);
+    }
+    const auto bad = test::run_linework("render " + test::quote(test::data_dir() / "models/spot/spot.glb") + " -o " +
+                                        test::quote(dir) + " --slam /nonexistent/x.exr");
+    EXPECT_EQ(bad.exit_code, 1) << bad.output;
+    EXPECT_NE(bad.output.find("/nonexistent/x.exr: no such SLAM file"), std::string::npos) << bad.output;
+    EXPECT_EQ(test::run_linework("render x.glb -o " + test::quote(dir) + " --param wobbly").exit_code, 2);
+    EXPECT_EQ(test::run_linework("render x.glb -o " + test::quote(dir) + " --frames 5:2").exit_code, 2);
+}
+
+TEST(Cli, SequencesAreStableRunToRun) {
+    // The golden-sequence property: the same command renders the same frames.
+    const auto dir = test::temp_dir();
+    for (const char* run : {"a", "b"}) {
+        const auto r = test::run_linework("render " + test::quote(test::data_dir() / "models/LeePerrySmith/LeePerrySmith.glb") +
+                                          " -o " + test::quote(dir / run) + " --device cpu --size 200x150 --frames 0:3 --orbit 20 " +
+                                          "--slam " + test::quote(test::source_dir() / "scenes/slams/pencil.exr"));
+        ASSERT_EQ(r.exit_code, 0) << r.output;
+    }
+    for (int f = 0; f <= 3; ++f) {
+        const std::string name = "frame_000" + std::to_string(f) + ".png";
+        const ImageDiff d = compare_images(read_image_rgba8(dir / "a" / name), read_image_rgba8(dir / "b" / name));
+        EXPECT_EQ(d.max_abs_error, 0) << name;
+    }
+}
+
+}  // namespace
+}  // namespace lw
