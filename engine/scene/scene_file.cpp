@@ -222,6 +222,12 @@ LineStyle read_line_type(ObjectReader& lines, LineType type, const std::filesyst
     if (r.has("enabled")) enabled = r.boolean("enabled");
     if (r.has("width")) style.width = static_cast<float>(r.number("width", 0.1, 64.0));
     if (r.has("color")) style.color = r.vec3("color", 0.0, 1.0);
+    if (r.has("slam")) {
+        const std::filesystem::path slam(r.string_of("slam"));
+        if (slam.empty()) r.fail_key("slam", "expected a SLAM file (.exr)");
+        style.slam = (slam.is_absolute() ? slam : file.parent_path() / slam).string();
+    }
+    if (r.has("taper")) style.taper_px = static_cast<float>(r.number("taper", 0.0, 4096.0));
     if (type == LineType::Suggestive) {
         if (r.has("threshold")) p.sug_thresh = static_cast<float>(r.number("threshold", 0.0, 10.0));
         if (r.has("fade")) p.fade = r.boolean("fade");

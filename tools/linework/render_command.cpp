@@ -219,7 +219,7 @@ int run_render(const RenderOptions& o) {
     for (int t = 0; t < kLineTypeCount; ++t)
         if (slams[size_t(t)]) renderer.set_slam(LineType(t), *slams[size_t(t)]);
     Timer prepare_timer;
-    const bool animated = desc.animation.play;
+    const bool animated = desc.animation.play && animation_duration(scene) > 0.0f;  // clips move the mesh
     renderer.set_mesh(animated ? pose_scene(scene, frame_time(range.first - o.warmup, range, fps).seconds) : scene.mesh,
                       desc.lines.enabled, desc.lines.params.crease_angle_deg);
     if (const LineMesh* lm = renderer.line_mesh())
