@@ -64,6 +64,57 @@ ScreenPath resample_at_phase(const ScreenPath& path, const PathParam& param, flo
     return out;
 }
 
+namespace {
+
+// A closed loop's parameterization has a seam where T jumps back by ρ·L. Votes inherit the
+// previous frame's seam; start the loop there (at the largest jump between consecutive
+// votes) so that its votes lie on one line and the seam stays where it was on the surface,
+// instead of moving with wherever chaining happened to start the loop this frame.
+void start_loop_at_seam(ScreenPath& path, VoteSet& votes, size_t p) {
+    const uint32_t first = votes.offsets[p], last = votes.offsets[p + 1];
+    if (!path.closed || last - first < 3 || path.samples.size() < 3) return;
+    uint32_t seam = 0;
+    float jump = 0.0f;
+    for (uint32_t v = first; v + 1 < last; ++v) {
+        const float d = std::abs(votes.votes[v + 1].t - votes.votes[v].t);
+        if (d > jump) {
+            jump = d;
+            seam = v + 1;
+        }
+    }
+    // Consecutive votes of a smooth parameterization differ by ρ·δ ≪ 0.25 of a period.
+    if (jump < 0.25f) return;
+    const size_t n = path.samples.size(), start = votes.sample[seam];
+    const float closing = glm::length(path.samples.front().pixel - path.samples.back().pixel);
+    const float loop_length = path.samples.back().s - path.samples.front().s + closing;
+    const float s_start = path.samples[start].s, s0 = path.samples.front().s;
+    std::vector<ScreenSample> rotated;
+    rotated.reserve(n);
+    for (size_t i = 0; i < n; ++i) {
+        ScreenSample sample = path.samples[(start + i) % n];
+        const size_t original = (start + i) % n;
+        sample.s = s0 + (original >= start ? sample.s - s_start : sample.s - s0 + loop_length - (s_start - s0));
+        rotated.push_back(sample);
+    }
+    path.samples = std::move(rotated);
+    for (uint32_t v = first; v < last; ++v) {
+        const uint32_t k = votes.sample[v];
+        const uint32_t rotated_index = uint32_t((k + n - start) % n);
+        votes.sample[v] = rotated_index;
+        votes.votes[v].s = path_arclength(path, rotated_index);
+    }
+    // Keep the votes in sample order.
+    std::vector<std::pair<uint32_t, Vote>> order;
+    for (uint32_t v = first; v < last; ++v) order.push_back({votes.sample[v], votes.votes[v]});
+    std::sort(order.begin(), order.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (uint32_t v = first; v < last; ++v) {
+        votes.sample[v] = order[v - first].first;
+        votes.votes[v] = order[v - first].second;
+    }
+}
+
+}  // namespace
+
 std::vector<glm::vec2> splat_reference(const std::vector<ScreenPath>& paths, const std::vector<PathParam>& params,
                                        int width, int height, float radius) {
     std::vector<glm::vec2> buffer(size_t(width) * height, glm::vec2(0.0f));
@@ -137,7 +188,10 @@ VoteSet CoherenceTracker::gather_votes(const std::vector<ScreenPath>& paths, con
                     pixel.y >= float(height_))
                     continue;
                 const glm::vec2 sum = splat_[size_t(pixel.y) * width_ + size_t(pixel.x)];
-                if (sum.y > 1e-6f) set.votes.push_back({sum.x / sum.y, path_arclength(path, k)});
+                if (sum.y > 1e-6f) {
+                    set.votes.push_back({sum.x / sum.y, path_arclength(path, k)});
+                    set.sample.push_back(uint32_t(k));
+                }
             }
         set.offsets.push_back(uint32_t(set.votes.size()));
     }
@@ -214,7 +268,7 @@ void CoherenceTracker::splat(const std::vector<ScreenPath>& paths, const std::ve
     std::memcpy(splat_.data(), splat_readback_.mapped(), splat_.size() * sizeof(glm::vec2));
 }
 
-std::vector<PathParam> CoherenceTracker::update(const std::vector<ScreenPath>& paths, const CameraMatrices& camera,
+std::vector<PathParam> CoherenceTracker::update(std::vector<ScreenPath>& paths, const CameraMatrices& camera,
                                                 const SurfaceFrame& surface, const CoherenceParams& params,
                                                 GpuTimer* timer, VoteSet* votes_out) {
     std::vector<PathParam> out(paths.size());
@@ -223,6 +277,7 @@ std::vector<PathParam> CoherenceTracker::update(const std::vector<ScreenPath>& p
     float typical_rho = params.length_scale / params.slam_length_px;
     if (params.policy == ParamPolicy::Coherent) {
         votes = gather_votes(paths, surface);
+        for (size_t p = 0; p < paths.size(); ++p) start_loop_at_seam(paths[p], votes, p);
         fits = fitter_.fit(votes, params.ransac);
         // The scale most paths settled on: for paths whose votes agree on a phase but cannot
         // give a slope (all at one arclength, or sub-pixel paths with equal t).

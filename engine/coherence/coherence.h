@@ -74,8 +74,9 @@ public:
     CoherenceTracker(const Context& ctx, uint32_t width, uint32_t height);
 
     // Parameterizes this frame's visible paths (entries for hidden paths stay default) and
-    // splats them for the next frame. `votes_out` (optional) receives the votes used.
-    [[nodiscard]] std::vector<PathParam> update(const std::vector<ScreenPath>& paths, const CameraMatrices& camera,
+    // splats them for the next frame. Closed loops may be rotated to start at the seam they
+    // inherited (see coherence.cpp). `votes_out` (optional) receives the votes used.
+    [[nodiscard]] std::vector<PathParam> update(std::vector<ScreenPath>& paths, const CameraMatrices& camera,
                                                 const SurfaceFrame& surface, const CoherenceParams& params,
                                                 GpuTimer* timer = nullptr, VoteSet* votes_out = nullptr);
 

@@ -58,6 +58,7 @@ struct PathFit {
 struct VoteSet {
     std::vector<Vote> votes;
     std::vector<uint32_t> offsets{0};
+    std::vector<uint32_t> sample;  // optional: the sample each vote came from (same order as votes)
     size_t path_count() const { return offsets.size() - 1; }
 };
 
