@@ -38,7 +38,8 @@ struct BenchOptions {
     std::string size = "1920x1080";
     int frames = 20;
     std::string device = "auto";
-    bool shaded = false;  // lines: toon shading under the lines (default: depth only)
+    bool shaded = false;     // lines: toon shading under the lines (default: depth only)
+    bool coherence = false;  // lines: parameterize every visible path (splat, votes, RANSAC)
 };
 
 struct Series {
@@ -124,10 +125,20 @@ int run_lines(const BenchOptions& b) {
     lw::SurfaceStyle surface;
     surface.draw_surface = b.shaded;
 
+    Series coherence_ms;
+    size_t coherent_samples = 0;
     Series frame_ms, extract_gpu, extract_wall, surface_gpu, draw_gpu, chain, visibility, extract_cpu;
     size_t segments = 0, paths = 0;
     for (int frame = -2; frame < b.frames; ++frame) {
-        const lw::Frame f = renderer.render(s.camera, s.scene.camera.eye, surface, lines, {.color = false});
+        const lw::CoherenceParams coherence;
+        const lw::Frame f = renderer.render(s.camera, s.scene.camera.eye, surface, lines, {.color = false},
+                                            b.coherence ? &coherence : nullptr);
+        if (b.coherence) {
+            coherence_ms.values.push_back(f.timings.coherence_ms);
+            size_t n = 0;
+            for (const auto& p : f.screen_paths) n += p.visible ? p.samples.size() : 0;
+            coherent_samples = n;
+        }
         lw::Timer cpu;
         const auto reference = lw::extract_lines_reference(*renderer.line_mesh(), s.scene.camera.eye, lines.params);
         const double cpu_ms = cpu.elapsed_ms();
@@ -159,6 +170,10 @@ int run_lines(const BenchOptions& b) {
     visibility.print("CPU visibility");
     draw_gpu.print("GPU line drawing");
     extract_cpu.print("CPU reference extract");
+    if (b.coherence) {
+        std::printf("  coherent parameterization of %zu visible samples:\n", coherent_samples);
+        coherence_ms.print("votes+RANSAC+splat");
+    }
     return 0;
 }
 
@@ -183,6 +198,8 @@ int main(int argc, char** argv) {
     CLI::App* lines_cmd = app.add_subcommand("lines", "The whole line frame and its stages.");
     add_options(lines_cmd, lines);
     lines_cmd->add_flag("--shaded", lines.shaded, "Draw the lines over toon shading instead of the background");
+    lines_cmd->add_flag("--coherence", lines.coherence,
+                        "Also parameterize every visible path coherently (splat, votes, RANSAC) and time it");
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
