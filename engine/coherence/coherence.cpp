@@ -268,10 +268,83 @@ void CoherenceTracker::splat(const std::vector<ScreenPath>& paths, const std::ve
     std::memcpy(splat_.data(), splat_readback_.mapped(), splat_.size() * sizeof(glm::vec2));
 }
 
+void CoherenceTracker::split_merged_paths(std::vector<ScreenPath>& paths, VoteSet& votes, std::vector<PathFit>& fits,
+                                          const RansacParams& ransac) const {
+    constexpr uint32_t kMinRun = 8;  // consecutive rejected votes that make a piece of their own
+    std::vector<ScreenPath> out_paths;
+    VoteSet out_votes;
+    std::vector<PathFit> out_fits;
+    std::vector<size_t> refit;  // pieces fitted on their own below
+    auto add_piece = [&](const ScreenPath& path, size_t p, size_t from, size_t to, const PathFit* keep) {
+        ScreenPath piece{.type = path.type, .closed = false, .visible = path.visible, .source = path.source};
+        piece.samples.assign(path.samples.begin() + std::ptrdiff_t(from), path.samples.begin() + std::ptrdiff_t(to + 1));
+        const float shift = path.samples[from].s - path.samples.front().s;  // new arclength origin
+        for (uint32_t v = votes.offsets[p]; v < votes.offsets[p + 1]; ++v)
+            if (votes.sample[v] >= from && votes.sample[v] <= to) {
+                out_votes.votes.push_back({votes.votes[v].t, votes.votes[v].s - shift});
+                out_votes.sample.push_back(uint32_t(votes.sample[v] - from));
+            }
+        out_votes.offsets.push_back(uint32_t(out_votes.votes.size()));
+        PathFit fit;
+        fit.votes = out_votes.offsets.back() - out_votes.offsets[out_votes.offsets.size() - 2];
+        if (keep) {
+            fit = *keep;
+            fit.votes = out_votes.offsets.back() - out_votes.offsets[out_votes.offsets.size() - 2];
+            fit.phi = keep->phi + keep->rho * shift;
+        } else {
+            refit.push_back(out_paths.size());
+        }
+        out_paths.push_back(std::move(piece));
+        out_fits.push_back(fit);
+    };
+    for (size_t p = 0; p < paths.size(); ++p) {
+        const PathFit& fit = fits[p];
+        const uint32_t first = votes.offsets[p], last = votes.offsets[p + 1];
+        // Runs of consecutive votes the fit rejects, as sample ranges.
+        std::vector<std::pair<size_t, size_t>> runs;
+        if (fit.fitted && last - first >= 2 * kMinRun) {
+            const float limit = ransac.inlier_px * std::abs(fit.rho);
+            uint32_t run_start = last;
+            for (uint32_t v = first; v <= last; ++v) {
+                const bool outlier = v < last && std::abs(votes.votes[v].t - (fit.rho * votes.votes[v].s + fit.phi)) > limit;
+                if (outlier && run_start == last) run_start = v;
+                if (!outlier && run_start != last) {
+                    if (v - run_start >= kMinRun) runs.push_back({votes.sample[run_start], votes.sample[v - 1]});
+                    run_start = last;
+                }
+            }
+        }
+        if (runs.empty()) {
+            add_piece(paths[p], p, 0, paths[p].samples.size() - 1, &fit);
+            out_fits.back() = fit;  // unchanged (also when it has no fit)
+            continue;
+        }
+        // Alternate kept and rejected pieces; neighbours share their boundary sample.
+        size_t from = 0;
+        for (const auto& [a, b] : runs) {
+            if (a > from) add_piece(paths[p], p, from, a, &fit);
+            add_piece(paths[p], p, a, b, nullptr);
+            from = b;
+        }
+        if (from + 1 < paths[p].samples.size()) add_piece(paths[p], p, from, paths[p].samples.size() - 1, &fit);
+    }
+    if (!refit.empty()) {
+        VoteSet pieces;
+        for (size_t i : refit) {
+            for (uint32_t v = out_votes.offsets[i]; v < out_votes.offsets[i + 1]; ++v) pieces.votes.push_back(out_votes.votes[v]);
+            pieces.offsets.push_back(uint32_t(pieces.votes.size()));
+        }
+        const std::vector<PathFit> piece_fits = fitter_.fit(pieces, ransac);
+        for (size_t k = 0; k < refit.size(); ++k) out_fits[refit[k]] = piece_fits[k];
+    }
+    paths = std::move(out_paths);
+    votes = std::move(out_votes);
+    fits = std::move(out_fits);
+}
+
 std::vector<PathParam> CoherenceTracker::update(std::vector<ScreenPath>& paths, const CameraMatrices& camera,
                                                 const SurfaceFrame& surface, const CoherenceParams& params,
                                                 GpuTimer* timer, VoteSet* votes_out) {
-    std::vector<PathParam> out(paths.size());
     std::vector<PathFit> fits;
     VoteSet votes;
     float typical_rho = params.length_scale / params.slam_length_px;
@@ -279,6 +352,7 @@ std::vector<PathParam> CoherenceTracker::update(std::vector<ScreenPath>& paths, 
         votes = gather_votes(paths, surface);
         for (size_t p = 0; p < paths.size(); ++p) start_loop_at_seam(paths[p], votes, p);
         fits = fitter_.fit(votes, params.ransac);
+        split_merged_paths(paths, votes, fits, params.ransac);
         // The scale most paths settled on: for paths whose votes agree on a phase but cannot
         // give a slope (all at one arclength, or sub-pixel paths with equal t).
         std::vector<float> rhos;
@@ -289,6 +363,7 @@ std::vector<PathParam> CoherenceTracker::update(std::vector<ScreenPath>& paths, 
             typical_rho = rhos[rhos.size() / 2];
         }
     }
+    std::vector<PathParam> out(paths.size());
     for (size_t p = 0; p < paths.size(); ++p) {
         PathParam& param = out[p];
         param.length_px = path_length(paths[p]);

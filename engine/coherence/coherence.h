@@ -75,7 +75,8 @@ public:
 
     // Parameterizes this frame's visible paths (entries for hidden paths stay default) and
     // splats them for the next frame. Closed loops may be rotated to start at the seam they
-    // inherited (see coherence.cpp). `votes_out` (optional) receives the votes used.
+    // inherited, and paths that merged pieces of different earlier paths split (see
+    // coherence.cpp), so `paths` may change; the result has one entry per path after. `votes_out` (optional) receives the votes used.
     [[nodiscard]] std::vector<PathParam> update(std::vector<ScreenPath>& paths, const CameraMatrices& camera,
                                                 const SurfaceFrame& surface, const CoherenceParams& params,
                                                 GpuTimer* timer = nullptr, VoteSet* votes_out = nullptr);
@@ -86,6 +87,11 @@ public:
     const std::vector<glm::vec2>& splat_buffer() const { return splat_; }
 
 private:
+    // Where a long run of a path's votes disagrees with its fit, the path merged pieces that
+    // were separate paths a frame earlier (the popping §4.2 notes): split it there, keep the
+    // fit on the agreeing pieces and fit the others on their own (GPU RANSAC again).
+    void split_merged_paths(std::vector<ScreenPath>& paths, VoteSet& votes, std::vector<PathFit>& fits,
+                            const RansacParams& ransac) const;
     [[nodiscard]] VoteSet gather_votes(const std::vector<ScreenPath>& paths, const SurfaceFrame& surface) const;
     void splat(const std::vector<ScreenPath>& paths, const std::vector<PathParam>& params, float radius,
                GpuTimer* timer);
