@@ -207,11 +207,7 @@ void CoherenceTracker::splat(const std::vector<ScreenPath>& paths, const std::ve
             sprites.push_back({paths[p].samples[k].pixel, params[p].rho * path_arclength(paths[p], k) + params[p].phi});
     }
     Buffer sprite_buffer;
-    if (!sprites.empty()) {
-        sprite_buffer = Buffer(*ctx_, {.size = sprites.size() * sizeof(Sprite), .usage = VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
-                                       .purpose = MemoryPurpose::Upload, .name = "splat sprites"});
-        std::memcpy(sprite_buffer.mapped(), sprites.data(), sprites.size() * sizeof(Sprite));
-    }
+    if (!sprites.empty()) sprite_buffer = upload_vertices(*ctx_, std::as_bytes(std::span(sprites)), "splat sprites");
     ctx_->submit_and_wait([&](VkCommandBuffer cmd) {
         if (timer) {
             timer->reset(cmd);
@@ -243,12 +239,7 @@ void CoherenceTracker::splat(const std::vector<ScreenPath>& paths, const std::ve
             vkCmdSetScissor(cmd, 0, 1, &scissor);
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, splat_pipeline_.get());
             const SplatPush push{{float(width_), float(height_)}, radius, 0.0f};
-            vkCmdPushConstants(cmd, splat_pipeline_.layout(), VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT,
-                               0, sizeof(push), &push);
-            VkDeviceSize offset = 0;
-            VkBuffer vb = sprite_buffer.get();
-            vkCmdBindVertexBuffers(cmd, 0, 1, &vb, &offset);
-            vkCmdDraw(cmd, 6, uint32_t(sprites.size()), 0, 0);
+            splat_pipeline_.draw(cmd, sprite_buffer, 6, &push, sizeof(push), uint32_t(sprites.size()));
         }
         vkCmdEndRendering(cmd);
         record_image_barrier(cmd, splat_image_,

@@ -1,6 +1,7 @@
 #include "gpu/pipeline.h"
 
 #include <array>
+#include <cstring>
 #include <string>
 
 #include "core/error.h"
@@ -32,15 +33,24 @@ Handle<VkPipelineLayout> create_layout(const Context& ctx, VkDescriptorSetLayout
     return Handle<VkPipelineLayout>(ctx.device(), layout, vkDestroyPipelineLayout);
 }
 
-// A push-descriptor set layout of `count` storage buffers at bindings 0..count-1 (none if 0).
-Handle<VkDescriptorSetLayout> create_storage_set_layout(const Context& ctx, uint32_t count, VkShaderStageFlags stages) {
-    if (count == 0) return {};
+// A push-descriptor set layout: `storage` storage buffers at bindings [0, storage) for
+// `stages`, then `images` combined image samplers for the fragment stage (none if both 0).
+Handle<VkDescriptorSetLayout> create_push_set_layout(const Context& ctx, uint32_t storage, VkShaderStageFlags stages,
+                                                     uint32_t images = 0) {
+    if (storage + images == 0) return {};
+    if (!ctx.has_push_descriptors())
+        throw Error(ctx.info().name + " lacks VK_KHR_push_descriptor, which this pass needs");
     std::vector<VkDescriptorSetLayoutBinding> bindings;
-    for (uint32_t i = 0; i < count; ++i)
+    for (uint32_t i = 0; i < storage; ++i)
         bindings.push_back({.binding = i,
                             .descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
                             .descriptorCount = 1,
                             .stageFlags = stages});
+    for (uint32_t i = 0; i < images; ++i)
+        bindings.push_back({.binding = storage + i,
+                            .descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                            .descriptorCount = 1,
+                            .stageFlags = VK_SHADER_STAGE_FRAGMENT_BIT});
     VkDescriptorSetLayoutCreateInfo info{.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO,
                                          .flags = VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR,
                                          .bindingCount = static_cast<uint32_t>(bindings.size()),
@@ -72,11 +82,9 @@ void push_buffers(const Context& ctx, VkCommandBuffer cmd, VkPipelineBindPoint b
 
 ComputePipeline::ComputePipeline(const Context& ctx, const ComputePipelineDesc& desc)
     : storage_buffers_(desc.storage_buffers), push_constant_size_(desc.push_constant_size) {
-    if (desc.storage_buffers > 0 && !ctx.has_push_descriptors())
-        throw Error(ctx.info().name + " lacks VK_KHR_push_descriptor, which compute passes need");
     if (desc.push_constant_size > 128) throw Error("push constants over 128 bytes are not portable");
 
-    set_layout_ = create_storage_set_layout(ctx, desc.storage_buffers, VK_SHADER_STAGE_COMPUTE_BIT);
+    set_layout_ = create_push_set_layout(ctx, desc.storage_buffers, VK_SHADER_STAGE_COMPUTE_BIT);
     layout_ = create_layout(ctx, set_layout_.get(), desc.push_constant_size, VK_SHADER_STAGE_COMPUTE_BIT);
 
     auto module = create_shader_module(ctx, desc.spirv);
@@ -107,28 +115,7 @@ GraphicsPipeline::GraphicsPipeline(const Context& ctx, const GraphicsPipelineDes
     : storage_buffers_(desc.storage_buffers) {
     const VkShaderStageFlags stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
     // Push descriptors: storage buffers at bindings [0, S), sampled images at [S, S + I).
-    if (desc.storage_buffers + desc.sampled_images > 0) {
-        if (!ctx.has_push_descriptors())
-            throw Error(ctx.info().name + " lacks VK_KHR_push_descriptor, which this pass needs");
-        std::vector<VkDescriptorSetLayoutBinding> bindings;
-        for (uint32_t i = 0; i < desc.storage_buffers; ++i)
-            bindings.push_back({.binding = i,
-                                .descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-                                .descriptorCount = 1,
-                                .stageFlags = stages});
-        for (uint32_t i = 0; i < desc.sampled_images; ++i)
-            bindings.push_back({.binding = desc.storage_buffers + i,
-                                .descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                                .descriptorCount = 1,
-                                .stageFlags = VK_SHADER_STAGE_FRAGMENT_BIT});
-        VkDescriptorSetLayoutCreateInfo info{.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO,
-                                             .flags = VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR,
-                                             .bindingCount = static_cast<uint32_t>(bindings.size()),
-                                             .pBindings = bindings.data()};
-        VkDescriptorSetLayout set_layout = VK_NULL_HANDLE;
-        LW_VK(vkCreateDescriptorSetLayout(ctx.device(), &info, nullptr, &set_layout));
-        set_layout_ = Handle<VkDescriptorSetLayout>(ctx.device(), set_layout, vkDestroyDescriptorSetLayout);
-    }
+    set_layout_ = create_push_set_layout(ctx, desc.storage_buffers, stages, desc.sampled_images);
     layout_ = create_layout(ctx, set_layout_.get(), desc.push_constant_size, stages);
 
     auto vertex = create_shader_module(ctx, desc.vertex_spirv);
@@ -223,6 +210,23 @@ void GraphicsPipeline::push_image(const Context& ctx, VkCommandBuffer cmd, uint3
                                .descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
                                .pImageInfo = &image};
     ctx.cmd_push_descriptor_set(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &write);
+}
+
+Buffer upload_vertices(const Context& ctx, std::span<const std::byte> bytes, const char* name) {
+    Buffer buffer(ctx, {.size = bytes.size(), .usage = VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
+                        .purpose = MemoryPurpose::Upload, .name = name});
+    std::memcpy(buffer.mapped(), bytes.data(), bytes.size());
+    return buffer;
+}
+
+void GraphicsPipeline::draw(VkCommandBuffer cmd, const Buffer& vertices, uint32_t vertex_count, const void* push,
+                            uint32_t push_size, uint32_t instance_count) const {
+    if (push_size > 0)
+        vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0, push_size, push);
+    VkDeviceSize offset = 0;
+    VkBuffer buffer = vertices.get();
+    vkCmdBindVertexBuffers(cmd, 0, 1, &buffer, &offset);
+    vkCmdDraw(cmd, vertex_count, instance_count, 0, 0);
 }
 
 void GraphicsPipeline::push_storage_buffers(const Context& ctx, VkCommandBuffer cmd,

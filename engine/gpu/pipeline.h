@@ -87,6 +87,11 @@ public:
     // Binds `view` with `sampler` at `binding` (push descriptor) for the following draws.
     void push_image(const Context& ctx, VkCommandBuffer cmd, uint32_t binding, VkImageView view,
                     VkSampler sampler) const;
+    // Pushes the constants (vertex and fragment stages), binds `vertices` at binding 0 and
+    // draws; the pipeline must be bound.
+    void draw(VkCommandBuffer cmd, const Buffer& vertices, uint32_t vertex_count, const void* push,
+              uint32_t push_size, uint32_t instance_count = 1) const;
+
     // Binds the storage buffers to bindings 0.. (push descriptors) for the following draws.
     void push_storage_buffers(const Context& ctx, VkCommandBuffer cmd, std::initializer_list<const Buffer*> buffers) const;
 
@@ -96,6 +101,9 @@ private:
     Handle<VkPipelineLayout> layout_;
     Handle<VkPipeline> pipeline_;
 };
+
+// A vertex buffer in Upload memory holding `bytes` (for per-frame geometry built on the CPU).
+[[nodiscard]] Buffer upload_vertices(const Context& ctx, std::span<const std::byte> bytes, const char* name);
 
 [[nodiscard]] Handle<VkShaderModule> create_shader_module(const Context& ctx, std::span<const uint32_t> spirv);
 

@@ -109,19 +109,11 @@ Buffer LinePass::record(const Context& ctx, VkCommandBuffer cmd, RenderTarget& t
                         const std::vector<ScreenPath>& paths, const LinesDesc& style) const {
     const std::vector<LineVertex> vertices = build_quads(paths, style);
     if (vertices.empty()) return Buffer();
-    Buffer buffer(ctx, {.size = vertices.size() * sizeof(LineVertex), .usage = VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
-                        .purpose = MemoryPurpose::Upload, .name = "line quads"});
-    std::memcpy(buffer.mapped(), vertices.data(), vertices.size() * sizeof(LineVertex));
-
+    Buffer buffer = upload_vertices(ctx, std::as_bytes(std::span(vertices)), "line quads");
     target.begin_overlay(cmd);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.get());
     const LineDrawPush push{{float(target.width), float(target.height)}, 8.0f, 0.0f};
-    vkCmdPushConstants(cmd, pipeline_.layout(), VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
-                       sizeof(push), &push);
-    VkDeviceSize offset = 0;
-    VkBuffer vertex_buffer = buffer.get();
-    vkCmdBindVertexBuffers(cmd, 0, 1, &vertex_buffer, &offset);
-    vkCmdDraw(cmd, static_cast<uint32_t>(vertices.size()), 1, 0, 0);
+    pipeline_.draw(cmd, buffer, static_cast<uint32_t>(vertices.size()), &push, sizeof(push));
     target.end_overlay(cmd);
     return buffer;
 }

@@ -35,19 +35,12 @@ StrokePass::StrokePass(const Context& ctx)
 Buffer StrokePass::record(const Context& ctx, VkCommandBuffer cmd, const RenderTarget& target,
                           const std::vector<StrokeVertex>& vertices, const SlamTexture& slam) const {
     if (vertices.empty()) return Buffer();
-    Buffer buffer(ctx, {.size = vertices.size() * sizeof(StrokeVertex), .usage = VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
-                        .purpose = MemoryPurpose::Upload, .name = "stroke quads"});
-    std::memcpy(buffer.mapped(), vertices.data(), vertices.size() * sizeof(StrokeVertex));
+    Buffer buffer = upload_vertices(ctx, std::as_bytes(std::span(vertices)), "stroke quads");
     target.begin_overlay(cmd);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.get());
     pipeline_.push_image(ctx, cmd, 0, slam.view(), slam.sampler());
     const StrokePush push{{float(target.width), float(target.height)}, float(slam.levels()), 0.0f};
-    vkCmdPushConstants(cmd, pipeline_.layout(), VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
-                       sizeof(push), &push);
-    VkDeviceSize offset = 0;
-    VkBuffer vertex_buffer = buffer.get();
-    vkCmdBindVertexBuffers(cmd, 0, 1, &vertex_buffer, &offset);
-    vkCmdDraw(cmd, static_cast<uint32_t>(vertices.size()), 1, 0, 0);
+    pipeline_.draw(cmd, buffer, static_cast<uint32_t>(vertices.size()), &push, sizeof(push));
     target.end_overlay(cmd);
     return buffer;
 }
