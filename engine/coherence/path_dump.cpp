@@ -38,9 +38,15 @@ std::string path_dump_json(int frame, int width, int height, const std::vector<S
 PathDump read_path_dump(const std::filesystem::path& file) {
     std::ifstream in(file);
     if (!in) throw Error(file.string() + ": cannot open path dump");
+    std::stringstream text;
+    text << in.rdbuf();
+    return parse_path_dump(text.str(), file.string());
+}
+
+PathDump parse_path_dump(const std::string& text, const std::string& name) {
     PathDump dump;
     try {
-        const nlohmann::json j = nlohmann::json::parse(in);
+        const nlohmann::json j = nlohmann::json::parse(text);
         dump.frame = j.at("frame").get<int>();
         for (const auto& p : j.at("paths")) {
             DumpPath path{p.at("type").get<std::string>(), p.at("rho").get<float>(), {}};
@@ -50,7 +56,7 @@ PathDump read_path_dump(const std::filesystem::path& file) {
             dump.paths.push_back(std::move(path));
         }
     } catch (const nlohmann::json::exception& e) {
-        throw Error(file.string() + ": malformed path dump: " + e.what());
+        throw Error(name + ": malformed path dump: " + e.what());
     }
     return dump;
 }

@@ -42,8 +42,9 @@ struct PathDump {
     std::vector<DumpPath> paths;
 };
 
-// Throws lw::Error naming the file on malformed input.
+// Throw lw::Error naming the file (or `name`) on malformed input.
 [[nodiscard]] PathDump read_path_dump(const std::filesystem::path& file);
+[[nodiscard]] PathDump parse_path_dump(const std::string& text, const std::string& name);
 
 struct SlidingMeasure {
     double median_dt = 0.0;  // median |Δt| over matched sample pairs, periods
