@@ -46,6 +46,8 @@ struct RenderOptions {
     std::string dump_paths;
     std::string slam;
     float stroke_width = 6.0f;
+    float splat_radius = 0.0f;  // 0: twice the sample spacing
+    float inlier_px = 1.5f;
     float length_scale = 0.0f;  // 0: square texels (the SLAM's height over the stroke width)
 };
 
@@ -198,7 +200,8 @@ int run_render(const RenderOptions& o) {
     CoherenceParams coherence;
     if (o.param == "arclength") coherence.policy = ParamPolicy::Arclength;
     if (o.param == "stretch") coherence.policy = ParamPolicy::Stretch;
-    coherence.splat_radius_px = desc.lines.sample_spacing_px * 2.0f;
+    coherence.splat_radius_px = o.splat_radius > 0.0f ? o.splat_radius : desc.lines.sample_spacing_px * 2.0f;
+    coherence.ransac.inlier_px = o.inlier_px;
     for (int t = 0; t < kLineTypeCount; ++t)
         if (slams[size_t(t)]) {
             coherence.slam_length_px = float(slams[size_t(t)]->length);
@@ -332,6 +335,13 @@ Runner add_render_command(CLI::App& app) {
         ->check(CLI::PositiveNumber);
     cmd->add_option("--stroke-width", o->stroke_width, "Width of SLAM strokes in pixels (default 6)")
         ->check(CLI::PositiveNumber);
+    cmd->add_option("--splat-radius", o->splat_radius,
+                    "δ of the parameterization sprites, pixels (default: twice the sample spacing); larger keeps "
+                    "fast lines coherent, smaller keeps nearby lines apart (§4.1)")
+        ->check(CLI::PositiveNumber);
+    cmd->add_option("--inlier-px", o->inlier_px, "RANSAC inlier distance along the path, pixels (§4.2)")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
     cmd->add_option("--dump-paths", o->dump_paths,
                     "Write DIR/frame_NNNN.json per frame: visible paths, their (ρ, φ), level and samples");
     cmd->add_flag("--validation", o->validation,
