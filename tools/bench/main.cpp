@@ -6,6 +6,7 @@
 //
 //   linework-bench surface MODEL.glb [--subdivide K] [--size WxH] [--frames N] [--device D]
 //   linework-bench lines   MODEL.glb [--subdivide K] [--size WxH] [--frames N] [--device D]
+//   linework-bench ribbon  [--pattern NAME] [--exemplar-size WxH] [--rows N] [--device D]
 //
 // surface: the shaded surface pass (colour + depth), GPU time from timestamps.
 // lines:   the whole line frame (surface + extraction + depth readback + chaining +
@@ -29,6 +30,7 @@
 #include "render/frame_renderer.h"
 #include "render/surface_pass.h"
 #include "scene/scene.h"
+#include "ribbon_bench.h"
 
 namespace {
 
@@ -198,6 +200,8 @@ int main(int argc, char** argv) {
     CLI::App* lines_cmd = app.add_subcommand("lines", "The whole line frame and its stages.");
     add_options(lines_cmd, lines);
     lines_cmd->add_flag("--shaded", lines.shaded, "Draw the lines over toon shading instead of the background");
+    lw::bench::RibbonBenchOptions ribbon;
+    CLI::App* ribbon_cmd = lw::bench::add_ribbon_bench(app, ribbon);
     lines_cmd->add_flag("--coherence", lines.coherence,
                         "Also parameterize every visible path coherently (splat, votes, RANSAC) and time it");
     try {
@@ -211,6 +215,7 @@ int main(int argc, char** argv) {
     try {
         if (surface_cmd->parsed()) return run_surface(surface);
         if (lines_cmd->parsed()) return run_lines(lines);
+        if (ribbon_cmd->parsed()) return lw::bench::run_ribbon_bench(ribbon);
     } catch (const lw::Error& e) {
         std::fprintf(stderr, "linework-bench: error: %s\n", e.what());
         return e.exit_code();

@@ -20,6 +20,8 @@ Runner add_diff_command(CLI::App& app);
 Runner add_devices_command(CLI::App& app);
 Runner add_slam_pattern_command(CLI::App& app);
 Runner add_coherence_report_command(CLI::App& app);
+Runner add_ribbon_command(CLI::App& app);
+Runner add_ribbon_exemplar_command(CLI::App& app);
 
 // "1,2.5,-3" -> vec3; throws a usage error naming `option`.
 glm::vec3 parse_vec3(const std::string& text, const std::string& option);

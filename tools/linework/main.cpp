@@ -27,6 +27,8 @@ int main(int argc, char** argv) {
     add(&lw::cli::add_devices_command);
     add(&lw::cli::add_slam_pattern_command);
     add(&lw::cli::add_coherence_report_command);
+    add(&lw::cli::add_ribbon_command);
+    add(&lw::cli::add_ribbon_exemplar_command);
 
     try {
         app.parse(argc, argv);

@@ -1,0 +1,63 @@
+// engine/ribbon/curve.h — the curve a ribbon pattern follows, parameterized by arc length.
+//
+// Input:  a polyline in output pixels (x right, y down), open or closed, from
+//         - JSON: {"points": [[x, y], ...], "closed": bool}  ("closed" optional, default false;
+//           any other key is an error naming it), or
+//         - SVG: the first <path d="…"> of a file, commands M/L/C/Z and their relative forms
+//           m/l/c/z, one subpath (cubic Béziers are flattened to pieces under 1 px of chord).
+//           Transforms are not applied.
+// Output: `Curve2D`; `ArclengthCurve` evaluates C(x), x ∈ [0, L], and the unit tangent, as
+//         the paper assumes (Zhou et al. 2013, §1.1: "a curve parameterized in arc length").
+//
+// Errors are `lw::Error`s (exit code 1) whose message starts with the file name.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace lw {
+
+struct Curve2D {
+    std::vector<glm::vec2> points;
+    bool closed = false;  // the last point connects back to the first
+};
+
+// Reads a .json or .svg curve (chosen by extension; anything else is read as JSON).
+[[nodiscard]] Curve2D load_curve(const std::filesystem::path& path);
+// The same from text; `where` names the source in error messages.
+[[nodiscard]] Curve2D parse_curve_json(const std::string& text, const std::string& where);
+[[nodiscard]] Curve2D parse_curve_svg(const std::string& svg_text, const std::string& where);
+// Parses one SVG path's `d` attribute.
+[[nodiscard]] Curve2D parse_svg_path_data(const std::string& d, const std::string& where);
+
+class ArclengthCurve {
+public:
+    // Drops consecutive duplicate points (and a closing point equal to the first);
+    // throws lw::Error when fewer than two distinct points remain.
+    explicit ArclengthCurve(const Curve2D& curve);
+
+    float length() const { return length_; }
+    bool closed() const { return closed_; }
+    const std::vector<glm::vec2>& points() const { return points_; }
+
+    // C(x): open curves clamp x to [0, L]; closed curves wrap it.
+    glm::vec2 point_at(float x) const;
+    // Unit tangent at x from the chord C(x + h) − C(x − h): on a circle the chord is the exact
+    // tangent, and at a polyline corner it is the bisector.
+    glm::vec2 tangent_at(float x, float h) const;
+
+private:
+    std::vector<glm::vec2> points_;
+    std::vector<double> cumulative_;  // arc length at each point; closed: one more for the closing segment
+    float length_ = 0.0f;
+    bool closed_ = false;
+};
+
+// Points every `spacing` px of arc length (the last spacing shortened so that both ends are
+// kept on an open curve; a closed curve gets round(L / spacing) evenly spaced points).
+[[nodiscard]] std::vector<glm::vec2> resample_arclength(const ArclengthCurve& curve, float spacing);
+
+}  // namespace lw

@@ -1,0 +1,147 @@
+#include "ribbon/dp.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "core/error.h"
+#include "core/parallel.h"
+
+namespace lw {
+
+namespace {
+
+// Row indices of the path ending at entry `j` of the last row.
+std::vector<uint32_t> backtrack(const DpTables& t, uint32_t j) {
+    std::vector<uint32_t> idx(t.valid.size());
+    idx.back() = j;
+    for (size_t r = t.valid.size() - 1; r > 0; --r) idx[r - 1] = t.back[r][idx[r]];
+    return idx;
+}
+
+// Among `candidates` (indices into last_costs), those of minimal cost, one drawn by the seed.
+std::optional<uint32_t> pick_cheapest(const std::vector<float>& costs, const std::vector<uint32_t>& candidates,
+                                      uint64_t seed) {
+    if (candidates.empty()) return std::nullopt;
+    float best = std::numeric_limits<float>::infinity();
+    for (uint32_t j : candidates) best = std::min(best, costs[j]);
+    std::vector<uint32_t> ties;
+    for (uint32_t j : candidates)
+        if (costs[j] == best) ties.push_back(j);
+    return ties[ribbon_hash(seed) % ties.size()];
+}
+
+RibbonSolution make_solution(const DpProblem& problem, const DpTables& t, uint32_t end) {
+    RibbonSolution s;
+    const std::vector<uint32_t> idx = backtrack(t, end);
+    for (size_t r = 0; r < idx.size(); ++r) s.positions.push_back(problem.position(t.valid[r][idx[r]]));
+    for (size_t r = 1; r < idx.size(); ++r) s.seam_costs.push_back(seam_cost(problem, r, s.positions[r - 1], s.positions[r]));
+    s.total_cost = t.last_costs[end];
+    for (const auto& v : t.valid) s.valid_counts.push_back(uint32_t(v.size()));
+    s.row_ms = t.row_ms;
+    return s;
+}
+
+}  // namespace
+
+uint64_t ribbon_hash(uint64_t x) {
+    x += 0x9e3779b97f4a7c15ull;
+    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
+    x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
+    return x ^ (x >> 31);
+}
+
+float seam_cost(const DpProblem& problem, size_t row, glm::ivec2 prev, glm::ivec2 cur) {
+    const Exemplar& e = *problem.exemplar;
+    const PieceProbes& left_piece = problem.rows[row - 1];
+    float d = 0.0f;
+    for (int k = 0; k < problem.samples; ++k) {
+        const glm::ivec2 r = prev + left_piece.right[size_t(k)];
+        d += xi(e.at(r.x, r.y), e.at(cur.x, cur.y + problem.left_dy[size_t(k)]));
+    }
+    return d;
+}
+
+float path_cost(const DpProblem& problem, const std::vector<glm::ivec2>& positions) {
+    float total = 0.0f;
+    for (size_t r = 1; r < positions.size(); ++r) total += seam_cost(problem, r, positions[r - 1], positions[r]);
+    return total;
+}
+
+RibbonSolution solve_ribbon(const DpProblem& problem, const DpRunner& runner, uint64_t seed,
+                            const DpRunOptions& options) {
+    DpTables t = runner(problem, options);
+    const size_t rows = t.valid.size();
+    const std::vector<uint32_t>& last = t.valid.back();
+    std::vector<uint32_t> all(last.size());
+    for (uint32_t j = 0; j < all.size(); ++j) all[j] = j;
+
+    if (!problem.closed || rows < 2) return make_solution(problem, t, *pick_cheapest(t.last_costs, all, seed));
+
+    // §1.5: backtrack from every terminal position, keep those that come back to themselves.
+    std::vector<uint32_t> cycles;
+    for (uint32_t j = 0; j < last.size(); ++j) {
+        const std::vector<uint32_t> idx = backtrack(t, j);
+        if (t.valid[0][idx[0]] == last[j]) cycles.push_back(j);
+    }
+    if (auto end = pick_cheapest(t.last_costs, cycles, seed)) return make_solution(problem, t, *end);
+
+    // No cycle: fix piece 0 where the cheapest open path starts and run once more.
+    const uint32_t best_end = *pick_cheapest(t.last_costs, all, seed);
+    const uint32_t start = t.valid[0][backtrack(t, best_end)[0]];
+    DpRunOptions fixed = options;
+    fixed.first_position = start;
+    DpTables f = runner(problem, fixed);
+    const auto it = std::find(f.valid.back().begin(), f.valid.back().end(), start);
+    if (it == f.valid.back().end()) throw Error("closed ribbon: the terminal piece cannot take the first piece's position");
+    RibbonSolution s = make_solution(problem, f, uint32_t(it - f.valid.back().begin()));
+    s.closed_by_first_dp = false;
+    // Report the valid counts and row times of both runs' rows where they add up.
+    for (size_t r = 0; r < s.row_ms.size() && r < t.row_ms.size(); ++r) s.row_ms[r] += t.row_ms[r];
+    s.valid_counts[0] = uint32_t(t.valid[0].size());
+    return s;
+}
+
+std::vector<glm::ivec2> greedy_positions(const DpProblem& problem, const std::vector<std::vector<uint32_t>>& valid,
+                                         glm::ivec2 first) {
+    std::vector<glm::ivec2> out{first};
+    const size_t rows = problem.rows.size();
+    for (size_t r = 1; r < rows; ++r) {
+        if (problem.closed && r + 1 == rows) {
+            out.push_back(first);
+            break;
+        }
+        const std::vector<uint32_t>& cand = valid[r];
+        const glm::ivec2 prev = out.back();
+        std::vector<std::pair<float, size_t>> best(worker_count(), {std::numeric_limits<float>::infinity(), 0});
+        parallel_for(cand.size(), 64, [&](size_t begin, size_t end, size_t chunk) {
+            for (size_t j = begin; j < end; ++j) {
+                const float c = seam_cost(problem, r, prev, problem.position(cand[j]));
+                if (c < best[chunk].first) best[chunk] = {c, j};
+            }
+        });
+        std::pair<float, size_t> b = best[0];
+        for (const auto& c : best)
+            if (c.first < b.first) b = c;
+        out.push_back(problem.position(cand[b.second]));
+    }
+    return out;
+}
+
+std::vector<glm::ivec2> random_positions(const DpProblem& problem, const std::vector<std::vector<uint32_t>>& valid,
+                                         uint64_t seed) {
+    std::vector<glm::ivec2> out;
+    uint64_t state = ribbon_hash(seed ^ 0x72616e646f6dull);
+    for (size_t r = 0; r < problem.rows.size(); ++r) {
+        if (problem.closed && r + 1 == problem.rows.size()) {
+            out.push_back(out.front());
+            break;
+        }
+        state = ribbon_hash(state);
+        out.push_back(problem.position(valid[r][state % valid[r].size()]));
+    }
+    return out;
+}
+
+}  // namespace lw

@@ -1,0 +1,86 @@
+#include "ribbon/ribbon.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "core/error.h"
+
+namespace lw {
+
+glm::vec2 Ribbon::to_exemplar(size_t piece, glm::ivec2 u, glm::vec2 p) const {
+    const RibbonPiece& q = pieces[piece];
+    const glm::vec2 d = p - q.top_left;
+    const glm::vec2 t = q.tangent;
+    // R = [[t.x, t.y], [−t.y, t.x]] takes t to +x and −n = (−t.y, t.x) to +y (down).
+    const glm::vec2 rotated(t.x * d.x + t.y * d.y, -t.y * d.x + t.x * d.y);
+    return glm::vec2(float(u.x) + 0.5f, float(u.y)) + (scale / width) * rotated;
+}
+
+glm::vec2 Ribbon::min_corner() const {
+    glm::vec2 lo(INFINITY);
+    for (const RibbonPiece& p : pieces)
+        lo = glm::min(glm::min(lo, glm::min(p.top_left, p.bottom_left)), glm::min(p.top_right, p.bottom_right));
+    return lo;
+}
+
+glm::vec2 Ribbon::max_corner() const {
+    glm::vec2 hi(-INFINITY);
+    for (const RibbonPiece& p : pieces)
+        hi = glm::max(glm::max(hi, glm::max(p.top_left, p.bottom_left)), glm::max(p.top_right, p.bottom_right));
+    return hi;
+}
+
+Ribbon build_ribbon(const ArclengthCurve& curve, const RibbonParams& params) {
+    if (!(params.width > 0.0f) || !std::isfinite(params.width))
+        throw usage_error("--width: the ribbon width b must be a positive number of pixels");
+    if (!(params.piece > 0.0f) || !std::isfinite(params.piece))
+        throw usage_error("--piece: the piece length δ must be a positive number of pixels");
+    if (!(params.scale > 0.0f) || !std::isfinite(params.scale))
+        throw usage_error("--scale: s must be a positive number of exemplar pixels");
+    if (params.scale > 4096.0f) throw usage_error("--scale: at most 4096 exemplar pixels across the ribbon");
+
+    const float length = curve.length();
+    const float delta = params.piece;
+    // x_0 .. x_N (see the header for the remainder rule).
+    std::vector<float> xs;
+    const auto full = static_cast<long>(std::floor(length / delta));
+    if (full > 100000) throw usage_error("--piece: " + std::to_string(full) + " pieces; at most 100000");
+    for (long i = 0; i <= full; ++i) xs.push_back(float(i) * delta);
+    const float remainder = length - xs.back();
+    if (xs.size() == 1 || remainder > 0.25f * delta)
+        xs.push_back(length);
+    else
+        xs.back() = length;
+
+    // Tangents from a chord of ±δ/2 (at least 1 px): smooth over a piece, exact on circles.
+    const float h = std::max(1.0f, 0.5f * delta);
+    const float half = 0.5f * params.width;
+    std::vector<glm::vec2> top(xs.size()), bottom(xs.size()), tangent(xs.size());
+    for (size_t i = 0; i < xs.size(); ++i) {
+        const glm::vec2 c = curve.point_at(xs[i]);
+        const glm::vec2 t = curve.tangent_at(xs[i], h);
+        const glm::vec2 n(t.y, -t.x);
+        top[i] = c + half * n;
+        bottom[i] = c - half * n;
+        tangent[i] = t;
+    }
+    if (curve.closed()) {  // the last right edge is exactly the first left edge
+        top.back() = top.front();
+        bottom.back() = bottom.front();
+    }
+
+    Ribbon ribbon;
+    ribbon.closed = curve.closed();
+    ribbon.width = params.width;
+    ribbon.scale = params.scale;
+    ribbon.samples = static_cast<int>(std::ceil(params.scale - 1e-4f));
+    for (size_t i = 0; i + 1 < xs.size(); ++i)
+        ribbon.pieces.push_back({top[i], bottom[i], bottom[i + 1], top[i + 1], tangent[i]});
+    if (ribbon.closed && ribbon.pieces.size() < 2)
+        throw usage_error("--piece: a closed curve of length " + std::to_string(length) +
+                          " px needs at least two pieces; use a shorter piece length");
+    return ribbon;
+}
+
+}  // namespace lw

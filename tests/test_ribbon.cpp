@@ -1,0 +1,343 @@
+// Ribbon patterns (Zhou et al. 2013), the plain C++ side: curves, slicing, the matching cost,
+// the DP against brute force, periodic exemplars, closed curves, stitching.
+#include <cmath>
+#include <fstream>
+#include <limits>
+
+#include "core/error.h"
+#include "ribbon/avoidance.h"
+#include "ribbon/curve.h"
+#include "ribbon/dp_reference.h"
+#include "ribbon/exemplar_gen.h"
+#include "ribbon/stitch.h"
+#include "test_ribbon_support.h"
+
+namespace lw {
+namespace {
+
+TEST(RibbonCurve, ParsesJson) {
+    const Curve2D c = parse_curve_json(R"({"points": [[0, 0], [10, 0], [10, 5.5]], "closed": true})", "c.json");
+    ASSERT_EQ(c.points.size(), 3u);
+    EXPECT_TRUE(c.closed);
+    EXPECT_FLOAT_EQ(c.points[2].y, 5.5f);
+    EXPECT_FALSE(parse_curve_json(R"({"points": [[0, 0], [1, 1]]})", "c.json").closed);
+}
+
+TEST(RibbonCurve, RejectsBadJsonNamingFileAndKey) {
+    const std::pair<const char*, const char*> cases[] = {
+        {R"({"points": [[0, 0]]})", "points"},
+        {R"({"points": [[0, 0], [1]]})", "points[1]"},
+        {R"({"points": [[0, 0], [1, 1]], "closd": true})", "closd: unknown key"},
+        {R"({"points": [[0, 0], [1, 1]], "closed": 1})", "closed"},
+        {R"({"points": [[0, 0], [1e9, 1]]})", "points[1]"},
+        {R"([1, 2])", "JSON object"},
+        {R"({"points": )", "not valid JSON"},
+    };
+    for (const auto& [text, expected] : cases) {
+        try {
+            (void)parse_curve_json(text, "dir/c.json");
+            ADD_FAILURE() << "accepted " << text;
+        } catch (const Error& e) {
+            const std::string m = e.what();
+            EXPECT_EQ(m.rfind("dir/c.json: ", 0), 0u) << m;
+            EXPECT_NE(m.find(expected), std::string::npos) << m;
+            EXPECT_EQ(e.exit_code(), 1);
+        }
+    }
+}
+
+TEST(RibbonCurve, ParsesSvgPathSubset) {
+    const Curve2D lines = parse_curve_svg(R"(<svg><path id="x" d="M 10,20 L 30 20 l 0,10 Z"/></svg>)", "a.svg");
+    ASSERT_EQ(lines.points.size(), 3u);
+    EXPECT_TRUE(lines.closed);
+    EXPECT_EQ(lines.points[2], glm::vec2(30, 30));
+    const Curve2D cubic = parse_svg_path_data("M0 0 C 0 10 10 10 10 0", "b.svg");
+    EXPECT_FALSE(cubic.closed);
+    EXPECT_GT(cubic.points.size(), 4u);
+    EXPECT_NEAR(cubic.points.back().x, 10.0f, 1e-5f);
+    EXPECT_NEAR(cubic.points[cubic.points.size() / 2].y, 7.5f, 0.2f);  // the Bézier's apex
+    EXPECT_THROW((void)parse_svg_path_data("M0 0 Q 1 1 2 2", "c.svg"), Error);
+    EXPECT_THROW((void)parse_svg_path_data("M0 0 L1 1 M 5 5 L 6 6", "c.svg"), Error);
+    EXPECT_THROW((void)parse_curve_svg("<svg></svg>", "c.svg"), Error);
+}
+
+TEST(RibbonCurve, ArclengthAndResampling) {
+    Curve2D circle;
+    for (int i = 0; i < 256; ++i) {
+        const float a = 2.0f * float(M_PI) * float(i) / 256.0f;
+        circle.points.push_back({50.0f + 20.0f * std::cos(a), 50.0f + 20.0f * std::sin(a)});
+    }
+    circle.closed = true;
+    const ArclengthCurve c(circle);
+    EXPECT_NEAR(c.length(), 2.0f * float(M_PI) * 20.0f, 0.05f);
+    EXPECT_NEAR(glm::length(c.point_at(c.length()) - c.point_at(0.0f)), 0.0f, 1e-3f);
+    // The chord tangent of a circle is the exact tangent.
+    const glm::vec2 t = c.tangent_at(0.0f, 3.0f);
+    EXPECT_NEAR(std::abs(t.y), 1.0f, 1e-3f);
+    const std::vector<glm::vec2> samples = resample_arclength(c, 2.0f);
+    for (size_t i = 0; i < samples.size(); ++i)
+        EXPECT_NEAR(glm::length(samples[(i + 1) % samples.size()] - samples[i]), c.length() / float(samples.size()),
+                    0.02f);
+
+    const ArclengthCurve open(Curve2D{{{0, 0}, {10, 0}, {10, 10}}, false});
+    EXPECT_FLOAT_EQ(open.length(), 20.0f);
+    EXPECT_EQ(open.point_at(15.0f), glm::vec2(10, 5));
+    EXPECT_EQ(open.point_at(99.0f), glm::vec2(10, 10));
+    const std::vector<glm::vec2> s = resample_arclength(open, 3.0f);
+    EXPECT_EQ(s.size(), 8u);  // 0, 3, …, 18, 20
+    EXPECT_EQ(s.back(), glm::vec2(10, 10));
+    EXPECT_THROW(ArclengthCurve(Curve2D{{{1, 1}, {1, 1}}, false}), Error);
+}
+
+TEST(RibbonGeometry, SlicesIntoPiecesOfLengthDelta) {
+    const ArclengthCurve line(Curve2D{{{10, 50}, {110, 50}}, false});
+    const Ribbon r = build_ribbon(line, {.width = 20, .piece = 8, .scale = 10});
+    // 100 / 8 = 12 pieces and a remainder of 4 > δ/4: a 13th, shorter piece.
+    ASSERT_EQ(r.pieces.size(), 13u);
+    EXPECT_EQ(r.samples, 10);
+    EXPECT_EQ(r.pieces[0].top_left, glm::vec2(10, 40));  // n points up for a left-to-right curve
+    EXPECT_EQ(r.pieces[0].bottom_left, glm::vec2(10, 60));
+    EXPECT_EQ(r.pieces[0].top_right, glm::vec2(18, 40));
+    EXPECT_EQ(r.pieces.back().top_right, glm::vec2(110, 40));
+    for (size_t i = 0; i + 1 < r.pieces.size(); ++i) {  // consecutive pieces share their edge
+        EXPECT_EQ(r.pieces[i].top_right, r.pieces[i + 1].top_left);
+        EXPECT_EQ(r.pieces[i].bottom_right, r.pieces[i + 1].bottom_left);
+    }
+    // The similarity: the left edge becomes a vertical of s exemplar pixels through x + 0.5.
+    EXPECT_EQ(r.to_exemplar(3, {5, -2}, r.pieces[3].top_left), glm::vec2(5.5f, -2.0f));
+    EXPECT_EQ(r.to_exemplar(3, {5, -2}, r.pieces[3].bottom_left), glm::vec2(5.5f, 8.0f));
+    EXPECT_EQ(r.to_exemplar(3, {5, -2}, r.pieces[3].top_right), glm::vec2(9.5f, -2.0f));
+
+    const ArclengthCurve short_tail(Curve2D{{{0, 0}, {81, 0}}, false});
+    EXPECT_EQ(build_ribbon(short_tail, {.width = 10, .piece = 8, .scale = 10}).pieces.size(), 10u);  // 1 px absorbed
+    EXPECT_THROW((void)build_ribbon(line, {.width = 0, .piece = 8, .scale = 10}), Error);
+    EXPECT_THROW((void)build_ribbon(line, {.width = 10, .piece = -1, .scale = 10}), Error);
+}
+
+TEST(RibbonCost, XiIsDistanceOrGamma) {
+    const uint32_t red = pack_rgba(255, 0, 0, 255), dark_red = pack_rgba(252, 4, 0, 200);
+    EXPECT_FLOAT_EQ(xi(red, dark_red), 5.0f);  // both opaque: ‖p − q‖
+    EXPECT_FLOAT_EQ(xi(pack_rgba(0, 3, 4, 0), pack_rgba(0, 0, 0, 127)), 5.0f);  // both transparent
+    EXPECT_FLOAT_EQ(xi(red, pack_rgba(255, 0, 0, 127)), kRibbonGamma);  // opaque against transparent
+    EXPECT_FLOAT_EQ(kRibbonGamma, 1024.0f);
+}
+
+TEST(RibbonCost, AlphaTermAddsExactlyGammaPerMismatchedPixel) {
+    // Column 1 (the right edge of a piece at x = 0) and column 2 (the left edge of one at
+    // x = 2) have the same colours; alpha differs in `m` of the C = 6 rows.
+    for (int m = 0; m <= 6; ++m) {
+        ImageRGBA8 img{4, 6, std::vector<uint8_t>(4 * 6 * 4, 0)};
+        for (int y = 0; y < 6; ++y)
+            for (int x = 1; x <= 2; ++x) {
+                uint8_t* p = img.at(x, y);
+                p[0] = uint8_t(40 * y);
+                p[1] = 90;
+                p[2] = uint8_t(200 - 30 * y);
+                p[3] = (x == 2 && y < m) ? 0 : 255;
+            }
+        const Exemplar e = make_exemplar(img, "mismatch");
+        const ArclengthCurve line(Curve2D{{{0, 20}, {2, 20}}, false});
+        const Ribbon r = build_ribbon(line, {.width = 6, .piece = 1, .scale = 6});
+        const DpProblem p = build_problem(e, r);
+        ASSERT_EQ(p.rows[0].right[0], glm::ivec2(1, 0));
+        EXPECT_EQ(seam_cost(p, 1, {0, 0}, {2, 0}), float(m) * kRibbonGamma) << m;
+    }
+}
+
+// Every assignment of valid positions, the cheapest total (closed: the terminal = the first).
+float brute_force_minimum(const DpProblem& p, const std::vector<std::vector<uint32_t>>& valid) {
+    const size_t rows = p.rows.size();
+    float best = std::numeric_limits<float>::infinity();
+    std::vector<size_t> idx(rows, 0);
+    while (true) {
+        std::vector<glm::ivec2> pos;
+        for (size_t r = 0; r < rows; ++r) pos.push_back(p.position(valid[r][idx[r]]));
+        if (!p.closed || pos.front() == pos.back()) best = std::min(best, path_cost(p, pos));
+        size_t r = 0;
+        while (r < rows && ++idx[r] == valid[r].size()) idx[r++] = 0;
+        if (r == rows) return best;
+    }
+}
+
+TEST(RibbonDp, TotalCostEqualsBruteForceMinimum) {
+    int solved = 0;
+    for (uint64_t seed = 1; seed <= 12; ++seed) {
+        const Exemplar e = test::banded_exemplar(10, 8, 2, 4, seed);
+        const ArclengthCurve curve(Curve2D{{{4, 10}, {10, 10}, {13, 6}}, false});
+        const Ribbon r = build_ribbon(curve, {.width = 7, .piece = 3, .scale = 7});
+        const DpProblem p = build_problem(e, r);
+        DpTables tables;
+        try {
+            tables = run_dp_reference(p);
+        } catch (const Error&) {
+            continue;  // a random exemplar without a valid position for some piece
+        }
+        const RibbonSolution s = solve_ribbon(p, run_dp_reference, seed);
+        EXPECT_EQ(s.total_cost, brute_force_minimum(p, tables.valid)) << "seed " << seed;
+        EXPECT_EQ(s.total_cost, path_cost(p, s.positions));
+        float sum = 0.0f;
+        for (float c : s.seam_costs) sum += c;
+        EXPECT_EQ(sum, s.total_cost);
+        for (size_t row = 0; row < s.positions.size(); ++row) EXPECT_TRUE(position_valid(p, row, s.positions[row]));
+        ++solved;
+    }
+    EXPECT_GE(solved, 6);
+}
+
+// The optimal cycle exactly: one DP per start position, the terminal piece held at it (§1.5:
+// "Finding the optimal cycle requires running several DPs, one per choice for the start").
+float optimal_cycle_cost(const DpProblem& p, const std::vector<uint32_t>& starts) {
+    float best = std::numeric_limits<float>::infinity();
+    for (uint32_t start : starts) {
+        DpRunOptions fixed;
+        fixed.first_position = start;
+        const DpTables t = run_dp_reference(p, fixed);
+        for (size_t j = 0; j < t.valid.back().size(); ++j)
+            if (t.valid.back()[j] == start) best = std::min(best, t.last_costs[j]);
+    }
+    return best;
+}
+
+TEST(RibbonDp, ClosedCurveEndsWhereItStarts) {
+    int exact = 0;
+    for (uint64_t seed = 1; seed <= 6; ++seed) {
+        const Exemplar e = test::banded_exemplar(16, 10, 3, 6, seed);
+        Curve2D circle{{}, true};
+        for (int i = 0; i < 90; ++i) {
+            const float a = 2.0f * float(M_PI) * float(i) / 90.0f;
+            circle.points.push_back({50.0f + 40.0f * std::cos(a), 50.0f + 40.0f * std::sin(a)});
+        }
+        const Ribbon r = build_ribbon(ArclengthCurve(circle), {.width = 8, .piece = 8, .scale = 8});
+        const DpProblem p = build_problem(e, r);
+        ASSERT_TRUE(p.closed);
+        ASSERT_EQ(p.rows.size(), r.pieces.size() + 1);  // the terminal piece
+        const RibbonSolution s = solve_ribbon(p, run_dp_reference, seed);
+        ASSERT_EQ(s.positions.size(), p.rows.size());
+        EXPECT_EQ(s.positions.back(), s.positions.front()) << "seed " << seed;
+        EXPECT_EQ(s.total_cost, path_cost(p, s.positions));
+        EXPECT_EQ(s.seam_costs.size(), r.pieces.size());  // the closing seam included
+        // A single DP approximates the optimal cycle (§1.5): never below the true optimum.
+        const float optimum = optimal_cycle_cost(p, run_dp_reference(p).valid[0]);
+        EXPECT_GE(s.total_cost, optimum);
+        EXPECT_LE(s.total_cost, 1.05f * optimum) << "seed " << seed;  // measured: within 3 %
+        exact += s.total_cost == optimum;
+    }
+    EXPECT_GE(exact, 2) << "the single-DP cycle should often be the optimal one";
+}
+
+TEST(RibbonDp, StraightCurveWithPeriodicExemplarIsAZeroCostChain) {
+    const int period = 8;
+    const Exemplar e = test::periodic_exemplar(48, 12, period);
+    const ArclengthCurve line(Curve2D{{{0, 30}, {160, 30}}, false});
+    const Ribbon r = build_ribbon(line, {.width = 12, .piece = 4, .scale = 12});
+    const DpProblem p = build_problem(e, r);
+    const RibbonSolution s = solve_ribbon(p, run_dp_reference, 7);
+    ASSERT_EQ(s.positions.size(), 40u);
+    EXPECT_EQ(s.total_cost, 0.0f);
+    for (size_t i = 1; i < s.positions.size(); ++i) {
+        const glm::ivec2 step = s.positions[i] - s.positions[i - 1];
+        EXPECT_EQ(step.y, 0) << i;
+        EXPECT_EQ(((step.x - 4) % period + period) % period, 0) << "piece " << i << " steps by " << step.x;
+    }
+    // The baselines do no better.
+    EXPECT_GE(path_cost(p, greedy_positions(p, run_dp_reference(p).valid, s.positions[0])), 0.0f);
+    EXPECT_GT(path_cost(p, random_positions(p, run_dp_reference(p).valid, 7)), 0.0f);
+}
+
+TEST(RibbonDp, SeedChoosesAmongEquallyCheapEnds) {
+    const Exemplar e = test::periodic_exemplar(48, 12, 8);
+    const ArclengthCurve line(Curve2D{{{0, 30}, {40, 30}}, false});
+    const DpProblem p = build_problem(e, build_ribbon(line, {.width = 12, .piece = 4, .scale = 12}));
+    const RibbonSolution a = solve_ribbon(p, run_dp_reference, 1), b = solve_ribbon(p, run_dp_reference, 1);
+    EXPECT_EQ(a.positions, b.positions);  // deterministic
+    bool differs = false;
+    for (uint64_t seed = 2; seed < 10 && !differs; ++seed)
+        differs = solve_ribbon(p, run_dp_reference, seed).positions != a.positions;
+    EXPECT_TRUE(differs);
+    EXPECT_EQ(solve_ribbon(p, run_dp_reference, 3).total_cost, 0.0f);
+}
+
+TEST(RibbonDp, NoValidPositionNamesThePiece) {
+    const Exemplar e = test::periodic_exemplar(48, 12, 8);
+    const ArclengthCurve line(Curve2D{{{0, 30}, {40, 30}}, false});
+    // s = 2 exemplar pixels across the ribbon: both rows are boundary rows, nothing fits.
+    const DpProblem p = build_problem(e, build_ribbon(line, {.width = 12, .piece = 4, .scale = 2}));
+    try {
+        (void)run_dp_reference(p);
+        ADD_FAILURE() << "no error";
+    } catch (const Error& err) {
+        EXPECT_NE(std::string(err.what()).find("ribbon piece 0"), std::string::npos) << err.what();
+        EXPECT_NE(std::string(err.what()).find("--scale"), std::string::npos) << err.what();
+    }
+}
+
+TEST(RibbonAvoidance, ReferenceMapFlagsFoldOversOnly) {
+    const ArclengthCurve line(Curve2D{{{10, 30}, {150, 30}}, false});
+    EXPECT_EQ(avoidance_map_reference(build_ribbon(line, {.width = 20, .piece = 5, .scale = 20}), 160, 60).count(), 0u);
+    Curve2D circle;  // radius 12 < b/2: every piece folds over on the inside
+    for (int i = 0; i < 64; ++i) {
+        const float a = 2.0f * float(M_PI) * float(i) / 64.0f;
+        circle.points.push_back({40.0f + 12.0f * std::cos(a), 40.0f + 12.0f * std::sin(a)});
+    }
+    circle.closed = true;
+    const Ribbon tight = build_ribbon(ArclengthCurve(circle), {.width = 30, .piece = 5, .scale = 20});
+    const ForbiddenMask m = avoidance_map_reference(tight, 80, 80);
+    EXPECT_GT(m.count(), 100u);
+    EXPECT_TRUE(m.at(40, 40));    // the centre is covered by many pieces
+    EXPECT_FALSE(m.at(40, 13));   // a point of the outer rim, covered once
+}
+
+TEST(RibbonStitch, LowersTheSummedSeamError) {
+    const Exemplar e = make_exemplar(generate_exemplar("zigzag", 64, 24, 3), "zigzag");
+    Curve2D wave;
+    for (int i = 0; i <= 40; ++i)
+        wave.points.push_back({10.0f + 4.0f * float(i), 60.0f + 22.0f * std::sin(float(i) * 0.15f)});
+    const Ribbon r = build_ribbon(ArclengthCurve(wave), {.width = 30, .piece = 8, .scale = 24});
+    const DpProblem p = build_problem(e, r);
+    const RibbonSolution s = solve_ribbon(p, run_dp_reference, 1);
+    const StitchResult st = stitch_reference(p, s.positions);
+    ASSERT_EQ(st.remap.size(), s.positions.size() - 1);
+    for (size_t i = 0; i < st.remap.size(); ++i) {
+        EXPECT_EQ(st.error_before[i], s.seam_costs[i]);  // the DP's D
+        EXPECT_LE(st.error_after[i], st.error_before[i]);
+        for (size_t k = 1; k < st.remap[i].size(); ++k) EXPECT_LE(st.remap[i][k - 1], st.remap[i][k]);  // monotone
+    }
+    EXPECT_LT(st.total_after(), st.total_before());
+}
+
+TEST(RibbonStitch, PerfectSeamsStayUndeformed) {
+    const Exemplar e = test::periodic_exemplar(48, 12, 8);
+    const ArclengthCurve line(Curve2D{{{0, 30}, {60, 30}}, false});
+    const DpProblem p = build_problem(e, build_ribbon(line, {.width = 12, .piece = 4, .scale = 12}));
+    const RibbonSolution s = solve_ribbon(p, run_dp_reference, 1);
+    const StitchResult st = stitch_reference(p, s.positions);
+    for (const auto& remap : st.remap)
+        for (size_t k = 0; k < remap.size(); ++k) EXPECT_EQ(remap[k], int(k));
+    EXPECT_EQ(st.total_after(), 0.0f);
+}
+
+TEST(RibbonExemplars, GeneratedPatternsSliceCleanly) {
+    for (const std::string& name : exemplar_names()) {
+        const ImageRGBA8 img = generate_exemplar(name, 128, 48, 1);
+        const Exemplar e = make_exemplar(img, name);
+        // Transparent margins above and below, ink in the middle, transparent texels black.
+        for (int x = 0; x < e.width; ++x) {
+            EXPECT_FALSE(texel_opaque(e.at(x, 0))) << name;
+            EXPECT_FALSE(texel_opaque(e.at(x, e.height - 1))) << name;
+        }
+        size_t ink = 0;
+        for (uint32_t t : e.texels) {
+            ink += texel_opaque(t);
+            if ((t >> 24) == 0) {
+                EXPECT_EQ(t, 0u) << name;
+            }
+        }
+        EXPECT_GT(ink, e.texels.size() / 10) << name;
+        EXPECT_EQ(generate_exemplar(name, 128, 48, 1).pixels, img.pixels) << name << " is deterministic";
+        EXPECT_NE(generate_exemplar(name, 128, 48, 2).pixels, img.pixels) << name << " varies with the seed";
+    }
+    EXPECT_THROW((void)generate_exemplar("velvet", 64, 64), Error);
+}
+
+}  // namespace
+}  // namespace lw

@@ -1,0 +1,231 @@
+// `linework ribbon` — a structured pattern synthesized along a curve (Zhou et al. 2013), and
+// `linework ribbon-exemplar` — the procedural exemplars it is shown with.
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <optional>
+
+#include <nlohmann/json.hpp>
+
+#include "commands.h"
+#include "core/error.h"
+#include "core/timer.h"
+#include "gpu/context.h"
+#include "io/image_io.h"
+#include "ribbon/avoidance.h"
+#include "ribbon/curve.h"
+#include "ribbon/exemplar_gen.h"
+#include "ribbon/problem.h"
+#include "ribbon/synthesize.h"
+
+namespace lw::cli {
+
+namespace {
+
+struct RibbonOptions {
+    std::string exemplar, curve, output, dump, avoid, size;
+    std::string device = "auto";
+    bool closed = false, stitch = false, transparent = false, reference = false, validation = false;
+    std::optional<float> piece, width, scale;
+    uint64_t seed = 1;
+};
+
+// Re-throws an engine error that does not name its file with the file in front.
+template <typename F>
+auto naming(const std::string& file, F&& f) {
+    try {
+        return f();
+    } catch (const Error& e) {
+        const std::string m = e.what();
+        if (m.rfind(file, 0) == 0) throw;
+        throw Error(file + ": " + m, e.exit_code());
+    }
+}
+
+void write_dump(const std::string& path, const RibbonSynthesis& s) {
+    using json = nlohmann::json;
+    json positions = json::array();
+    for (const glm::ivec2& u : s.solution.positions) positions.push_back({u.x, u.y});
+    const json dump = {{"pieces", s.solution.positions.size()},
+                       {"positions", positions},
+                       {"seam_costs", s.solution.seam_costs},
+                       {"total_cost", s.solution.total_cost},
+                       {"greedy_cost", s.greedy_cost},
+                       {"random_cost", s.random_cost},
+                       {"valid_counts", s.solution.valid_counts},
+                       {"row_ms", s.solution.row_ms}};
+    std::ofstream out(path);
+    out << dump.dump(1) << "\n";
+    if (!out) throw Error(path + ": cannot write the DP dump");
+}
+
+// Over white unless the background should stay transparent.
+ImageRGBA8 composite(const ImageRGBA8& image, bool transparent) {
+    if (transparent) return image;
+    ImageRGBA8 out = image;
+    for (size_t i = 0; i < out.pixels.size(); i += 4) {
+        const int a = out.pixels[i + 3];
+        for (size_t c = 0; c < 3; ++c) out.pixels[i + c] = uint8_t((out.pixels[i + c] * a + 255 * (255 - a) + 127) / 255);
+        out.pixels[i + 3] = 255;
+    }
+    return out;
+}
+
+int run_ribbon(const RibbonOptions& o) {
+    // Flags first (exit code 2), then files (exit code 1 naming the file).
+    std::optional<glm::ivec2> size;
+    if (!o.size.empty()) size = parse_size(o.size, "--size");
+    const DeviceChoice device = parse_device_choice(o.device);
+
+    const ImageRGBA8 image = read_image_rgba8(o.exemplar);
+    const Exemplar exemplar = make_exemplar(image, o.exemplar);
+    Curve2D curve_points = load_curve(o.curve);
+    curve_points.closed = curve_points.closed || o.closed;
+    const ArclengthCurve curve = naming(o.curve, [&] { return ArclengthCurve(curve_points); });
+
+    RibbonSynthesisDesc desc;
+    desc.params.scale = o.scale.value_or(default_ribbon_scale(exemplar));
+    desc.params.width = o.width.value_or(desc.params.scale);
+    desc.params.piece = o.piece.value_or(std::max(1.0f, std::round(desc.params.width / 2.0f)));
+    desc.seed = o.seed;
+    desc.stitch = o.stitch;
+    desc.reference = o.reference;
+    const Ribbon ribbon = build_ribbon(curve, desc.params);
+    if (!size) {
+        const glm::vec2 hi = ribbon.max_corner();
+        size = glm::ivec2(std::max(1, int(std::ceil(hi.x)) + 2), std::max(1, int(std::ceil(hi.y)) + 2));
+        if (size->x > 16384 || size->y > 16384) throw Error(o.curve + ": the curve reaches past 16384 pixels; give --size");
+    }
+    desc.width = size->x;
+    desc.height = size->y;
+    ForbiddenMask user;
+    if (!o.avoid.empty()) {
+        user = forbidden_from_image(read_image_rgba8(o.avoid));
+        if (user.width != size->x || user.height != size->y)
+            throw Error(o.avoid + ": the avoidance map is " + std::to_string(user.width) + "x" +
+                        std::to_string(user.height) + " but the output is " + std::to_string(size->x) + "x" +
+                        std::to_string(size->y));
+        desc.user_forbidden = &user;
+    }
+
+    const bool validation = o.validation || validation_from_environment();
+    Context ctx({.device = device, .validation = validation});
+    std::printf("device: %s\n", ctx.info().describe().c_str());
+    std::printf("exemplar: %s (%dx%d), curve: %s (%.1f px, %s)\n", o.exemplar.c_str(), exemplar.width,
+                exemplar.height, o.curve.c_str(), double(curve.length()), curve.closed() ? "closed" : "open");
+    std::printf("ribbon: width b = %g px, piece δ = %g px, s = %g exemplar px across (C = %d), %zu pieces%s, size %dx%d\n",
+                double(desc.params.width), double(desc.params.piece), double(desc.params.scale), ribbon.samples,
+                ribbon.pieces.size(), curve.closed() ? " + terminal" : "", size->x, size->y);
+    std::fflush(stdout);
+
+    Timer progress_timer, total_timer;
+    desc.progress = [&](size_t row, size_t rows, uint32_t valid) {
+        if (row + 1 == rows || progress_timer.elapsed_ms() > 2000.0) {
+            std::fprintf(stderr, "ribbon: row %zu/%zu, %u valid positions, %.1f s\n", row + 1, rows, valid,
+                         total_timer.elapsed_ms() / 1000.0);
+            progress_timer.reset();
+        }
+    };
+    const RibbonSynthesis s = synthesize_ribbon(ctx, exemplar, curve, desc);
+
+    double mean_row = 0.0;
+    for (double ms : s.solution.row_ms) mean_row += ms;
+    if (!s.solution.row_ms.empty()) mean_row /= double(s.solution.row_ms.size());
+    std::printf("avoidance: %zu forbidden pixels\n", s.forbidden.count());
+    std::printf("dp (%s): %.0f ms, %.2f ms per row; seam cost %.1f (greedy %.1f, random %.1f)%s\n",
+                o.reference ? "C++ reference" : "GPU", s.dp_ms, mean_row, double(s.solution.total_cost),
+                double(s.greedy_cost), double(s.random_cost),
+                curve.closed() ? (s.solution.closed_by_first_dp ? "; cycle from one DP" : "; cycle from a fixed-start DP")
+                               : "");
+    if (s.stitch)
+        std::printf("stitch: seam error %.1f -> %.1f (%.0f ms)\n", double(s.stitch->total_before()),
+                    double(s.stitch->total_after()), s.stitch_ms);
+    write_png(o.output, composite(s.image, o.transparent));
+    std::printf("wrote %s\n", o.output.c_str());
+    if (!o.dump.empty()) {
+        write_dump(o.dump, s);
+        std::printf("wrote %s\n", o.dump.c_str());
+    }
+    if (validation && !ctx.validation_messages().empty()) {
+        std::fprintf(stderr, "linework: error: %zu validation message(s); see above\n", ctx.validation_messages().size());
+        return 1;
+    }
+    return 0;
+}
+
+struct ExemplarOptions {
+    std::string name, output, size = "192x64";
+    uint64_t seed = 1;
+};
+
+int run_exemplar(const ExemplarOptions& o) {
+    const glm::ivec2 size = parse_size(o.size, "--size");
+    const ImageRGBA8 image = generate_exemplar(o.name, size.x, size.y, o.seed);
+    write_png(o.output, image);
+    std::printf("wrote %s (%s, %dx%d, seed %llu)\n", o.output.c_str(), o.name.c_str(), size.x, size.y,
+                static_cast<unsigned long long>(o.seed));
+    return 0;
+}
+
+}  // namespace
+
+Runner add_ribbon_command(CLI::App& app) {
+    auto o = std::make_shared<RibbonOptions>();
+    CLI::App* cmd = app.add_subcommand(
+        "ribbon",
+        "Synthesize a structured pattern along a curve (Zhou, Lasram & Lefebvre 2013).\n"
+        "The ribbon of width b around the curve is cut into pieces of length δ; each piece\n"
+        "copies a part of the exemplar (rotated to follow the curve, never stretched), chosen\n"
+        "by dynamic programming on the GPU so that neighbouring pieces match along their\n"
+        "shared edge. Where the ribbon folds over or overlaps itself the pattern is kept out.\n"
+        "Example: linework ribbon scenes/exemplars/chain.png --curve scenes/curves/wave.json -o chain.png");
+    cmd->add_option("exemplar", o->exemplar, "Exemplar image: RGBA, alpha outlines the pattern (alpha >= 128 is ink)")
+        ->required();
+    cmd->add_option("--curve", o->curve,
+                    "Curve in output pixels: JSON {\"points\": [[x, y], ...], \"closed\": bool} or an SVG\n"
+                    "file whose first <path> uses M/L/C/Z")
+        ->required();
+    cmd->add_option("-o,--output", o->output, "Output PNG")->required();
+    cmd->add_flag("--closed", o->closed, "Close the curve: the last piece connects back to the first (§1.5)");
+    cmd->add_flag("--stitch", o->stitch, "Deform pieces so that their edges align better (§3.2, P = 32)");
+    cmd->add_option("--piece", o->piece, "Piece length δ along the curve, output pixels (default: b / 2; much shorter pieces\n"
+                    "let the DP repeat near-uniform stretches of the exemplar)")
+        ->check(CLI::PositiveNumber);
+    cmd->add_option("--width", o->width, "Ribbon width b, output pixels (default: s, one exemplar pixel per pixel)")
+        ->check(CLI::PositiveNumber);
+    cmd->add_option("--scale", o->scale,
+                    "s: exemplar pixels across the ribbon; the pattern is drawn at b / s output pixels per\n"
+                    "exemplar pixel (default: the height of the exemplar's band of opaque rows + 2 + 30 %:\n"
+                    "the slack is how far the pattern may wander from the curve)")
+        ->check(CLI::PositiveNumber);
+    cmd->add_option("--seed", o->seed, "Chooses among equally good results, and the random baseline")
+        ->capture_default_str();
+    cmd->add_option("--size", o->size, "Output size WxH (default: the ribbon's extent from the origin)");
+    cmd->add_option("--dump-dp", o->dump,
+                    "Write the DP result as JSON: pieces, positions [[u, v], ...], seam_costs, total_cost,\n"
+                    "greedy_cost, random_cost, valid_counts, row_ms");
+    cmd->add_option("--avoid", o->avoid, "Avoidance map (PNG of the output size): alpha >= 128 is forbidden (§3.1)");
+    cmd->add_flag("--transparent", o->transparent, "Keep the transparent background (default: over white)");
+    cmd->add_flag("--reference", o->reference, "Run the DP and stitching with the plain C++ reference instead");
+    cmd->add_option("--device", o->device, "auto, cpu (lavapipe), gpu, or an index from `linework devices`")
+        ->capture_default_str();
+    cmd->add_flag("--validation", o->validation, "Enable the Khronos validation layer (also LINEWORK_VALIDATION=1)");
+    return [o] { return run_ribbon(*o); };
+}
+
+Runner add_ribbon_exemplar_command(CLI::App& app) {
+    auto o = std::make_shared<ExemplarOptions>();
+    CLI::App* cmd = app.add_subcommand(
+        "ribbon-exemplar",
+        "Generate a structured-pattern exemplar for `linework ribbon` from signed distances:\n"
+        "chain, lace, zigzag, beads or rope (sizes and spacings vary with the seed).");
+    cmd->add_option("name", o->name, "Pattern")->required()->check(CLI::IsMember(exemplar_names()));
+    cmd->add_option("-o,--output", o->output, "Output PNG")->required();
+    cmd->add_option("--size", o->size, "Size WxH")->capture_default_str();
+    cmd->add_option("--seed", o->seed, "Variation seed")->capture_default_str();
+    return [o] { return run_exemplar(*o); };
+}
+
+}  // namespace lw::cli
