@@ -257,17 +257,31 @@ TEST(RibbonDp, SeedChoosesAmongEquallyCheapEnds) {
     EXPECT_EQ(solve_ribbon(p, run_dp_reference, 3).total_cost, 0.0f);
 }
 
-TEST(RibbonDp, NoValidPositionNamesThePiece) {
+TEST(RibbonDp, TooTightPiecesRelaxTheSlicingRule) {
     const Exemplar e = test::periodic_exemplar(48, 12, 8);
     const ArclengthCurve line(Curve2D{{{0, 30}, {40, 30}}, false});
-    // s = 2 exemplar pixels across the ribbon: both rows are boundary rows, nothing fits.
+    // s = 2 exemplar pixels across the ribbon: no piece can hold the 6-row band, nor keep its
+    // edges off the pattern; the rows fall back to letting the piece cut the pattern.
     const DpProblem p = build_problem(e, build_ribbon(line, {.width = 12, .piece = 4, .scale = 2}));
+    const RibbonSolution s = solve_ribbon(p, run_dp_reference, 1);
+    ASSERT_EQ(s.rules.size(), p.rows.size());
+    for (ValidityRule r : s.rules) EXPECT_EQ(r, ValidityRule::Any);
+    // With room for the band, every row keeps the strict rule.
+    const DpProblem wide = build_problem(e, build_ribbon(line, {.width = 12, .piece = 4, .scale = 12}));
+    for (ValidityRule r : solve_ribbon(wide, run_dp_reference, 1).rules) EXPECT_EQ(r, ValidityRule::Band);
+}
+
+TEST(RibbonDp, NoValidPositionNamesThePiece) {
+    const Exemplar e = test::periodic_exemplar(48, 12, 8);
+    const ArclengthCurve line(Curve2D{{{0, 30}, {130, 30}}, false});
+    // Pieces 60 exemplar pixels long in a 48-pixel-wide exemplar.
+    const DpProblem p = build_problem(e, build_ribbon(line, {.width = 12, .piece = 60, .scale = 12}));
     try {
         (void)run_dp_reference(p);
         ADD_FAILURE() << "no error";
     } catch (const Error& err) {
         EXPECT_NE(std::string(err.what()).find("ribbon piece 0"), std::string::npos) << err.what();
-        EXPECT_NE(std::string(err.what()).find("--scale"), std::string::npos) << err.what();
+        EXPECT_NE(std::string(err.what()).find("--piece"), std::string::npos) << err.what();
     }
 }
 

@@ -1,5 +1,6 @@
 // Ribbon patterns on the GPU (lavapipe, validation layer on): every kernel of §2 against the
 // C++ reference, the prefix scan over many blocks, stitching, the avoidance map and drawing.
+#include <algorithm>
 #include <cmath>
 
 #include "ribbon/dp_gpu.h"
@@ -67,6 +68,7 @@ TEST_F(GpuTest, RibbonCostTablesAndPositionsEqualTheReference) {
     EXPECT_EQ(a.positions, b.positions);
     EXPECT_EQ(a.total_cost, b.total_cost);
     EXPECT_EQ(a.valid_counts, b.valid_counts);
+    EXPECT_EQ(a.rules, b.rules);
     EXPECT_EQ(b.row_ms.size(), p.rows.size() - 1);
 }
 
@@ -78,6 +80,24 @@ TEST_F(GpuTest, RibbonChunkedCostTableGivesTheSameResult) {
     DpRunOptions small;
     small.max_table_bytes = 64 << 10;  // several chunks per row
     expect_same_tables(gpu.run(p), gpu.run(p, small));
+}
+
+TEST_F(GpuTest, RibbonRelaxedRowsOnGpuEqualReference) {
+    // A hairpin tighter than the pieces can follow: some rows need a looser slicing rule.
+    Curve2D hairpin;
+    for (int i = 0; i <= 20; ++i) hairpin.points.push_back({10.0f + 3.0f * float(i), 20.0f});
+    for (int k = 1; k < 12; ++k)
+        hairpin.points.push_back({70.0f + 9.0f * std::sin(float(M_PI) * float(k) / 12.0f),
+                                  29.0f - 9.0f * std::cos(float(M_PI) * float(k) / 12.0f)});
+    for (int i = 0; i <= 20; ++i) hairpin.points.push_back({70.0f - 3.0f * float(i), 38.0f});
+    const Exemplar e = make_exemplar(generate_exemplar("rope", 64, 24, 2), "rope");
+    const DpProblem p = build_problem(e, build_ribbon(ArclengthCurve(hairpin), {.width = 16, .piece = 10, .scale = 24}));
+    RibbonDpGpu gpu(ctx());
+    const RibbonSolution a = solve_ribbon(p, run_dp_reference, 3), b = solve_ribbon(p, gpu.runner(), 3);
+    EXPECT_TRUE(std::any_of(a.rules.begin(), a.rules.end(), [](ValidityRule r) { return r != ValidityRule::Band; }));
+    EXPECT_EQ(a.rules, b.rules);
+    EXPECT_EQ(a.positions, b.positions);
+    EXPECT_EQ(a.total_cost, b.total_cost);
 }
 
 TEST_F(GpuTest, RibbonClosedCurveOnGpuEqualsReference) {

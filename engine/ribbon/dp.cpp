@@ -39,6 +39,7 @@ RibbonSolution make_solution(const DpProblem& problem, const DpTables& t, uint32
     for (size_t r = 1; r < idx.size(); ++r) s.seam_costs.push_back(seam_cost(problem, r, s.positions[r - 1], s.positions[r]));
     s.total_cost = t.last_costs[end];
     for (const auto& v : t.valid) s.valid_counts.push_back(uint32_t(v.size()));
+    s.rules = t.rules;
     s.row_ms = t.row_ms;
     return s;
 }

@@ -40,6 +40,7 @@ struct DpRunOptions {
 struct DpTables {
     std::vector<std::vector<uint32_t>> valid;  // per row: valid position indices, ascending
     std::vector<std::vector<uint32_t>> back;   // per row (row 0 empty): argmin into the previous row's list
+    std::vector<ValidityRule> rules;              // per row: the slicing rule its valid positions passed
     std::vector<float> last_costs;             // P[last row, ·], parallel to valid.back()
     std::vector<double> row_ms;                // rows 1..: wall time per row
     std::vector<std::vector<float>> cost_tables;  // keep_cost_tables: [row][v · V_row + u]
@@ -52,6 +53,7 @@ struct RibbonSolution {
     std::vector<float> seam_costs;      // D between consecutive rows
     float total_cost = 0.0f;            // the DP's P at the chosen end (= Σ seam_costs, summed in order)
     std::vector<uint32_t> valid_counts;
+    std::vector<ValidityRule> rules;       // per row (problem.h); rows above Band are reported
     std::vector<double> row_ms;
     bool closed_by_first_dp = true;     // closed curves: false when the fixed-start DP was needed
 };

@@ -22,7 +22,7 @@ struct FindValidPush {
     int32_t width, height, samples, count;
     int32_t top_offset, top_count, interior_offset, interior_count;
     int32_t forbidden_offset, forbidden_count, min_dx, max_dx;
-    int32_t require_ink, bottom_offset, bottom_count, pad;
+    int32_t touches_forbidden, bottom_offset, bottom_count, rule;
     int32_t band_top, band_bottom, pad1, pad2;
 };
 struct CompactPush {
@@ -141,12 +141,13 @@ DpTables RibbonDpGpu::run(const DpProblem& problem, const DpRunOptions& options)
     Buffer count_readback = readback_buffer(ctx, 16, "ribbon valid count readback");
     Buffer row_readback = readback_buffer(ctx, 3 * row_bytes, "ribbon row readback");
 
-    auto record_find_and_compact = [&](VkCommandBuffer cmd, size_t row, const Buffer& valid_out) {
+    auto record_find_and_compact = [&](VkCommandBuffer cmd, size_t row, const Buffer& valid_out, ValidityRule rule) {
         const PieceProbes& p = problem.rows[row];
         const RowOffsets& o = offsets[row];
         const FindValidPush fv{e.width, e.height, C, int32_t(U), o.top, o.top_count, o.interior,
                                o.interior_count, o.forbidden, o.forbidden_count, p.min_dx, p.max_dx,
-                               p.require_ink ? 1 : 0, o.bottom, o.bottom_count, 0, problem.band.x, problem.band.y, 0, 0};
+                               p.touches_forbidden ? 1 : 0, o.bottom, o.bottom_count, int32_t(rule),
+                               problem.band.x, problem.band.y, 0, 0};
         find_valid_.dispatch(ctx, cmd, {&exemplar, &probe_buffer, &flags}, &fv, groups(U, RIBBON_GROUP));
         barrier(cmd);
         for (uint32_t phase = 0; phase < 3; ++phase) {
@@ -170,15 +171,26 @@ DpTables RibbonDpGpu::run(const DpProblem& problem, const DpRunOptions& options)
         return out;
     };
 
+    // Rows where no position passes are searched again under a looser slicing rule (problem.h).
+    auto relax = [&](size_t row, const Buffer& valid_out, uint32_t& count, ValidityRule& rule) {
+        while (count == 0 && rule != ValidityRule::Any) {  // Band → Empty → Edges → Any
+            rule = ValidityRule(int(rule) + 1);
+            ctx.submit_and_wait([&](VkCommandBuffer cmd) { record_find_and_compact(cmd, row, valid_out, rule); });
+            count = read_count();
+        }
+        if (count == 0) throw Error(no_valid_position_message(problem, row));
+    };
+
     DpTables t;
     t.valid.resize(rows);
     t.back.resize(rows);
+    t.rules.assign(rows, ValidityRule::Band);
     if (options.keep_cost_tables) t.cost_tables.resize(rows);
 
     // Row 0: valid positions, P[0, ·] = 0.
-    ctx.submit_and_wait([&](VkCommandBuffer cmd) { record_find_and_compact(cmd, 0, valid[0]); });
+    ctx.submit_and_wait([&](VkCommandBuffer cmd) { record_find_and_compact(cmd, 0, valid[0], ValidityRule::Band); });
     uint32_t count = read_count();
-    if (count == 0) throw Error(no_valid_position_message(problem, 0));
+    relax(0, valid[0], count, t.rules[0]);
     ctx.submit_and_wait([&](VkCommandBuffer cmd) {
         copy(cmd, valid[0], row_readback, VkDeviceSize(count) * 4);
         vkCmdFillBuffer(cmd, costs[0].get(), 0, VkDeviceSize(count) * 4, 0u);  // 0.0f
@@ -217,10 +229,10 @@ DpTables RibbonDpGpu::run(const DpProblem& problem, const DpRunOptions& options)
             const ExtractPush ep{e.width, e.height, C, int32_t(prev_count), offsets[i - 1].right, 0, 0, 0};
             extract_.dispatch(ctx, cmd, {&exemplar, &probe_buffer, &valid[prev], &columns}, &ep,
                               groups(prev_count, RIBBON_GROUP));
-            record_find_and_compact(cmd, i, valid[cur]);
+            record_find_and_compact(cmd, i, valid[cur], ValidityRule::Band);
         });
         count = read_count();
-        if (count == 0) throw Error(no_valid_position_message(problem, i));
+        relax(i, valid[cur], count, t.rules[i]);
 
         // The table in chunks of new-piece positions, each under max_table_bytes.
         const size_t per_chunk = std::max<size_t>(1, options.max_table_bytes / 4 / prev_count);

@@ -10,14 +10,28 @@
 
 namespace lw {
 
-std::vector<uint32_t> find_valid_positions(const DpProblem& problem, size_t row) {
+std::vector<uint32_t> find_valid_positions(const DpProblem& problem, size_t row, ValidityRule rule) {
     std::vector<uint32_t> flags(problem.position_count());
     parallel_for(flags.size(), 1024, [&](size_t begin, size_t end, size_t) {
         for (size_t p = begin; p < end; ++p)
-            flags[p] = position_valid(problem, row, problem.position(uint32_t(p))) ? 1u : 0u;
+            flags[p] = position_valid(problem, row, problem.position(uint32_t(p)), rule) ? 1u : 0u;
     });
     return flags;
 }
+
+namespace {
+
+// The valid positions of `row` under the strictest slicing rule that leaves any.
+std::vector<uint32_t> valid_positions(const DpProblem& problem, size_t row, ValidityRule& rule) {
+    for (int r = 0; r <= int(ValidityRule::Any); ++r) {
+        rule = ValidityRule(r);
+        std::vector<uint32_t> valid = compact_valid_positions(find_valid_positions(problem, row, rule));
+        if (!valid.empty()) return valid;
+    }
+    throw Error(no_valid_position_message(problem, row));
+}
+
+}  // namespace
 
 std::vector<uint32_t> compact_valid_positions(const std::vector<uint32_t>& flags) {
     std::vector<uint32_t> valid;
@@ -87,9 +101,9 @@ std::string no_valid_position_message(const DpProblem& problem, size_t row) {
     const bool terminal = problem.closed && row + 1 == problem.rows.size();
     return "ribbon piece " + std::to_string(row) + (terminal ? " (terminal)" : "") + " of " +
            std::to_string(problem.rows.size()) +
-           ": no valid position in the exemplar — the pattern must fit between the piece's top and bottom "
-           "edges (C = " + std::to_string(problem.samples) +
-           " exemplar pixels across the ribbon: try a larger --scale or a shorter --piece)";
+           ": no valid position in the exemplar, even letting the piece cut the pattern — it must fit in E "
+           "horizontally and keep ink off forbidden pixels (C = " + std::to_string(problem.samples) +
+           " exemplar pixels across the ribbon: try a shorter --piece or another --scale)";
 }
 
 DpTables run_dp_reference(const DpProblem& problem, const DpRunOptions& options) {
@@ -97,23 +111,22 @@ DpTables run_dp_reference(const DpProblem& problem, const DpRunOptions& options)
     const size_t rows = problem.rows.size();
     t.valid.resize(rows);
     t.back.resize(rows);
+    t.rules.resize(rows);
     if (options.keep_cost_tables) t.cost_tables.resize(rows);
 
-    t.valid[0] = compact_valid_positions(find_valid_positions(problem, 0));
+    t.valid[0] = valid_positions(problem, 0, t.rules[0]);
     if (options.first_position) {
         if (std::find(t.valid[0].begin(), t.valid[0].end(), *options.first_position) == t.valid[0].end())
             throw Error("ribbon: the fixed first position is not valid for piece 0");
         t.valid[0] = {*options.first_position};
     }
-    if (t.valid[0].empty()) throw Error(no_valid_position_message(problem, 0));
     std::vector<float> costs(t.valid[0].size(), 0.0f), next;
     if (options.progress) options.progress(0, rows, uint32_t(t.valid[0].size()));
 
     for (size_t i = 1; i < rows; ++i) {
         Timer timer;
         const std::vector<uint32_t> right = extract_columns(problem, i - 1, t.valid[i - 1]);
-        t.valid[i] = compact_valid_positions(find_valid_positions(problem, i));
-        if (t.valid[i].empty()) throw Error(no_valid_position_message(problem, i));
+        t.valid[i] = valid_positions(problem, i, t.rules[i]);
         std::vector<float> table = compute_cost_table(problem, right, t.valid[i]);
         update_table_row(costs, table, t.valid[i].size(), next, t.back[i]);
         costs.swap(next);

@@ -19,7 +19,8 @@
 namespace lw {
 
 // findValidPositions: one flag per position of U (problem.h lists the four conditions).
-[[nodiscard]] std::vector<uint32_t> find_valid_positions(const DpProblem& problem, size_t row);
+[[nodiscard]] std::vector<uint32_t> find_valid_positions(const DpProblem& problem, size_t row,
+                                                         ValidityRule rule = ValidityRule::Band);
 // compactValidPositions: the indices of the set flags, ascending (an exclusive prefix sum
 // of the flags gives each its slot; sequential here).
 [[nodiscard]] std::vector<uint32_t> compact_valid_positions(const std::vector<uint32_t>& flags);

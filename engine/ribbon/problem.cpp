@@ -89,7 +89,7 @@ PieceProbes piece_probes(const Ribbon& ribbon, size_t i, const ForbiddenMask* fo
                 const glm::dvec2 c(px + 0.5, py + 0.5);
                 if (!inside_triangle(c, c0, 0.02) && !inside_triangle(c, c1, 0.02)) continue;
                 if (!forbidden->at(px, py)) continue;
-                probes.require_ink = false;
+                probes.touches_forbidden = true;
                 const glm::dvec2 e = e0(glm::vec2(c)) + glm::dvec2(0.5, 0.0);  // as the drawing reads
                 const double margin = 2e-3;
                 for (int dy = -1; dy <= 1; ++dy)
@@ -143,7 +143,7 @@ DpProblem build_problem(const Exemplar& exemplar, const Ribbon& ribbon, const Fo
     return problem;
 }
 
-bool position_valid(const DpProblem& problem, size_t row, glm::ivec2 u) {
+bool position_valid(const DpProblem& problem, size_t row, glm::ivec2 u, ValidityRule rule) {
     const Exemplar& e = *problem.exemplar;
     const PieceProbes& p = problem.rows[row];
     auto any_opaque = [&](const std::vector<glm::ivec2>& list) {
@@ -151,19 +151,24 @@ bool position_valid(const DpProblem& problem, size_t row, glm::ivec2 u) {
             if (texel_opaque(e.at(u.x + o.x, u.y + o.y))) return true;
         return false;
     };
-    // 4. inside E horizontally
+    // 4. inside E horizontally; 3. no opaque texel on a forbidden pixel
     if (u.x + p.min_dx < 0 || u.x + p.max_dx >= e.width) return false;
-    // 3. no opaque texel on a forbidden pixel
     if (any_opaque(p.forbidden)) return false;
-    // 1. the piece slices the pattern completely
-    bool slices = true;
-    for (const glm::ivec2& o : p.top)
-        if (u.y + o.y >= problem.band.x) slices = false;
-    for (const glm::ivec2& o : p.bottom)
-        if (u.y + o.y <= problem.band.y) slices = false;
-    // 2. and is not empty; a piece touching a forbidden region may instead be empty
-    const bool ink = any_opaque(p.interior);
-    return p.require_ink ? slices && ink : (slices || !ink);
+    switch (rule) {
+        case ValidityRule::Band:  // 1. and 2.
+            for (const glm::ivec2& o : p.top)
+                if (u.y + o.y >= problem.band.x) return false;
+            for (const glm::ivec2& o : p.bottom)
+                if (u.y + o.y <= problem.band.y) return false;
+            return any_opaque(p.interior);
+        case ValidityRule::Empty:
+            return p.touches_forbidden && u == glm::ivec2(-p.min_dx, -problem.samples);
+        case ValidityRule::Edges:
+            return !any_opaque(p.top) && !any_opaque(p.bottom) && any_opaque(p.interior);
+        case ValidityRule::Any:
+            return true;
+    }
+    return false;
 }
 
 }  // namespace lw

@@ -24,14 +24,23 @@
 //     keeps what the paper's inset shows (the valid piece holds the pattern's full height)
 //     and leaves the pattern the freedom to diverge from the curve by the ribbon's slack,
 //     C − band height;
-//  2. it is not empty: some texel inside it is opaque — except that a piece touching a
-//     forbidden region may instead be entirely empty (our choice, see below);
+//  2. it is not empty: some texel inside it is opaque;
 //  3. it does not put an opaque texel on a forbidden canvas pixel (§3.1);
 //  4. it stays inside E horizontally (our addition: a piece reaching past the exemplar's side
 //     would copy a pattern cut by the image border, a cut the edge costs cannot see).
-// The exception lets a piece that lies wholly in an overlap (a curve crossing itself) take an
-// empty position instead of leaving the row with no valid position at all; elsewhere the
-// seam costs (γ per opaque pixel facing a transparent one) keep the pattern going.
+//
+// Some pieces have no such position: one lying in an overlap (a curve crossing itself)
+// cannot both carry ink and keep it off the forbidden pixels, and where a bend is too tight
+// the tilted edges sweep across the pattern. Rather than fail on such curves, that row is
+// searched again under looser rules (`ValidityRule`, each only when the stricter found
+// nothing, so that the DP never trades ink for a free gap where ink was possible):
+//  Empty — a piece touching a forbidden region may be empty, placed wholly above E
+//          (u = (−min_dx, −C)) where every texel is transparent black: one position stands
+//          for all empty placements, which would all cost the same (the paper's Fig. 3
+//          shows such gaps at overlaps);
+//  Edges — the paper's literal test for 1 (the edges meet no opaque texel), with 2;
+//  Any   — 3 and 4 only: the piece may cut the pattern.
+// The rows that needed one are reported (DpTables::rules), so that the user can shorten δ.
 #pragma once
 
 #include <cstdint>
@@ -49,10 +58,10 @@ struct PieceProbes {
     std::vector<glm::ivec2> right;      // C texel offsets of the right-edge samples R̄ (tilted edge)
     std::vector<glm::ivec2> top;        // texels along the top edge: must lie above the band
     std::vector<glm::ivec2> bottom;     // texels along the bottom edge: must lie below the band
-    std::vector<glm::ivec2> interior;   // texels inside the piece: one must be opaque (unless !require_ink)
+    std::vector<glm::ivec2> interior;   // texels inside the piece: one must be opaque
     std::vector<glm::ivec2> forbidden;  // texels drawn on forbidden canvas pixels: must be transparent
     int min_dx = 0, max_dx = 0;         // horizontal extent of every texel above
-    bool require_ink = true;            // false when the piece covers a forbidden pixel: empty is valid too
+    bool touches_forbidden = false;     // the piece covers a forbidden pixel (ValidityRule::Empty applies)
 };
 
 struct DpProblem {
@@ -84,7 +93,12 @@ struct DpProblem {
 // The probes of one piece (exposed for tests).
 [[nodiscard]] PieceProbes piece_probes(const Ribbon& ribbon, size_t piece, const ForbiddenMask* forbidden);
 
+// The validity tests in order of preference (see above); each row uses the first that
+// leaves a valid position.
+enum class ValidityRule : int { Band = 0, Empty = 1, Edges = 2, Any = 3 };
+
 // Validity of position u for `row`, the test of findValidPositions.
-[[nodiscard]] bool position_valid(const DpProblem& problem, size_t row, glm::ivec2 u);
+[[nodiscard]] bool position_valid(const DpProblem& problem, size_t row, glm::ivec2 u,
+                                  ValidityRule rule = ValidityRule::Band);
 
 }  // namespace lw

@@ -139,6 +139,24 @@ int run_ribbon(const RibbonOptions& o) {
                 double(s.greedy_cost), double(s.random_cost),
                 curve.closed() ? (s.solution.closed_by_first_dp ? "; cycle from one DP" : "; cycle from a fixed-start DP")
                                : "");
+    // Rows that needed a looser validity rule (engine/ribbon/problem.h).
+    std::string cut, empty;
+    size_t cut_count = 0, empty_count = 0;
+    for (size_t r = 0; r < s.solution.rules.size(); ++r) {
+        if (s.solution.rules[r] == ValidityRule::Empty && empty_count++ < 8)
+            empty += (empty.empty() ? "" : ", ") + std::to_string(r);
+        if (s.solution.rules[r] > ValidityRule::Empty && cut_count++ < 8)
+            cut += (cut.empty() ? "" : ", ") + std::to_string(r);
+    }
+    if (empty_count > 0)
+        std::printf("avoidance: %zu pieces (%s%s) lie where no ink can avoid the overlap and are left empty\n",
+                    empty_count, empty.c_str(), empty_count > 8 ? ", …" : "");
+    std::fflush(stdout);
+    if (cut_count > 0)
+        std::fprintf(stderr,
+                     "ribbon: warning: %zu of %zu pieces (%s%s) cannot hold the whole pattern where the curve bends "
+                     "this tightly and may cut it; a shorter --piece or a wider --scale helps\n",
+                     cut_count, s.solution.rules.size(), cut.c_str(), cut_count > 8 ? ", …" : "");
     if (s.stitch)
         std::printf("stitch: seam error %.1f -> %.1f (%.0f ms)\n", double(s.stitch->total_before()),
                     double(s.stitch->total_after()), s.stitch_ms);
