@@ -109,30 +109,10 @@ glm::mat4 trs_matrix(const glm::vec3& t, const glm::quat& r, const glm::vec3& s)
 // World transforms from the pose's local TRS (matrix nodes use their matrix), parents first.
 // Guarded like world_transforms: a bad parent index makes a root, a cycle cannot loop.
 void compose_world(const Model& model, Pose& pose) {
-    const size_t count = model.nodes.size();
-    pose.world.assign(count, glm::mat4(1.0f));
-    std::vector<char> done(count, 0);
-    std::vector<size_t> chain;
-    for (size_t start = 0; start < count; ++start) {
-        chain.clear();
-        for (size_t n = start; !done[n] && chain.size() <= count;) {
-            chain.push_back(n);
-            const int parent = model.nodes[n].parent;
-            if (parent < 0 || static_cast<size_t>(parent) >= count) break;
-            n = static_cast<size_t>(parent);
-        }
-        for (auto it = chain.rbegin(); it != chain.rend(); ++it) {
-            if (done[*it]) continue;
-            const Node& node = model.nodes[*it];
-            const glm::mat4 local =
-                node.has_matrix ? node.matrix : trs_matrix(pose.translation[*it], pose.rotation[*it], pose.scale[*it]);
-            const int parent = node.parent;
-            const bool has_parent =
-                parent >= 0 && static_cast<size_t>(parent) < count && done[static_cast<size_t>(parent)];
-            pose.world[*it] = has_parent ? pose.world[static_cast<size_t>(parent)] * local : local;
-            done[*it] = 1;
-        }
-    }
+    pose.world = lw::compose_world(model, [&](size_t n) {
+        const Node& node = model.nodes[n];
+        return node.has_matrix ? node.matrix : trs_matrix(pose.translation[n], pose.rotation[n], pose.scale[n]);
+    });
 }
 
 std::string clip_list(const Model& model) {

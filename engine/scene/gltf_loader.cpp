@@ -20,6 +20,8 @@
 #include "scene/gltf_detail.h"
 #include "scene/model.h"
 
+#include <functional>
+
 namespace lw {
 
 namespace gltf_detail {
@@ -389,7 +391,7 @@ glm::mat4 Node::local_transform() const {
     return m;
 }
 
-std::vector<glm::mat4> world_transforms(const Model& model) {
+std::vector<glm::mat4> compose_world(const Model& model, const std::function<glm::mat4(size_t node)>& local_of) {
     // Iterative and guarded: a hand-built Model need not have gone through validation, so a
     // bad parent index is treated as a root and a parent cycle cannot loop forever.
     const size_t count = model.nodes.size();
@@ -411,12 +413,16 @@ std::vector<glm::mat4> world_transforms(const Model& model) {
             const int parent = model.nodes[*it].parent;
             const bool has_parent =
                 parent >= 0 && static_cast<size_t>(parent) < count && done[static_cast<size_t>(parent)];
-            const glm::mat4 local = model.nodes[*it].local_transform();
+            const glm::mat4 local = local_of(*it);
             world[*it] = has_parent ? world[static_cast<size_t>(parent)] * local : local;
             done[*it] = 1;
         }
     }
     return world;
+}
+
+std::vector<glm::mat4> world_transforms(const Model& model) {
+    return compose_world(model, [&](size_t node) { return model.nodes[node].local_transform(); });
 }
 
 }  // namespace lw

@@ -13,6 +13,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -107,5 +108,10 @@ struct Model {
 
 // World transform of every node in the rest pose (local transforms composed from the roots).
 [[nodiscard]] std::vector<glm::mat4> world_transforms(const Model& model);
+
+// World transforms from any local transform per node (parent × child), guarded against bad
+// parent indices and cycles; world_transforms and animated poses both compose through it.
+[[nodiscard]] std::vector<glm::mat4> compose_world(const Model& model,
+                                                   const std::function<glm::mat4(size_t node)>& local_of);
 
 }  // namespace lw
