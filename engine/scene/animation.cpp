@@ -96,16 +96,6 @@ glm::quat normalized(const glm::quat& q, const glm::quat& fallback) {
     return length > 0.0f && std::isfinite(length) ? q / length : fallback;
 }
 
-// T × R × S, as glTF 2.0 §3.5.2 composes a node's local transform (as Node::local_transform).
-glm::mat4 trs_matrix(const glm::vec3& t, const glm::quat& r, const glm::vec3& s) {
-    glm::mat4 m = glm::mat4_cast(r);
-    m[0] *= s.x;
-    m[1] *= s.y;
-    m[2] *= s.z;
-    m[3] = glm::vec4(t, 1.0f);
-    return m;
-}
-
 // World transforms from the pose's local TRS (matrix nodes use their matrix), parents first.
 // Guarded like world_transforms: a bad parent index makes a root, a cycle cannot loop.
 void compose_world(const Model& model, Pose& pose) {

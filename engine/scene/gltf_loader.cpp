@@ -380,16 +380,16 @@ Model load_gltf(const std::filesystem::path& path) {
     return model;
 }
 
-glm::mat4 Node::local_transform() const {
-    if (has_matrix) return matrix;
-    // T * R * S, as glTF 2.0 defines node transforms.
-    glm::mat4 m = glm::mat4_cast(rotation);
-    m[0] *= scale.x;
-    m[1] *= scale.y;
-    m[2] *= scale.z;
-    m[3] = glm::vec4(translation, 1.0f);
+glm::mat4 trs_matrix(const glm::vec3& t, const glm::quat& r, const glm::vec3& s) {
+    glm::mat4 m = glm::mat4_cast(r);
+    m[0] *= s.x;
+    m[1] *= s.y;
+    m[2] *= s.z;
+    m[3] = glm::vec4(t, 1.0f);
     return m;
 }
+
+glm::mat4 Node::local_transform() const { return has_matrix ? matrix : trs_matrix(translation, rotation, scale); }
 
 std::vector<glm::mat4> compose_world(const Model& model, const std::function<glm::mat4(size_t node)>& local_of) {
     // Iterative and guarded: a hand-built Model need not have gone through validation, so a

@@ -106,6 +106,9 @@ struct Model {
 // Loads and validates a .gltf or .glb file. Throws lw::Error naming the file and the problem.
 [[nodiscard]] Model load_gltf(const std::filesystem::path& path);
 
+// T × R × S, as glTF 2.0 §3.5.2 composes a node's local transform from its properties.
+[[nodiscard]] glm::mat4 trs_matrix(const glm::vec3& t, const glm::quat& r, const glm::vec3& s);
+
 // World transform of every node in the rest pose (local transforms composed from the roots).
 [[nodiscard]] std::vector<glm::mat4> world_transforms(const Model& model);
 
