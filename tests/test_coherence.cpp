@@ -119,9 +119,40 @@ TEST_F(CoherenceGpu, SplatMatchesTheCpuReference) {
     for (size_t i = 0; i < gpu.size(); ++i) {
         EXPECT_NEAR(gpu[i].x, reference[i].x, 1e-4f * std::max(1.0f, std::abs(reference[i].x))) << i;
         EXPECT_NEAR(gpu[i].y, reference[i].y, 1e-4f) << i;
+        EXPECT_NEAR(gpu[i].z, reference[i].z, 1e-3f) << i;
+        EXPECT_NEAR(gpu[i].w, reference[i].w, 1e-3f) << i;
         covered += reference[i].y > 0.0f;
     }
     EXPECT_GT(covered, 500u);
+}
+
+TEST_F(CoherenceGpu, StillPathsKeepTheirScaleAndFragmentsAreDropped) {
+    // A still 2D view: votes land where the samples are. Without placing each vote at the
+    // centre of the sprites it averaged, the end votes of a short path pull inward and ρ
+    // shrinks frame after frame; a 5 px fragment is below the minimum stroke length.
+    CoherenceTracker tracker(ctx(), 96, 64);
+    const CoherenceParams params{.slam_length_px = 64.0f};
+    // Surface points that the identity camera projects back onto the samples.
+    auto on_screen = [](ScreenPath path) {
+        for (auto& sample : path.samples)
+            sample.position = glm::vec3(sample.pixel / glm::vec2(96.0f, 64.0f) * 2.0f - 1.0f, 0.5f);
+        return path;
+    };
+    std::vector<PathParam> first, last;
+    for (int frame = 0; frame < 6; ++frame) {
+        std::vector<ScreenPath> paths{on_screen(straight_path({10.0f, 20.0f}, {40.0f, 24.0f}, 2.0f)),
+                                      on_screen(straight_path({10.0f, 50.0f}, {15.0f, 50.0f}, 1.0f))};
+        last = tracker.update(paths, CameraMatrices{}, {}, params);
+        ASSERT_EQ(paths.size(), 1u);
+        ASSERT_EQ(last.size(), 1u);
+        if (frame == 0) first = last;
+    }
+    EXPECT_TRUE(last[0].fitted);
+    EXPECT_NEAR(last[0].rho, first[0].rho, 1e-3f * std::abs(first[0].rho));
+    EXPECT_NEAR(last[0].phi, first[0].phi, 0.1f * std::abs(first[0].rho));  // a tenth of a pixel
+    // T is kept in the octave of the tiling scale 1/64 (the 30 px path starts at T = s/L).
+    EXPECT_GE(std::abs(last[0].rho), 0.5f / 64.0f);
+    EXPECT_LE(std::abs(last[0].rho), 2.0f / 64.0f);
 }
 
 TEST_F(CoherenceGpu, AStillViewKeepsItsParameterization) {
@@ -183,9 +214,10 @@ TEST_F(CoherenceGpu, OrbitMeasuresPerPolicy) {
     // Stretch: the folded level keeps a period within one factor-of-2 band; stretching does not.
     EXPECT_GE(coherent_stretch.share_in_band, 0.99);
     EXPECT_LT(stretched_stretch.share_in_band, 0.9);
-    // Sliding: less than the tiling policy's (the goal, 1/5 of it, is not reached yet:
-    // see docs/BENCHMARKS.md).
-    EXPECT_LT(coherent_sliding.median_dt, tiling_sliding.median_dt);
+    // Sliding: less than the tiling policy's. The goal, 1/5 of it, holds on the 3° per
+    // frame orbits of docs/BENCHMARKS.md but not on this slower, smaller one (about 2/3).
+    EXPECT_LT(coherent_sliding.median_dt, tiling_sliding.median_dt)
+        << "coherent " << coherent_sliding.median_dt << ", arclength " << tiling_sliding.median_dt;
 }
 
 TEST(Cli, SequenceWritesFramesAndDumps) {

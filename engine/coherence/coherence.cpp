@@ -23,6 +23,14 @@ struct Sprite {
     float t;
 };
 
+// Unit direction of increasing arclength at sample k (central difference).
+glm::vec2 path_tangent(const ScreenPath& path, size_t k) {
+    const size_t a = k > 0 ? k - 1 : k, b = std::min(k + 1, path.samples.size() - 1);
+    const glm::vec2 d = path.samples[b].pixel - path.samples[a].pixel;
+    const float length = glm::length(d);
+    return length > 0.0f ? d / length : glm::vec2(0.0f);
+}
+
 float path_length(const ScreenPath& path) {
     return path.samples.size() < 2 ? 0.0f : path.samples.back().s - path.samples.front().s;
 }
@@ -113,11 +121,35 @@ void start_loop_at_seam(ScreenPath& path, VoteSet& votes, size_t p) {
     }
 }
 
+// The SLAM's self-similarity makes T and 2^k·T draw the same stroke (the level fold of
+// slam_level.h absorbs the power of two). A short path born with T = s/L, though, starts
+// with a steep ρ (a 4 px path: 1/4 period per pixel), and splatting such values makes every
+// later vote and every sub-pixel error count in periods of a tiny texture. So T is kept in
+// the octave of the tiling scale ρ0 = κ/Lmax: when |ρ| leaves [ρ0/2, 2ρ0] (not at every
+// crossing of ρ0, so that a path near the bound does not flip back and forth), T is scaled
+// by the power of two that brings |ρ| nearest to ρ0. The drawn stroke does not change.
+float vote_span(const VoteSet& votes, size_t p) {
+    float lo = INFINITY, hi = -INFINITY;
+    for (uint32_t k = votes.offsets[p]; k < votes.offsets[p + 1]; ++k) {
+        lo = std::min(lo, votes.votes[k].s);
+        hi = std::max(hi, votes.votes[k].s);
+    }
+    return hi > lo ? hi - lo : 0.0f;
+}
+
+void keep_in_home_octave(PathParam& param, float rho0) {
+    const float ratio = std::abs(param.rho) / rho0;
+    if (!(ratio > 0.0f) || !std::isfinite(ratio) || (ratio >= 0.5f && ratio <= 2.0f)) return;
+    const float scale = std::exp2(-std::round(std::log2(ratio)));
+    param.rho *= scale;
+    param.phi *= scale;
+}
+
 }  // namespace
 
-std::vector<glm::vec2> splat_reference(const std::vector<ScreenPath>& paths, const std::vector<PathParam>& params,
+std::vector<glm::vec4> splat_reference(const std::vector<ScreenPath>& paths, const std::vector<PathParam>& params,
                                        int width, int height, float radius) {
-    std::vector<glm::vec2> buffer(size_t(width) * height, glm::vec2(0.0f));
+    std::vector<glm::vec4> buffer(size_t(width) * height, glm::vec4(0.0f));
     for (size_t p = 0; p < paths.size(); ++p) {
         if (!paths[p].visible) continue;
         for (size_t k = 0; k < paths[p].samples.size(); ++k) {
@@ -127,9 +159,10 @@ std::vector<glm::vec2> splat_reference(const std::vector<ScreenPath>& paths, con
             const int y0 = std::max(0, int(std::floor(c.y - radius))), y1 = std::min(height - 1, int(std::ceil(c.y + radius)));
             for (int y = y0; y <= y1; ++y)
                 for (int x = x0; x <= x1; ++x) {
-                    const float d = glm::length(glm::vec2(float(x) + 0.5f, float(y) + 0.5f) - c);
+                    const glm::vec2 pixel(float(x) + 0.5f, float(y) + 0.5f);
+                    const float d = glm::length(pixel - c);
                     const float w = std::clamp(1.0f - d / radius, 0.0f, 1.0f);
-                    if (w > 0.0f) buffer[size_t(y) * width + x] += glm::vec2(w * t, w);
+                    if (w > 0.0f) buffer[size_t(y) * width + x] += glm::vec4(w * t, w, w * (c - pixel));
                 }
         }
     }
@@ -140,7 +173,7 @@ CoherenceTracker::CoherenceTracker(const Context& ctx, uint32_t width, uint32_t 
     : ctx_(&ctx),
       width_(width),
       height_(height),
-      splat_image_(ctx, {.width = width, .height = height, .format = VK_FORMAT_R32G32_SFLOAT,
+      splat_image_(ctx, {.width = width, .height = height, .format = VK_FORMAT_R32G32B32A32_SFLOAT,
                          .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                          .name = "parameterization splat"}),
       splat_pipeline_(ctx, {.vertex_spirv = LW_SPIRV(coherence_splat_vert_spv),
@@ -149,7 +182,7 @@ CoherenceTracker::CoherenceTracker(const Context& ctx, uint32_t width, uint32_t 
                             .attributes = {{.location = 0, .format = VK_FORMAT_R32G32_SFLOAT, .offset = 0},
                                            {.location = 1, .format = VK_FORMAT_R32_SFLOAT,
                                             .offset = offsetof(Sprite, t)}},
-                            .color_format = VK_FORMAT_R32G32_SFLOAT,
+                            .color_format = VK_FORMAT_R32G32B32A32_SFLOAT,
                             .depth_format = VK_FORMAT_UNDEFINED,
                             .depth_test = false,
                             .depth_write = false,
@@ -157,15 +190,15 @@ CoherenceTracker::CoherenceTracker(const Context& ctx, uint32_t width, uint32_t 
                             .push_constant_size = sizeof(SplatPush),
                             .name = "coherence splat",
                             .per_instance = true}),
-      splat_readback_(ctx, {.size = VkDeviceSize(width) * height * sizeof(glm::vec2),
+      splat_readback_(ctx, {.size = VkDeviceSize(width) * height * sizeof(glm::vec4),
                             .usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                             .purpose = MemoryPurpose::Readback,
                             .name = "splat readback"}),
       fitter_(ctx) {
     VkFormatProperties props{};
-    vkGetPhysicalDeviceFormatProperties(ctx.physical_device(), VK_FORMAT_R32G32_SFLOAT, &props);
+    vkGetPhysicalDeviceFormatProperties(ctx.physical_device(), VK_FORMAT_R32G32B32A32_SFLOAT, &props);
     if (!(props.optimalTilingFeatures & VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BLEND_BIT))
-        throw Error(ctx.info().name + " cannot blend into RG32F attachments, which the parameterization splat needs");
+        throw Error(ctx.info().name + " cannot blend into RGBA32F attachments, which the parameterization splat needs");
 }
 
 VoteSet CoherenceTracker::gather_votes(const std::vector<ScreenPath>& paths, const SurfaceFrame& surface) const {
@@ -183,13 +216,32 @@ VoteSet CoherenceTracker::gather_votes(const std::vector<ScreenPath>& paths, con
                     for (int i = 0; i < 3; ++i)
                         previous += sample.bary[i] * (previous_positions_[c[i]] - (*surface.positions)[c[i]]);
                 }
-                const glm::vec3 pixel = project_to_pixel(previous_camera_, previous, float(width_), float(height_));
+                glm::vec3 pixel = project_to_pixel(previous_camera_, previous, float(width_), float(height_));
+                if (path.type == LineType::Silhouette || path.type == LineType::Suggestive) {
+                    // A contour is not attached to the surface: it slides over it as the view
+                    // turns, so only the surface point's motion across the line carries the
+                    // line; its motion along the line is the surface sliding under the contour
+                    // and would drag the texture along a contour that stays put on screen.
+                    const glm::vec2 tangent = path_tangent(path, k);
+                    const glm::vec2 moved = glm::vec2(pixel) - sample.pixel;
+                    const glm::vec2 across = sample.pixel + moved - glm::dot(moved, tangent) * tangent;
+                    pixel = glm::vec3(across, pixel.z);
+                }
                 if (pixel.z <= 0.0f || pixel.x < 0.0f || pixel.y < 0.0f || pixel.x >= float(width_) ||
                     pixel.y >= float(height_))
                     continue;
-                const glm::vec2 sum = splat_[size_t(pixel.y) * width_ + size_t(pixel.x)];
+                const glm::vec4 sum = splat_[size_t(pixel.y) * width_ + size_t(pixel.x)];
                 if (sum.y > 1e-6f) {
-                    set.votes.push_back({sum.x / sum.y, path_arclength(path, k)});
+                    // Σwt/Σw is the parameterization at the weighted centre of the sprites that
+                    // reached this pixel, not at the sample: near a path's ends (where all
+                    // sprites lie on one side) and at the pixel's own offset that would pull
+                    // every vote along the path and shrink ρ frame after frame. Vote at the
+                    // arclength of that centre instead: the sample's, moved by the centre's
+                    // offset along the path.
+                    const glm::vec2 centre = glm::vec2(std::floor(pixel.x) + 0.5f, std::floor(pixel.y) + 0.5f) +
+                                             glm::vec2(sum.z, sum.w) / sum.y;
+                    const float along = glm::dot(centre - glm::vec2(pixel), path_tangent(path, k));
+                    set.votes.push_back({sum.x / sum.y, path_arclength(path, k) + along});
                     set.sample.push_back(uint32_t(k));
                 }
             }
@@ -256,7 +308,7 @@ void CoherenceTracker::splat(const std::vector<ScreenPath>& paths, const std::ve
     });
     splat_readback_.invalidate(*ctx_);
     splat_.resize(size_t(width_) * height_);
-    std::memcpy(splat_.data(), splat_readback_.mapped(), splat_.size() * sizeof(glm::vec2));
+    std::memcpy(splat_.data(), splat_readback_.mapped(), splat_.size() * sizeof(glm::vec4));
 }
 
 void CoherenceTracker::split_merged_paths(std::vector<ScreenPath>& paths, VoteSet& votes, std::vector<PathFit>& fits,
@@ -336,6 +388,10 @@ void CoherenceTracker::split_merged_paths(std::vector<ScreenPath>& paths, VoteSe
 std::vector<PathParam> CoherenceTracker::update(std::vector<ScreenPath>& paths, const CameraMatrices& camera,
                                                 const SurfaceFrame& surface, const CoherenceParams& params,
                                                 GpuTimer* timer, VoteSet* votes_out) {
+    // Fragments too short to carry a stroke texture are not drawn, splatted or dumped.
+    std::erase_if(paths, [&](const ScreenPath& path) {
+        return path.visible && path_length(path) < params.min_stroke_length_px;
+    });
     std::vector<PathFit> fits;
     VoteSet votes;
     float typical_rho = params.length_scale / params.slam_length_px;
@@ -363,7 +419,19 @@ std::vector<PathParam> CoherenceTracker::update(std::vector<ScreenPath>& paths, 
             case ParamPolicy::Coherent:
                 param.votes = fits[p].votes;
                 param.fitted = fits[p].fitted;
-                if (param.fitted) {
+                if (param.fitted && vote_span(votes, p) < params.min_slope_span_px) {
+                    // Votes over a few pixels fix a phase but not a slope: the least-squares ρ
+                    // of a short fragment jumps by tens of percent from frame to frame. Keep
+                    // the tiling scale (in T's home octave, see keep_in_home_octave) and take
+                    // the phase as the median over the votes.
+                    const float rho0 = params.length_scale / params.slam_length_px;
+                    param.rho = fits[p].rho < 0.0f ? -rho0 : rho0;
+                    std::vector<float> phases;
+                    for (uint32_t k = votes.offsets[p]; k < votes.offsets[p + 1]; ++k)
+                        phases.push_back(votes.votes[k].t - param.rho * votes.votes[k].s);
+                    std::nth_element(phases.begin(), phases.begin() + std::ptrdiff_t(phases.size() / 2), phases.end());
+                    param.phi = phases[phases.size() / 2];
+                } else if (param.fitted) {
                     param.rho = fits[p].rho;
                     param.phi = fits[p].phi;
                 } else if (param.votes >= 2) {
@@ -379,6 +447,7 @@ std::vector<PathParam> CoherenceTracker::update(std::vector<ScreenPath>& paths, 
                     param.rho = stretch_rho;
                     param.phi = 0.0f;
                 }
+                keep_in_home_octave(param, params.length_scale / params.slam_length_px);
                 param.fold = fold_slam_level(param.rho, params.length_scale, params.slam_length_px);
                 break;
             case ParamPolicy::Arclength:  // tiling: one period per texture length on screen

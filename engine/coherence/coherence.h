@@ -7,7 +7,8 @@
 //      (Σ w·t, Σ w) there; where Σ w > 0 it votes (Σwt/Σw, s) — §4.2;
 //   2. fit: RANSAC per path on the GPU (ransac_gpu.h); fewer than two votes: T(s) = s/L;
 //   3. splat: every sample writes t = T(s) as a sprite of radius δ,
-//      w = clamp(1 − d/δ, 0, 1), additive, into an RG32F buffer read back for frame f + 1 — §4.1.
+//      w = clamp(1 − d/δ, 0, 1), additive, into an RGBA32F buffer read back for frame f + 1 — §4.1
+//      (the extra channels, Σ w·(c − pixel), place each vote where its average was taken).
 // The two comparison policies of the issue: arclength (tiling, T = s·κ / Lmax) and stretch
 // (T = s/L, one texture stretched over the path, no level folding).
 #pragma once
@@ -35,6 +36,13 @@ struct CoherenceParams {
     float splat_radius_px = 4.0f;   // δ of the splat sprites
     float length_scale = 1.0f;      // κ: 1 draws the texture at its native pixel scale
     float slam_length_px = 1024.0f; // Lmax: the SLAM's texture length
+    // Visible paths shorter than this are dropped (not drawn as strokes, splatted or dumped):
+    // fragments of a few pixels show a sliver of the texture and are re-extracted differently
+    // every frame (on the orbit of BENCHMARKS.md they hold half the samples).
+    float min_stroke_length_px = 8.0f;
+    // A path whose votes span fewer pixels than this keeps the tiling scale and fits only its
+    // phase (a slope from votes a few pixels apart is noise).
+    float min_slope_span_px = 16.0f;
     RansacParams ransac;
 };
 
@@ -64,8 +72,9 @@ struct SurfaceFrame {
 // are interpolated linearly between the original samples; `s` keeps the path's arclength.
 [[nodiscard]] ScreenPath resample_at_phase(const ScreenPath& path, const PathParam& param, float spacing);
 
-// CPU reference of the splat: (Σ w·t, Σ w) per pixel for sprites of radius δ.
-[[nodiscard]] std::vector<glm::vec2> splat_reference(const std::vector<ScreenPath>& paths,
+// CPU reference of the splat: (Σ w·t, Σ w, Σ w·(c − pixel centre)) per pixel for sprites of
+// radius δ centred at c.
+[[nodiscard]] std::vector<glm::vec4> splat_reference(const std::vector<ScreenPath>& paths,
                                                      const std::vector<PathParam>& params, int width, int height,
                                                      float radius);
 
@@ -74,7 +83,8 @@ public:
     CoherenceTracker(const Context& ctx, uint32_t width, uint32_t height);
 
     // Parameterizes this frame's visible paths (entries for hidden paths stay default) and
-    // splats them for the next frame. Closed loops may be rotated to start at the seam they
+    // splats them for the next frame. Visible paths shorter than min_stroke_length_px are
+    // removed, closed loops may be rotated to start at the seam they
     // inherited, and paths that merged pieces of different earlier paths split (see
     // coherence.cpp), so `paths` may change; the result has one entry per path after. `votes_out` (optional) receives the votes used.
     [[nodiscard]] std::vector<PathParam> update(std::vector<ScreenPath>& paths, const CameraMatrices& camera,
@@ -84,7 +94,7 @@ public:
     // Forgets the previous frame (a cut).
     void reset() { has_previous_ = false; }
 
-    const std::vector<glm::vec2>& splat_buffer() const { return splat_; }
+    const std::vector<glm::vec4>& splat_buffer() const { return splat_; }
 
 private:
     // Where a long run of a path's votes disagrees with its fit, the path merged pieces that
@@ -105,7 +115,7 @@ private:
     bool has_previous_ = false;
     CameraMatrices previous_camera_;
     std::vector<glm::vec3> previous_positions_;
-    std::vector<glm::vec2> splat_;  // previous frame's (Σ w·t, Σ w), row-major
+    std::vector<glm::vec4> splat_;  // previous frame's (Σ w·t, Σ w, Σ w·(c − pixel)), row-major
 };
 
 }  // namespace lw

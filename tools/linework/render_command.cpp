@@ -48,6 +48,7 @@ struct RenderOptions {
     float stroke_width = 6.0f;
     float splat_radius = 0.0f;  // 0: twice the sample spacing
     float inlier_px = 1.5f;
+    float min_stroke_length = CoherenceParams{}.min_stroke_length_px;
     float length_scale = 0.0f;  // 0: square texels (the SLAM's height over the stroke width)
 };
 
@@ -202,6 +203,7 @@ int run_render(const RenderOptions& o) {
     if (o.param == "stretch") coherence.policy = ParamPolicy::Stretch;
     coherence.splat_radius_px = o.splat_radius > 0.0f ? o.splat_radius : desc.lines.sample_spacing_px * 2.0f;
     coherence.ransac.inlier_px = o.inlier_px;
+    coherence.min_stroke_length_px = o.min_stroke_length;
     for (int t = 0; t < kLineTypeCount; ++t)
         if (slams[size_t(t)]) {
             coherence.slam_length_px = float(slams[size_t(t)]->length);
@@ -341,6 +343,11 @@ Runner add_render_command(CLI::App& app) {
         ->check(CLI::PositiveNumber);
     cmd->add_option("--inlier-px", o->inlier_px, "RANSAC inlier distance along the path, pixels (§4.2)")
         ->check(CLI::PositiveNumber)
+        ->capture_default_str();
+    cmd->add_option("--min-stroke-length", o->min_stroke_length,
+                    "Visible paths shorter than this many pixels are not drawn as strokes, splatted or dumped "
+                    "(0 keeps every fragment)")
+        ->check(CLI::NonNegativeNumber)
         ->capture_default_str();
     cmd->add_option("--dump-paths", o->dump_paths,
                     "Write DIR/frame_NNNN.json per frame: visible paths, their (ρ, φ), level and samples");
