@@ -5,6 +5,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/image.h"
+#include "io/image_io.h"
 #include "test_support.h"
 
 namespace lw {
@@ -137,6 +139,52 @@ TEST(RibbonCli, HelpExplains) {
     for (const char* word : {"--curve", "--closed", "--stitch", "--piece", "--width", "--scale", "--seed", "--size",
                              "--dump-dp", "--device", "alpha"})
         EXPECT_NE(r.output.find(word), std::string::npos) << word;
+}
+
+// Ribbons as a stroke style of the 3D renderer: a scene whose silhouettes are drawn with a
+// ribbon exemplar shows the pattern's ink where the plain render has none, and draws no
+// plain silhouette line.
+TEST(RibbonCli, SceneLineStyleDrawsRibbonsAlongPaths) {
+    const RibbonFiles files;
+    const fs::path model = test::data_dir() / "models/spot/spot.glb";
+    auto scene = [&](const std::string& silhouette) {
+        return R"({"model": ")" + model.string() + R"(", "size": [160, 120], "shading": "unlit", "color": [1, 1, 1],
+                 "lines": {"silhouette": )" + silhouette + R"(, "suggestive": {"enabled": false},
+                           "crease": {"enabled": false}, "border": {"enabled": false}}})";
+    };
+    write_text(files.dir / "ribbon.json", scene(R"({"width": 10, "ribbon": ")" + files.exemplar.string() + R"("})"));
+    write_text(files.dir / "none.json", scene(R"({"enabled": false})"));
+    const auto r = run_linework("render " + quote(files.dir / "ribbon.json") + " -o " + quote(files.dir / "ribbon") +
+                                " --device cpu");
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("ribbons (silhouette): "), std::string::npos) << r.output;
+    const auto r2 = run_linework("render " + quote(files.dir / "none.json") + " -o " + quote(files.dir / "none") +
+                                 " --device cpu");
+    ASSERT_EQ(r2.exit_code, 0) << r2.output;
+    const ImageRGBA8 ribbon = read_image_rgba8(files.dir / "ribbon/frame_0000.png");
+    const ImageRGBA8 none = read_image_rgba8(files.dir / "none/frame_0000.png");
+    ASSERT_EQ(ribbon.pixels.size(), none.pixels.size());
+    // The beads exemplar's ink is coloured; the unlit white cow on a white background has none.
+    size_t coloured = 0, black = 0;
+    for (size_t i = 0; i < ribbon.pixels.size(); i += 4) {
+        const int r_ = ribbon.pixels[i], g = ribbon.pixels[i + 1], b = ribbon.pixels[i + 2];
+        coloured += std::max({r_, g, b}) - std::min({r_, g, b}) > 40;
+        black += r_ + g + b < 30;
+    }
+    EXPECT_GT(coloured, 100u);
+    EXPECT_LT(black, coloured / 4) << "plain silhouette lines drawn under the ribbon";
+
+    // A missing exemplar names the file; a SLAM and a ribbon on one type name the key.
+    write_text(files.dir / "missing.json", scene(R"({"ribbon": ")" + (files.dir / "nope.png").string() + R"("})"));
+    const auto missing = run_linework("render " + quote(files.dir / "missing.json") + " -o " + quote(files.dir / "m"));
+    EXPECT_EQ(missing.exit_code, 1) << missing.output;
+    EXPECT_NE(missing.output.find("linework: error: " + (files.dir / "nope.png").string() + ": no such file"),
+              std::string::npos)
+        << missing.output;
+    write_text(files.dir / "both.json", scene(R"({"ribbon": "a.png", "slam": "b.exr"})"));
+    const auto both = run_linework("render " + quote(files.dir / "both.json") + " -o " + quote(files.dir / "b"));
+    EXPECT_EQ(both.exit_code, 1) << both.output;
+    EXPECT_NE(both.output.find("lines.silhouette.ribbon"), std::string::npos) << both.output;
 }
 
 }  // namespace

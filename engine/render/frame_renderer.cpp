@@ -112,8 +112,11 @@ Frame FrameRenderer::render(const CameraMatrices& camera, const glm::vec3& eye, 
                                        .taper_px = style.taper_px},
                           strokes[t]);
         }
-    for (int t = 0; t < kLineTypeCount; ++t)
+    for (int t = 0; t < kLineTypeCount; ++t) {
         if (slams_[size_t(t)] && !frame.params.empty()) disable_line_type(plain.params, LineType(t));
+        // Ribbon styles are synthesized over the finished frame (ribbon/ribbon_strokes.h).
+        if (!lines.styles[size_t(t)].ribbon.empty()) disable_line_type(plain.params, LineType(t));
+    }
 
     // (2) Lines and strokes over the surface, colour read back. Vertex buffers must outlive
     // the submission.

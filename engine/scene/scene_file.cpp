@@ -228,6 +228,14 @@ LineStyle read_line_type(ObjectReader& lines, LineType type, const std::filesyst
         style.slam = (slam.is_absolute() ? slam : file.parent_path() / slam).string();
     }
     if (r.has("taper")) style.taper_px = static_cast<float>(r.number("taper", 0.0, 4096.0));
+    if (r.has("ribbon")) {
+        const std::filesystem::path ribbon(r.string_of("ribbon"));
+        if (ribbon.empty()) r.fail_key("ribbon", "expected a ribbon exemplar image (.png)");
+        style.ribbon = (ribbon.is_absolute() ? ribbon : file.parent_path() / ribbon).string();
+    }
+    if (r.has("ribbon_scale")) style.ribbon_scale = static_cast<float>(r.number("ribbon_scale", 1.0, 4096.0));
+    if (!style.ribbon.empty() && !style.slam.empty())
+        r.fail_key("ribbon", "a line type is drawn with a SLAM or a ribbon, not both");
     if (type == LineType::Suggestive) {
         if (r.has("threshold")) p.sug_thresh = static_cast<float>(r.number("threshold", 0.0, 10.0));
         if (r.has("fade")) p.fade = r.boolean("fade");

@@ -29,6 +29,9 @@ struct LineStyle {
     glm::vec3 color{0.0f};
     std::string slam;      // SLAM file: draw this type as textured strokes (empty: plain lines)
     float taper_px = 0.0f; // strokes: width tapers to the ends over this length
+    std::string ribbon;    // ribbon exemplar (RGBA image): draw this type as a structured
+                           // pattern along each path, `width` pixels wide (engine/ribbon)
+    float ribbon_scale = 0.0f;  // exemplar pixels across the ribbon (0: the exemplar's default)
 };
 
 enum class HiddenLines { None, Dashed, Faint };

@@ -18,6 +18,8 @@
 #include "gpu/context.h"
 #include "io/image_io.h"
 #include "io/slam_io.h"
+#include "ribbon/exemplar.h"
+#include "ribbon/ribbon_strokes.h"
 #include "lines/svg_export.h"
 #include "render/frame_renderer.h"
 #include "scene/scene.h"
@@ -155,6 +157,7 @@ int run_render(const RenderOptions& o) {
         for (LineType type : {LineType::Silhouette, LineType::Suggestive}) {
             LineStyle& style = desc.lines.styles[size_t(type)];
             style.slam = o.slam;
+            style.ribbon.clear();
             style.width = o.stroke_width;
             style.taper_px = 2.0f * o.stroke_width;
         }
@@ -195,6 +198,12 @@ int run_render(const RenderOptions& o) {
         for (int u = 0; u < t; ++u)
             if (slams[size_t(u)] && desc.lines.styles[size_t(u)].slam == file) slams[size_t(t)] = slams[size_t(u)];
         if (!slams[size_t(t)]) slams[size_t(t)] = read_slam(file);
+    }
+    // Ribbon exemplars, read before any rendering so that a bad file fails first.
+    std::array<std::optional<Exemplar>, kLineTypeCount> ribbons;
+    for (int t = 0; t < kLineTypeCount; ++t) {
+        const std::string& file = desc.lines.styles[size_t(t)].ribbon;
+        if (!file.empty()) ribbons[size_t(t)] = make_exemplar(read_image_rgba8(file), file);
     }
     const bool strokes = std::any_of(slams.begin(), slams.end(), [](const auto& s) { return s.has_value(); });
     const bool coherent = desc.lines.enabled && (strokes || !o.dump_paths.empty() || !o.param.empty());
@@ -243,9 +252,20 @@ int run_render(const RenderOptions& o) {
         const ViewCamera view = camera_at(desc.camera_path, scene.camera, when);
         const CameraMatrices camera = camera_matrices(view, float(width) / float(height), scene.bounds);
         const bool write = f >= range.first;
-        const Frame frame = renderer.render(camera, view.eye, desc.style, desc.lines,
-                                            {.color = write, .depth = write && o.exr},
-                                            coherent ? &coherence : nullptr);
+        Frame frame = renderer.render(camera, view.eye, desc.style, desc.lines,
+                                      {.color = write, .depth = write && o.exr}, coherent ? &coherence : nullptr);
+        for (int t = 0; t < kLineTypeCount && write; ++t)
+            if (ribbons[size_t(t)]) {
+                const LineStyle& style = desc.lines.styles[size_t(t)];
+                const RibbonStrokeStats stats =
+                    draw_ribbon_strokes(ctx, frame.screen_paths, LineType(t), *ribbons[size_t(t)],
+                                        {.width = style.width, .scale = style.ribbon_scale, .seed = uint64_t(f) + 1},
+                                        frame.image.color);
+                frame.timings.total_ms += stats.ms;
+                if (!sequence)
+                    std::printf("ribbons (%s): %zu paths in %.0f ms, %zu too short\n", line_type_name(LineType(t)),
+                                stats.paths, stats.ms, stats.skipped);
+            }
         ++done;
         total_ms += frame.timings.total_ms;
         progress.update(done, f, frame.timings.total_ms);
