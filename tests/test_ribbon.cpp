@@ -6,7 +6,7 @@
 
 #include "core/error.h"
 #include "ribbon/avoidance.h"
-#include "ribbon/curve.h"
+#include "vector/curve.h"
 #include "ribbon/dp_reference.h"
 #include "ribbon/exemplar_gen.h"
 #include "ribbon/stitch.h"

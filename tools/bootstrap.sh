@@ -12,6 +12,7 @@ packages=(
   vulkan-validationlayers glslang-tools     # Khronos validation layer; GLSL -> SPIR-V at build time
   libglm-dev libtinygltf-dev nlohmann-json3-dev libcli11-dev
   libopenimageio-dev libglfw3-dev
+  libcgal-dev                               # Delaunay triangulations of the stroke-pattern synthesizer
   libgtest-dev libbenchmark-dev
 )
 missing=()

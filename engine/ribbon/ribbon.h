@@ -26,7 +26,7 @@
 
 #include <glm/glm.hpp>
 
-#include "ribbon/curve.h"
+#include "vector/curve.h"
 
 namespace lw {
 

@@ -7,6 +7,8 @@
 //   linework-bench surface MODEL.glb [--subdivide K] [--size WxH] [--frames N] [--device D]
 //   linework-bench lines   MODEL.glb [--subdivide K] [--size WxH] [--frames N] [--device D]
 //   linework-bench ribbon  [--pattern NAME] [--exemplar-size WxH] [--rows N] [--device D]
+//   linework-bench pattern [--elements N] [--path-elements N] [--repeats R]   (CPU)
+//   linework-bench hatch   [--count N] [--training-size N] [--window N] [--repeats R]   (CPU)
 //
 // surface: the shaded surface pass (colour + depth), GPU time from timestamps.
 // lines:   the whole line frame (surface + extraction + depth readback + chaining +
@@ -30,6 +32,8 @@
 #include "render/frame_renderer.h"
 #include "render/surface_pass.h"
 #include "scene/scene.h"
+#include "stroke/slam.h"
+#include "pattern_bench.h"
 #include "ribbon_bench.h"
 
 namespace {
@@ -42,6 +46,7 @@ struct BenchOptions {
     std::string device = "auto";
     bool shaded = false;     // lines: toon shading under the lines (default: depth only)
     bool coherence = false;  // lines: parameterize every visible path (splat, votes, RANSAC)
+    bool strokes = false;    // lines: draw silhouettes and suggestive contours as SLAM strokes (implies coherence)
 };
 
 struct Series {
@@ -115,7 +120,21 @@ int run_lines(const BenchOptions& b) {
     lw::Context ctx({.device = lw::parse_device_choice(b.device)});
     BenchScene s = prepare(b, ctx);
     lw::FrameRenderer renderer(ctx, uint32_t(s.width), uint32_t(s.height));
-    const lw::LinesDesc lines;
+    lw::LinesDesc lines;
+    lw::CoherenceParams coherence;
+    const bool coherent = b.coherence || b.strokes;
+    if (b.strokes) {
+        // The whole stylized frame: a procedural dots SLAM (1024 × 32) on 6 px strokes, as
+        // `linework render --slam scenes/slams/dots.exr` draws it.
+        const lw::Slam slam = lw::make_procedural_slam(lw::SlamPattern::Dots);
+        for (lw::LineType t : {lw::LineType::Silhouette, lw::LineType::Suggestive}) {
+            renderer.set_slam(t, slam);
+            lines.styles[size_t(t)].width = 6.0f;
+            lines.styles[size_t(t)].taper_px = 12.0f;
+        }
+        coherence.slam_length_px = float(slam.length);
+        coherence.length_scale = float(slam.height) / 6.0f;
+    }
     lw::Timer prepare_timer;
     renderer.set_mesh(s.scene.mesh, true, lines.params.crease_angle_deg);
     std::printf("line mesh (weld, curvature, feature edges, upload): %.0f ms\n", prepare_timer.elapsed_ms());
@@ -132,10 +151,9 @@ int run_lines(const BenchOptions& b) {
     Series frame_ms, extract_gpu, extract_wall, surface_gpu, draw_gpu, chain, visibility, extract_cpu;
     size_t segments = 0, paths = 0;
     for (int frame = -2; frame < b.frames; ++frame) {
-        const lw::CoherenceParams coherence;
         const lw::Frame f = renderer.render(s.camera, s.scene.camera.eye, surface, lines, {.color = false},
-                                            b.coherence ? &coherence : nullptr);
-        if (b.coherence) {
+                                            coherent ? &coherence : nullptr);
+        if (coherent) {
             coherence_ms.values.push_back(f.timings.coherence_ms);
             size_t n = 0;
             for (const auto& p : f.screen_paths) n += p.visible ? p.samples.size() : 0;
@@ -162,8 +180,9 @@ int run_lines(const BenchOptions& b) {
         paths = f.paths.size();
         if (reference.size() != segments) throw lw::Error("GPU and CPU extraction disagree on the segment count");
     }
-    std::printf("line frame %dx%d (%s), %d frames, %zu segments, %zu paths:\n", s.width, s.height,
-                b.shaded ? "over toon shading" : "over the background: depth-only pass", b.frames, segments, paths);
+    std::printf("line frame %dx%d (%s%s), %d frames, %zu segments, %zu paths:\n", s.width, s.height,
+                b.shaded ? "over toon shading" : "over the background: depth-only pass",
+                b.strokes ? ", SLAM strokes" : "", b.frames, segments, paths);
     frame_ms.print("line frame (wall)");
     surface_gpu.print(b.shaded ? "GPU surface + depth" : "GPU depth pass");
     extract_gpu.print("GPU extraction");
@@ -172,7 +191,7 @@ int run_lines(const BenchOptions& b) {
     visibility.print("CPU visibility");
     draw_gpu.print("GPU line drawing");
     extract_cpu.print("CPU reference extract");
-    if (b.coherence) {
+    if (coherent) {
         std::printf("  coherent parameterization of %zu visible samples:\n", coherent_samples);
         coherence_ms.print("votes+RANSAC+splat");
     }
@@ -202,8 +221,15 @@ int main(int argc, char** argv) {
     lines_cmd->add_flag("--shaded", lines.shaded, "Draw the lines over toon shading instead of the background");
     lw::bench::RibbonBenchOptions ribbon;
     CLI::App* ribbon_cmd = lw::bench::add_ribbon_bench(app, ribbon);
+    lw::bench::PatternBenchOptions pattern;
+    CLI::App* pattern_cmd = lw::bench::add_pattern_bench(app, pattern);
+    lw::bench::HatchBenchOptions hatch;
+    CLI::App* hatch_cmd = lw::bench::add_hatch_bench(app, hatch);
     lines_cmd->add_flag("--coherence", lines.coherence,
                         "Also parameterize every visible path coherently (splat, votes, RANSAC) and time it");
+    lines_cmd->add_flag("--strokes", lines.strokes,
+                        "The whole stylized frame: silhouettes and suggestive contours as coherent SLAM strokes "
+                        "(procedural dots, 6 px)");
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -216,6 +242,8 @@ int main(int argc, char** argv) {
         if (surface_cmd->parsed()) return run_surface(surface);
         if (lines_cmd->parsed()) return run_lines(lines);
         if (ribbon_cmd->parsed()) return lw::bench::run_ribbon_bench(ribbon);
+        if (pattern_cmd->parsed()) return lw::bench::run_pattern_bench(pattern);
+        if (hatch_cmd->parsed()) return lw::bench::run_hatch_bench(hatch);
     } catch (const lw::Error& e) {
         std::fprintf(stderr, "linework-bench: error: %s\n", e.what());
         return e.exit_code();

@@ -11,6 +11,8 @@
 #include <CLI/CLI.hpp>
 #include <glm/glm.hpp>
 
+#include "core/error.h"
+
 namespace lw::cli {
 
 using Runner = std::function<int()>;
@@ -22,6 +24,8 @@ Runner add_slam_pattern_command(CLI::App& app);
 Runner add_coherence_report_command(CLI::App& app);
 Runner add_ribbon_command(CLI::App& app);
 Runner add_ribbon_exemplar_command(CLI::App& app);
+Runner add_pattern_command(CLI::App& app);
+Runner add_hatch_command(CLI::App& app);
 
 // "1,2.5,-3" -> vec3; throws a usage error naming `option`.
 glm::vec3 parse_vec3(const std::string& text, const std::string& option);
@@ -29,5 +33,17 @@ glm::vec3 parse_vec3(const std::string& text, const std::string& option);
 glm::ivec2 parse_size(const std::string& text, const std::string& option);
 // True when LINEWORK_VALIDATION is set to something other than 0 or empty.
 bool validation_from_environment();
+
+// Runs f; an engine error that does not name its file is re-thrown with the file in front.
+template <typename F>
+auto naming(const std::string& file, F&& f) {
+    try {
+        return f();
+    } catch (const Error& e) {
+        const std::string m = e.what();
+        if (m.rfind(file, 0) == 0) throw;
+        throw Error(file + ": " + m, e.exit_code());
+    }
+}
 
 }  // namespace lw::cli

@@ -29,6 +29,8 @@ int main(int argc, char** argv) {
     add(&lw::cli::add_coherence_report_command);
     add(&lw::cli::add_ribbon_command);
     add(&lw::cli::add_ribbon_exemplar_command);
+    add(&lw::cli::add_pattern_command);
+    add(&lw::cli::add_hatch_command);
 
     try {
         app.parse(argc, argv);

@@ -15,7 +15,7 @@
 #include "gpu/context.h"
 #include "io/image_io.h"
 #include "ribbon/avoidance.h"
-#include "ribbon/curve.h"
+#include "vector/curve.h"
 #include "ribbon/exemplar_gen.h"
 #include "ribbon/problem.h"
 #include "ribbon/synthesize.h"
@@ -31,18 +31,6 @@ struct RibbonOptions {
     std::optional<float> piece, width, scale;
     uint64_t seed = 1;
 };
-
-// Re-throws an engine error that does not name its file with the file in front.
-template <typename F>
-auto naming(const std::string& file, F&& f) {
-    try {
-        return f();
-    } catch (const Error& e) {
-        const std::string m = e.what();
-        if (m.rfind(file, 0) == 0) throw;
-        throw Error(file + ": " + m, e.exit_code());
-    }
-}
 
 void write_dump(const std::string& path, const RibbonSynthesis& s) {
     using json = nlohmann::json;

@@ -1,4 +1,6 @@
-// engine/ribbon/curve.h — the curve a ribbon pattern follows, parameterized by arc length.
+// engine/vector/curve.h — a 2D curve read from a file, parameterized by arc length: what a
+// ribbon pattern follows (`linework ribbon --curve`), what a stroke pattern fills
+// (`linework pattern --path/--region`) and what hatching runs along (`linework hatch --along`).
 //
 // Input:  a polyline in output pixels (x right, y down), open or closed, from
 //         - JSON: {"points": [[x, y], ...], "closed": bool}  ("closed" optional, default false;
@@ -30,8 +32,11 @@ struct Curve2D {
 // The same from text; `where` names the source in error messages.
 [[nodiscard]] Curve2D parse_curve_json(const std::string& text, const std::string& where);
 [[nodiscard]] Curve2D parse_curve_svg(const std::string& svg_text, const std::string& where);
-// Parses one SVG path's `d` attribute.
+// Parses one SVG path's `d` attribute that holds exactly one subpath.
 [[nodiscard]] Curve2D parse_svg_path_data(const std::string& d, const std::string& where);
+// Every subpath of a `d` attribute (M starts one; Z closes it; drawing on after Z starts a new
+// one at the same point, as SVG does). Also used by the stroke reader (vector/stroke_io.h).
+[[nodiscard]] std::vector<Curve2D> parse_svg_subpaths(const std::string& d, const std::string& where);
 
 class ArclengthCurve {
 public:

@@ -1,4 +1,4 @@
-#include "ribbon/curve.h"
+#include "vector/curve.h"
 
 #include <algorithm>
 #include <cctype>
@@ -103,13 +103,12 @@ Curve2D parse_curve_json(const std::string& text, const std::string& where) {
     return curve;
 }
 
-Curve2D parse_svg_path_data(const std::string& d, const std::string& where) {
+std::vector<Curve2D> parse_svg_subpaths(const std::string& d, const std::string& where) {
     PathLexer lex(d, where);
-    Curve2D curve;
+    std::vector<Curve2D> subpaths;
     glm::dvec2 current{0.0}, start{0.0};
     char command = 0;
-    bool moved = false;
-    auto add = [&](glm::dvec2 p) { curve.points.push_back(checked_point(p.x, p.y, where, "path data")); };
+    auto add = [&](glm::dvec2 p) { subpaths.back().points.push_back(checked_point(p.x, p.y, where, "path data")); };
     while (!lex.at_end()) {
         if (lex.at_command()) {
             command = lex.command();
@@ -118,24 +117,28 @@ Curve2D parse_svg_path_data(const std::string& d, const std::string& where) {
         }
         const bool relative = std::islower(static_cast<unsigned char>(command)) != 0;
         const glm::dvec2 base = relative ? current : glm::dvec2(0.0);
-        switch (std::toupper(static_cast<unsigned char>(command))) {
+        const int upper = std::toupper(static_cast<unsigned char>(command));
+        if (upper != 'M' && subpaths.empty()) lex.fail("must start with M");
+        if (upper != 'M' && upper != 'Z' && subpaths.back().closed) {
+            // SVG: drawing after Z starts a new subpath at the closed one's start.
+            subpaths.push_back({});
+            add(start);
+        }
+        switch (upper) {
             case 'M': {
-                if (moved) lex.fail("more than one subpath (one curve per file)");
                 const glm::dvec2 p = base + lex.point();
+                subpaths.push_back({});
                 add(p);
                 current = start = p;
-                moved = true;
                 command = relative ? 'l' : 'L';  // further pairs are line-tos (SVG rule)
                 break;
             }
             case 'L': {
-                if (!moved) lex.fail("must start with M");
                 current = base + lex.point();
                 add(current);
                 break;
             }
             case 'C': {
-                if (!moved) lex.fail("must start with M");
                 const glm::dvec2 p0 = current;
                 const glm::dvec2 p1 = base + lex.point();
                 const glm::dvec2 p2 = base + lex.point();
@@ -151,18 +154,23 @@ Curve2D parse_svg_path_data(const std::string& d, const std::string& where) {
                 break;
             }
             case 'Z': {
-                if (!moved) lex.fail("must start with M");
-                curve.closed = true;
+                subpaths.back().closed = true;
                 current = start;
-                if (!lex.at_end()) lex.fail("nothing may follow Z (one closed subpath per file)");
                 break;
             }
             default:
                 lex.fail(std::string("unsupported command '") + command + "' (M, L, C, Z and m, l, c, z are)");
         }
     }
-    if (curve.points.size() < 2) throw Error(where + ": path data: at least two points are needed");
-    return curve;
+    return subpaths;
+}
+
+Curve2D parse_svg_path_data(const std::string& d, const std::string& where) {
+    std::vector<Curve2D> subpaths = parse_svg_subpaths(d, where);
+    if (subpaths.size() > 1) throw Error(where + ": path data: more than one subpath (one curve per file)");
+    if (subpaths.empty() || subpaths[0].points.size() < 2)
+        throw Error(where + ": path data: at least two points are needed");
+    return std::move(subpaths[0]);
 }
 
 Curve2D parse_curve_svg(const std::string& svg, const std::string& where) {

@@ -1,0 +1,148 @@
+#include "hatch/hatching.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.h"
+
+namespace lw {
+
+std::vector<int> plausible_strokes(const HatchTraining& t, const std::vector<int>& history, int window, float c) {
+    const size_t n = t.strokes.size();
+    const int context = std::max(window, 1) - 1;
+    if (size_t(context) >= n) throw Error("the window (" + std::to_string(window) + ") must be smaller than the training size (" +
+                                          std::to_string(n) + ")");
+    if (history.size() < size_t(context)) throw Error("N-gram: the history is shorter than the context");
+    const int dim = t.vectors.dim;
+    const size_t h0 = history.size() - size_t(context);
+    thread_local std::vector<double> distance;
+    distance.assign(n, INFINITY);
+    double best = INFINITY;
+    for (size_t i = size_t(context); i < n; ++i) {
+        double d2 = 0.0;
+        for (int m = 0; m < context; ++m) {
+            const double* a = t.vectors.row(size_t(history[h0 + size_t(m)]));
+            const double* b = t.vectors.row(i - size_t(context) + size_t(m));
+            for (int k = 0; k < dim; ++k) d2 += (a[k] - b[k]) * (a[k] - b[k]);
+        }
+        distance[i] = context > 0 ? std::sqrt(d2 / double(context * dim)) : 0.0;
+        best = std::min(best, distance[i]);
+    }
+    // p_i / p_max = e^(best − d_i) ≥ c  ⇔  d_i ≤ best − ln c.
+    const double limit = best - std::log(double(std::clamp(c, 1e-6f, 1.0f))) + 1e-9;
+    std::vector<int> out;
+    for (size_t i = size_t(context); i < n; ++i)
+        if (distance[i] <= limit) out.push_back(int(i));
+    return out;
+}
+
+double random_block_kl2(const HatchTraining& t, int size, Rng& rng) {
+    std::vector<double> values;
+    for (int k = 0; k < 9; ++k) {
+        std::vector<int> ids;
+        for (int i = 0; i < size; ++i) ids.push_back(int(rng.index(t.strokes.size())));
+        values.push_back(kl2_divergence(t.vectors, sequence_vectors(t, ids)));
+    }
+    std::sort(values.begin(), values.end());
+    return values[4];
+}
+
+HatchSequence generate_hatching(const HatchTraining& t, const HatchDesc& desc, Rng& rng,
+                                const std::function<void(const HatchBlock&, bool)>& on_block) {
+    const int n = int(t.strokes.size());
+    if (desc.window < 1 || desc.window >= n)
+        throw Error("the window (" + std::to_string(desc.window) + ") must be between 1 and the training size − 1 (" +
+                    std::to_string(n - 1) + ")");
+    if (desc.block < 1) throw Error("the block size must be positive");
+    HatchSequence out;
+    std::vector<int> history(static_cast<size_t>(n));  // Z_temp ← Z_t
+    for (int i = 0; i < n; ++i) history[size_t(i)] = i;
+    const Samples training = t.vectors;
+    const double threshold =
+        desc.threshold < 0.0 ? 3.0 * random_block_kl2(t, std::min(desc.block, desc.count), rng) : desc.threshold;
+    out.threshold = threshold;
+    int window = desc.window;
+    int index = 0;
+    while (int(out.ids.size()) < desc.count) {
+        ++index;
+        const int size = std::min(desc.block, desc.count - int(out.ids.size()));
+        HatchBlock best_block;
+        std::vector<int> best_ids;
+        for (int attempt = 1;; ++attempt) {
+            std::vector<int> ids;
+            std::vector<int> h = history;
+            for (int k = 0; k < size; ++k) {
+                const std::vector<int> s = plausible_strokes(t, h, window, desc.plausible);
+                const int pick = s[rng.index(s.size())];
+                ids.push_back(pick);
+                h.push_back(pick);
+            }
+            HatchBlock b{index, out.ids.size() + 1, out.ids.size() + size_t(size), window,
+                         kl2_divergence(training, sequence_vectors(t, ids)), attempt, false};
+            if (best_ids.empty() || b.kl2 < best_block.kl2) best_block = b, best_ids = ids;
+            const bool over = threshold > 0.0 && b.kl2 > threshold;
+            if (!over) {
+                best_block = b, best_ids = ids;
+                break;
+            }
+            if (on_block) on_block(b, false);
+            if (attempt > desc.max_restarts || window + 1 >= n) {
+                best_block.over_threshold = true;
+                best_block.attempts = attempt;
+                break;
+            }
+            window = std::min(window + 2, n - 1);  // restart with a larger window (§3.1)
+        }
+        history.insert(history.end(), best_ids.begin(), best_ids.end());
+        out.ids.insert(out.ids.end(), best_ids.begin(), best_ids.end());
+        out.blocks.push_back(best_block);
+        if (on_block) on_block(best_block, true);
+    }
+    return out;
+}
+
+namespace {
+
+Stroke moved(const HatchTraining& t, int id, glm::vec2 centre, glm::vec2 tangent) {
+    Stroke s = t.strokes[size_t(id)];
+    const glm::vec2 normal(-tangent.y, tangent.x);
+    for (glm::vec2& p : s.points) {
+        const glm::vec2 d = p - t.centers[size_t(id)];
+        p = centre + glm::dot(d, t.u) * tangent + glm::dot(d, t.v) * normal;
+    }
+    return s;
+}
+
+}  // namespace
+
+std::vector<Stroke> place_on_line(const HatchTraining& t, const std::vector<int>& ids) {
+    std::vector<Stroke> out;
+    float s = glm::dot(t.centers.front() - t.origin, t.u);
+    for (size_t k = 0; k < ids.size(); ++k) {
+        if (k > 0) s += t.step[size_t(ids[k])];
+        const glm::vec2 centre = t.origin + s * t.u + t.offset[size_t(ids[k])] * t.v;
+        out.push_back(moved(t, ids[k], centre, t.u));
+    }
+    return out;
+}
+
+std::vector<Stroke> place_along(const HatchTraining& t, const std::vector<int>& ids, const ArclengthCurve& path,
+                                size_t* placed) {
+    std::vector<Stroke> out;
+    std::vector<float> steps(t.step);
+    std::sort(steps.begin(), steps.end());
+    const float median_step = std::max(steps[steps.size() / 2], 1e-3f);
+    const float h = std::max(0.5f * median_step, 1e-3f);
+    float s = 0.5f * median_step;
+    for (size_t k = 0; k < ids.size(); ++k) {
+        if (k > 0) s += t.step[size_t(ids[k])];
+        if (s > path.length() || s < 0.0f) break;
+        const glm::vec2 tangent = path.tangent_at(s, h);
+        const glm::vec2 centre = path.point_at(s) + t.offset[size_t(ids[k])] * glm::vec2(-tangent.y, tangent.x);
+        out.push_back(moved(t, ids[k], centre, tangent));
+    }
+    if (placed) *placed = out.size();
+    return out;
+}
+
+}  // namespace lw

@@ -1,0 +1,36 @@
+// engine/vector/stroke_io.h — stroke files in and out (formats in vector/stroke.h).
+//
+// Reading: .svg by extension, anything else as JSON. Every stroke needs at least one point,
+// finite coordinates within ±1e6, positive finite widths and colours in [0, 1]; unknown JSON
+// keys, SVG transforms, unsupported drawing elements (rect, circle, text, …) and unknown
+// colour names are errors. Errors are `lw::Error`s (exit code 1) whose one-line message starts
+// with the file name (or `where`).
+//
+// Writing SVG: one <polyline> per open stroke and one <path d="M … Z"> per closed stroke, with
+// its stroke colour and stroke-width (the mean width); strokes whose width varies also carry
+// `data-widths="w0 w1 …"`, which the reader prefers, so that a round trip keeps every width.
+// The viewBox is the set's extent when stated, else the bounds plus the widest stroke.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "vector/stroke.h"
+
+namespace lw {
+
+[[nodiscard]] StrokeSet load_strokes(const std::filesystem::path& path);
+[[nodiscard]] StrokeSet parse_strokes_json(const std::string& text, const std::string& where);
+[[nodiscard]] StrokeSet parse_strokes_svg(const std::string& text, const std::string& where);
+
+[[nodiscard]] std::string strokes_to_svg(const StrokeSet& set);
+[[nodiscard]] std::string strokes_to_json(const StrokeSet& set);
+// By extension: .json writes JSON, anything else SVG. Throws lw::Error naming the file.
+void save_strokes(const std::filesystem::path& path, const StrokeSet& set);
+
+// "#rgb", "#rrggbb", "rgb(r, g, b)" (0–255 or percentages) or a basic name (black, white,
+// red, green, blue, yellow, cyan, magenta, gray/grey, orange, brown, purple).
+// Throws lw::Error "`where`: colour "…" …".
+[[nodiscard]] glm::vec3 parse_svg_color(const std::string& text, const std::string& where);
+
+}  // namespace lw

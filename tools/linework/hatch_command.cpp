@@ -1,0 +1,154 @@
+// `linework hatch` — hatching sequences by N-grams with a KL2 watch (Jodoin et al. 2002;
+// engine/hatch/hatching.h).
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+#include "commands.h"
+#include "core/error.h"
+#include "core/timer.h"
+#include "hatch/hatching.h"
+#include "vector/stroke_io.h"
+
+namespace lw::cli {
+
+namespace {
+
+struct HatchOptions {
+    std::string training, output, along;
+    int count = 0, window = 6, block = 50;
+    double threshold = -1.0;
+    float plausible = 0.5f;
+    uint64_t seed = 1;
+    bool kl2 = false;
+};
+
+int run_hatch(const HatchOptions& o) {
+    Timer total;
+    StrokeSet train = load_strokes(o.training);
+    const HatchTraining t = naming(o.training, [&] { return make_training(std::move(train.strokes)); });
+    if (o.window >= int(t.strokes.size()))
+        throw usage_error("--window: must be smaller than the training size (" + std::to_string(t.strokes.size()) +
+                          " strokes in " + o.training + ")");
+    // With --kl2 stdout holds the block lines only; the rest goes to stderr.
+    FILE* info = o.kl2 ? stderr : stdout;
+
+    std::vector<ArclengthCurve> paths;
+    if (!o.along.empty()) {
+        const StrokeSet along = load_strokes(o.along);
+        for (size_t i = 0; i < along.strokes.size(); ++i) {
+            Curve2D c{along.strokes[i].points, along.strokes[i].closed};
+            paths.push_back(naming(o.along, [&] {
+                try {
+                    return ArclengthCurve(c);
+                } catch (const Error& e) {
+                    throw Error("path " + std::to_string(i + 1) + ": " + e.what());
+                }
+            }));
+        }
+    }
+
+    std::fprintf(info, "training: %s, %zu strokes, %d-dimensional vectors (%d varying)\n", o.training.c_str(),
+                 t.strokes.size(), t.raw_dim, t.vectors.dim);
+
+    HatchDesc desc;
+    desc.count = o.count;
+    desc.window = o.window;
+    desc.block = o.block;
+    desc.threshold = o.threshold;
+    desc.plausible = o.plausible;
+    Rng rng(o.seed);
+    int block_offset = 0;
+    size_t stroke_offset = 0, restarts = 0, over = 0;
+    auto report = [&](const HatchBlock& b, bool kept) {
+        if (!kept) {
+            ++restarts;
+            std::fprintf(stderr, "hatch: block %d (window %d) KL2 %.3f over the threshold: generated again with window %d\n",
+                         b.index + block_offset, b.window, b.kl2, b.window + 2);
+            return;
+        }
+        if (b.over_threshold) ++over;
+        if (o.kl2)
+            std::printf("block %d strokes %zu-%zu KL2 %.4f\n", b.index + block_offset, b.first + stroke_offset,
+                        b.last + stroke_offset, b.kl2);
+    };
+
+    StrokeSet out;
+    Timer generation;
+    double threshold = 0.0;
+    if (paths.empty()) {
+        const HatchSequence seq = generate_hatching(t, desc, rng, report);
+        threshold = seq.threshold;
+        out.strokes = place_on_line(t, seq.ids);
+    } else {
+        // Fig. 8: one sequence per path, long enough to fill it (at most --count strokes).
+        std::vector<float> steps(t.step);
+        std::sort(steps.begin(), steps.end());
+        const float median_step = std::max(steps[steps.size() / 2], 1e-3f);
+        for (const ArclengthCurve& path : paths) {
+            HatchDesc d = desc;
+            d.count = std::min(o.count, int(std::ceil(path.length() / median_step)) + 2);
+            const HatchSequence seq = generate_hatching(t, d, rng, report);
+            threshold = seq.threshold;
+            std::vector<Stroke> placed = place_along(t, seq.ids, path);
+            block_offset += int(seq.blocks.size());
+            stroke_offset += seq.ids.size();
+            out.strokes.insert(out.strokes.end(), placed.begin(), placed.end());
+        }
+    }
+    const double generation_ms = generation.elapsed_ms();
+    std::fprintf(info, "generated %zu strokes%s with window %d in blocks of %d (%.1f ms); %zu block(s) generated again, "
+                 "%zu kept above the KL2 threshold %.3g\n",
+                 out.strokes.size(), paths.empty() ? "" : (" along " + std::to_string(paths.size()) + " path(s)").c_str(),
+                 o.window, o.block, generation_ms, restarts, over, threshold);
+    save_strokes(o.output, out);
+    std::fprintf(info, "wrote %s (%.1f ms in all)\n", o.output.c_str(), total.elapsed_ms());
+    return 0;
+}
+
+}  // namespace
+
+Runner add_hatch_command(CLI::App& app) {
+    auto o = std::make_shared<HatchOptions>();
+    CLI::App* cmd = app.add_subcommand(
+        "hatch",
+        "Continue a hand-drawn hatching sequence by example (Jodoin, Epstein, Granger-Piché &\n"
+        "Ostromoukhov 2002). Each next stroke is copied from the training strokes whose N − 1\n"
+        "predecessors resemble the last N − 1 strokes drawn (an N-gram with a Gibbs probability and\n"
+        "a random pick among the plausible ones). The sequence is made in blocks; a block whose KL2\n"
+        "divergence from the training passes the threshold is made again with a larger window.\n"
+        "Example: linework hatch scenes/patterns/hatch_training.svg -o out.svg --count 200 --kl2");
+    cmd->add_option("training", o->training,
+                    "Training strokes in drawing order (SVG or JSON stroke file, as for `linework pattern`)")
+        ->required();
+    cmd->add_option("-o,--output", o->output, "Output strokes: .svg (one <polyline>/<path> per stroke) or .json")
+        ->required();
+    cmd->add_option("--count", o->count, "Strokes to generate (with --along: at most this many per path)")
+        ->required()
+        ->check(CLI::Range(1, 1000000));
+    cmd->add_option("--window", o->window,
+                    "N, the N-gram window: each stroke follows the last N − 1 (larger follows the training\n"
+                    "more closely; a window too small for the training may loop, and KL2 shows it)")
+        ->check(CLI::Range(1, 1000))
+        ->capture_default_str();
+    cmd->add_option("--block", o->block, "Strokes per block whose KL2 is checked")->check(CLI::Range(2, 100000))->capture_default_str();
+    cmd->add_option("--threshold", o->threshold,
+                    "KL2 above which a block is made again with a window larger by 2 (0: never; default:\n"
+                    "3 times the median KL2 of blocks drawn from the training at random, since KL2's scale\n"
+                    "depends on the training; a block looping on a few strokes scores tens)")
+        ->check(CLI::Range(0.0, 1e9));
+    cmd->add_option("--plausible", o->plausible,
+                    "c in (0, 1]: strokes whose Gibbs probability is at least c times the best are plausible")
+        ->check(CLI::Range(1e-6f, 1.0f))
+        ->capture_default_str();
+    cmd->add_option("--along", o->along,
+                    "Lay sequences along these paths (a stroke file: each stroke is a path), strokes turned\n"
+                    "with the path and offset across it as in the training (the paper's Fig. 8)");
+    cmd->add_option("--seed", o->seed, "Seed of the random picks")->capture_default_str();
+    cmd->add_flag("--kl2", o->kl2,
+                  "Print one line per block on stdout: `block B strokes A-B KL2 V` (the rest goes to stderr)");
+    return [o] { return run_hatch(*o); };
+}
+
+}  // namespace lw::cli
