@@ -15,13 +15,7 @@ namespace {
 namespace fs = std::filesystem;
 using test::run_linework;
 
-// Shell-quoted path (built with += : GCC 12 warns falsely about "'" + std::string&&).
-std::string quote(const fs::path& p) {
-    std::string q = "'";
-    q += p.string();
-    q += "'";
-    return q;
-}
+using test::quote;
 
 void write_text(const fs::path& path, const std::string& text) { std::ofstream(path) << text; }
 

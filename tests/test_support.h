@@ -63,6 +63,12 @@ inline CommandResult run_linework(const std::string& args) {
     return result;
 }
 
-inline std::string quote(const std::filesystem::path& p) { return "'" + p.string() + "'"; }
+// Shell-quoted path (built with +=: GCC 12 warns falsely, -Wrestrict, about "'" + std::string&&).
+inline std::string quote(const std::filesystem::path& p) {
+    std::string q = "'";
+    q += p.string();
+    q += "'";
+    return q;
+}
 
 }  // namespace lw::test

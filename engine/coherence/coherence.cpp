@@ -67,7 +67,8 @@ ScreenPath resample_at_phase(const ScreenPath& path, const PathParam& param, flo
                                            .position = glm::mix(a.position, b.position, u),
                                            .face = u < 0.5f ? a.face : b.face,
                                            .bary = u < 0.5f ? a.bary : b.bary,
-                                           .alpha = glm::mix(a.alpha, b.alpha, u)});
+                                           .alpha = glm::mix(a.alpha, b.alpha, u),
+                                           .width = glm::mix(a.width, b.width, u)});
     }
     return out;
 }

@@ -55,6 +55,12 @@ struct PathParam {
     float length_px = 0.0f;
 };
 
+// Paths with their parameterization (a vector layer's frame, for dumps).
+struct ParameterizedPaths {
+    std::vector<ScreenPath> paths;
+    std::vector<PathParam> params;  // per path
+};
+
 // Arclength of a sample along its path (the path's own origin).
 inline float path_arclength(const ScreenPath& path, size_t sample) { return path.samples[sample].s - path.samples.front().s; }
 

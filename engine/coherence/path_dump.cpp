@@ -12,10 +12,11 @@
 
 namespace lw {
 
-std::string path_dump_json(int frame, int width, int height, const std::vector<ScreenPath>& paths,
-                           const std::vector<PathParam>& params) {
+namespace {
+
+void append_paths(nlohmann::json& out, const std::vector<ScreenPath>& paths, const std::vector<PathParam>& params,
+                  const char* type_override) {
     using nlohmann::json;
-    json out = {{"frame", frame}, {"width", width}, {"height", height}, {"paths", json::array()}};
     for (size_t p = 0; p < paths.size(); ++p) {
         const ScreenPath& path = paths[p];
         if (!path.visible) continue;
@@ -28,10 +29,19 @@ std::string path_dump_json(int frame, int width, int height, const std::vector<S
             samples.push_back({{"x", s.pixel.x}, {"y", s.pixel.y}, {"s", arclength}, {"t", t},
                                {"u", param.fold.scale * t}, {"p", {s.position.x, s.position.y, s.position.z}}});
         }
-        out["paths"].push_back({{"type", line_type_name(path.type)}, {"closed", path.closed}, {"rho", param.rho},
-                                {"phi", param.phi}, {"level", param.fold.level}, {"votes", param.votes},
-                                {"samples", std::move(samples)}});
+        out["paths"].push_back({{"type", type_override ? type_override : line_type_name(path.type)},
+                                {"closed", path.closed}, {"rho", param.rho}, {"phi", param.phi},
+                                {"level", param.fold.level}, {"votes", param.votes}, {"samples", std::move(samples)}});
     }
+}
+
+}  // namespace
+
+std::string path_dump_json(int frame, int width, int height, const std::vector<ScreenPath>& paths,
+                           const std::vector<PathParam>& params, const std::vector<ParameterizedPaths>& layers) {
+    nlohmann::json out = {{"frame", frame}, {"width", width}, {"height", height}, {"paths", nlohmann::json::array()}};
+    append_paths(out, paths, params, nullptr);
+    for (const ParameterizedPaths& layer : layers) append_paths(out, layer.paths, layer.params, "layer");
     return out.dump();
 }
 

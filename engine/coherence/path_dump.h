@@ -1,7 +1,7 @@
 // engine/coherence/path_dump.h — per-frame path dumps, and the coherence measures read from them.
 //
 // Dump contract (`linework render --dump-paths DIR`, one DIR/frame_NNNN.json per frame):
-//   {"frame": f, "width": W, "height": H, "paths": [{"type": "silhouette|suggestive|crease|border",
+//   {"frame": f, "width": W, "height": H, "paths": [{"type": "silhouette|suggestive|crease|border|layer",
 //    "closed": bool, "rho": ρ, "phi": φ, "level": l, "votes": n, "samples": [{"x": px, "y": px,
 //    "s": arclength px, "t": T(s) = ρs + φ, "u": the coordinate along the SLAM level actually
 //    sampled, in periods of that level's texture, "p": [x, y, z] surface position}]}]}
@@ -25,8 +25,11 @@
 
 namespace lw {
 
+// Paths of vector layers follow the 3D paths with "type": "layer" (their "p" is the drawing
+// point, z = 0).
 [[nodiscard]] std::string path_dump_json(int frame, int width, int height, const std::vector<ScreenPath>& paths,
-                                         const std::vector<PathParam>& params);
+                                         const std::vector<PathParam>& params,
+                                         const std::vector<ParameterizedPaths>& layers = {});
 
 struct DumpSample {
     glm::vec2 pixel;

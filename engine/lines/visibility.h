@@ -44,6 +44,7 @@ struct ScreenSample {
     uint32_t face;       // of the nearest path vertex
     glm::vec3 bary;
     float alpha;
+    float width = 1.0f;  // stroke width multiplier: the per-point widths of vector strokes
 };
 
 struct ScreenPath {

@@ -43,9 +43,15 @@ void FrameRenderer::set_slam(LineType type, const Slam& slam) {
     if (!stroke_pass_) stroke_pass_ = std::make_unique<StrokePass>(*ctx_);
 }
 
+void FrameRenderer::set_layers(std::vector<LayerStyle> styles) {
+    layers_ = std::make_unique<LayerPass>(*ctx_, target_.width, target_.height, std::move(styles));
+    if (!stroke_pass_) stroke_pass_ = std::make_unique<StrokePass>(*ctx_);
+}
+
 Frame FrameRenderer::render(const CameraMatrices& camera, const glm::vec3& eye, const SurfaceStyle& surface,
-                            const LinesDesc& lines, const FrameOutputs& outputs, const CoherenceParams* coherence) {
-    if (!mesh_) throw Error("FrameRenderer: no mesh set");
+                            const LinesDesc& lines, const FrameOutputs& outputs, const CoherenceParams* coherence,
+                            std::vector<LayerFrame>* layers) {
+    if (!mesh_ && !layers_) throw Error("FrameRenderer: no mesh and no layers set");
     const bool draw_lines = lines.enabled && line_mesh_.has_value();
     Timer total;
     Frame frame;
@@ -58,7 +64,10 @@ Frame FrameRenderer::render(const CameraMatrices& camera, const glm::vec3& eye, 
         ctx_->submit_and_wait([&](VkCommandBuffer cmd) {
             timer_.reset(cmd);
             timer_.begin(cmd, "surface");
-            surface_pass_.record(cmd, target_, *mesh_, camera, eye, surface);
+            if (mesh_)
+                surface_pass_.record(cmd, target_, *mesh_, camera, eye, surface);
+            else
+                surface_pass_.record_clear(cmd, target_, surface);
             timer_.end(cmd);
             if (draw_lines) extractor_.record(cmd, eye, lines.params, &timer_);
             if (draw_lines || outputs.depth) record_image_to_buffer(cmd, target_.depth, depth_readback);
@@ -97,6 +106,13 @@ Frame FrameRenderer::render(const CameraMatrices& camera, const glm::vec3& eye, 
         frame.timings.coherence_ms = param_timer.elapsed_ms();
     }
 
+    // Vector layers: their own trackers and stroke geometry.
+    if (layers_ && layers) {
+        Timer layer_timer;
+        frame.layers = layers_->prepare(*layers, coherence != nullptr, lines.sample_spacing_px);
+        frame.timings.coherence_ms += layer_timer.elapsed_ms();
+    }
+
     // Stroke geometry per SLAM-styled type; the other types stay plain lines.
     LinesDesc plain = lines;
     std::array<std::vector<StrokeVertex>, kLineTypeCount> strokes;
@@ -122,12 +138,14 @@ Frame FrameRenderer::render(const CameraMatrices& camera, const glm::vec3& eye, 
     // the submission.
     Buffer quads;
     std::array<Buffer, kLineTypeCount> stroke_buffers;
+    std::vector<Buffer> layer_buffers;
     ctx_->submit_and_wait([&](VkCommandBuffer cmd) {
         timer_.reset(cmd);
         timer_.begin(cmd, "lines draw");
         if (draw_lines) quads = line_pass_.record(*ctx_, cmd, target_, frame.screen_paths, plain);
         for (size_t t = 0; t < strokes.size(); ++t)
             if (!strokes[t].empty()) stroke_buffers[t] = stroke_pass_->record(*ctx_, cmd, target_, strokes[t], *slams_[t]);
+        if (layers_ && layers) layer_buffers = layers_->record(*ctx_, cmd, target_, *stroke_pass_);
         timer_.end(cmd);
         if (outputs.color) record_image_to_buffer(cmd, target_.color, color_readback);
         record_memory_barrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,

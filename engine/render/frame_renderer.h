@@ -20,6 +20,7 @@
 #include "lines/extract_gpu.h"
 #include "lines/line_mesh.h"
 #include "lines/visibility.h"
+#include "render/layer_pass.h"
 #include "render/line_pass.h"
 #include "render/surface_pass.h"
 #include "scene/style.h"
@@ -54,6 +55,7 @@ struct Frame {
     std::vector<LinePath> paths;
     std::vector<ScreenPath> screen_paths;
     std::vector<PathParam> params;  // per screen path, when strokes are parameterized
+    std::vector<LayerResult> layers;  // per vector layer, when the frame had layers
     FrameTimings timings;
 };
 
@@ -75,12 +77,17 @@ public:
     // Lines of `type` are drawn as strokes textured with `slam` (others stay plain lines).
     void set_slam(LineType type, const Slam& slam);
 
+    // Vector-art layers drawn over the 3D lines (render/layer_pass.h), in order.
+    void set_layers(std::vector<LayerStyle> styles);
+
     // One frame. With `coherence`, every visible path is parameterized (§4: votes from the
     // previous frame, RANSAC, splat for the next one) — call it for consecutive frames in
-    // order — and stroked where a SLAM is set; without, lines are drawn plain.
+    // order — and stroked where a SLAM is set; without, lines are drawn plain. `layers`:
+    // this frame of each layer given to set_layers. Without a mesh (a scene of layers
+    // alone) the frame is the background and the layers.
     [[nodiscard]] Frame render(const CameraMatrices& camera, const glm::vec3& eye, const SurfaceStyle& surface,
                                const LinesDesc& lines, const FrameOutputs& outputs = {},
-                               const CoherenceParams* coherence = nullptr);
+                               const CoherenceParams* coherence = nullptr, std::vector<LayerFrame>* layers = nullptr);
 
 private:
     const Context* ctx_;
@@ -95,6 +102,7 @@ private:
     std::unique_ptr<CoherenceTracker> tracker_;  // made on first use: it holds a float target
     std::unique_ptr<StrokePass> stroke_pass_;
     std::array<std::unique_ptr<SlamTexture>, kLineTypeCount> slams_;
+    std::unique_ptr<LayerPass> layers_;
 };
 
 }  // namespace lw

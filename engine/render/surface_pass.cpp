@@ -111,7 +111,7 @@ void draw_mesh(VkCommandBuffer cmd, const GraphicsPipeline& pipeline, RenderTarg
 
 }  // namespace
 
-void SurfacePass::record_depth_only(VkCommandBuffer cmd, RenderTarget& target, const GpuMesh& mesh,
+void SurfacePass::record_depth_only(VkCommandBuffer cmd, RenderTarget& target, const GpuMesh* mesh,
                                     const CameraMatrices& camera, const SurfaceStyle& style) const {
     // The colour is the background: a clear, no fragment shading (much cheaper on lavapipe).
     record_image_barrier(cmd, target.color,
@@ -138,7 +138,7 @@ void SurfacePass::record_depth_only(VkCommandBuffer cmd, RenderTarget& target, c
                               .layerCount = 1,
                               .pDepthAttachment = &depth};
     vkCmdBeginRendering(cmd, &rendering);
-    draw_mesh(cmd, depth_only_, target, mesh, SurfacePush{.view_proj = camera.view_proj});
+    if (mesh) draw_mesh(cmd, depth_only_, target, *mesh, SurfacePush{.view_proj = camera.view_proj});
     vkCmdEndRendering(cmd);
     end_depth(cmd, target);
 }
@@ -146,7 +146,7 @@ void SurfacePass::record_depth_only(VkCommandBuffer cmd, RenderTarget& target, c
 void SurfacePass::record(VkCommandBuffer cmd, RenderTarget& target, const GpuMesh& mesh,
                          const CameraMatrices& camera, const glm::vec3& eye, const SurfaceStyle& style) const {
     if (!style.draw_surface) {
-        record_depth_only(cmd, target, mesh, camera, style);
+        record_depth_only(cmd, target, &mesh, camera, style);
         return;
     }
     target.color_to_attachment(cmd, VK_IMAGE_LAYOUT_UNDEFINED);

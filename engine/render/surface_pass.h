@@ -44,8 +44,13 @@ public:
     void record(VkCommandBuffer cmd, RenderTarget& target, const GpuMesh& mesh, const CameraMatrices& camera,
                 const glm::vec3& eye, const SurfaceStyle& style) const;
 
+    // The same with nothing to draw (a scene of vector layers only): background and far depth.
+    void record_clear(VkCommandBuffer cmd, RenderTarget& target, const SurfaceStyle& style) const {
+        record_depth_only(cmd, target, nullptr, {}, style);
+    }
+
 private:
-    void record_depth_only(VkCommandBuffer cmd, RenderTarget& target, const GpuMesh& mesh,
+    void record_depth_only(VkCommandBuffer cmd, RenderTarget& target, const GpuMesh* mesh,
                            const CameraMatrices& camera, const SurfaceStyle& style) const;
 
     GraphicsPipeline pipeline_;

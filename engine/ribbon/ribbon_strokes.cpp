@@ -24,7 +24,8 @@ void composite_over(const ImageRGBA8& layer, ImageRGBA8& image) {
 
 }  // namespace
 
-RibbonStrokeStats draw_ribbon_strokes(const Context& ctx, const std::vector<ScreenPath>& paths, LineType type,
+RibbonStrokeStats draw_ribbon_strokes(const Context& ctx, const std::vector<ScreenPath>& paths,
+                                      std::optional<LineType> type,
                                       const Exemplar& exemplar, const RibbonStrokeDesc& desc, ImageRGBA8& image) {
     Timer timer;
     RibbonStrokeStats stats;
@@ -36,7 +37,7 @@ RibbonStrokeStats draw_ribbon_strokes(const Context& ctx, const std::vector<Scre
     synthesis.height = image.height;
     for (size_t p = 0; p < paths.size(); ++p) {
         const ScreenPath& path = paths[p];
-        if (!path.visible || path.type != type || path.samples.size() < 2) continue;
+        if (!path.visible || (type && path.type != *type) || path.samples.size() < 2) continue;
         if (path.samples.back().s - path.samples.front().s < 2.0f * synthesis.params.piece) {
             ++stats.skipped;
             continue;

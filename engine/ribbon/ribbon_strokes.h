@@ -13,6 +13,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "core/image.h"
@@ -34,7 +35,9 @@ struct RibbonStrokeStats {
     double ms = 0.0;
 };
 
-RibbonStrokeStats draw_ribbon_strokes(const Context& ctx, const std::vector<ScreenPath>& paths, LineType type,
+// `type`: only paths of this line type (absent: every visible path, as for a vector layer).
+RibbonStrokeStats draw_ribbon_strokes(const Context& ctx, const std::vector<ScreenPath>& paths,
+                                      std::optional<LineType> type,
                                       const Exemplar& exemplar, const RibbonStrokeDesc& desc, ImageRGBA8& image);
 
 }  // namespace lw

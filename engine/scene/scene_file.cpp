@@ -286,6 +286,75 @@ SceneDesc scene_for_model(const std::filesystem::path& model) {
     return scene;
 }
 
+// One 2D transform of a layer: {"center": [x, y], "scale": s, "rotate": degrees}.
+LayerTransform read_layer_transform(ObjectReader& r) {
+    LayerTransform t;
+    if (r.has("center")) {
+        const json& c = r.at("center");
+        if (!c.is_array() || c.size() != 2 || !c[0].is_number() || !c[1].is_number())
+            r.fail_key("center", "expected [x, y] in drawing units");
+        t.center = glm::vec2(c[0].get<float>(), c[1].get<float>());
+    }
+    if (r.has("scale")) t.scale = static_cast<float>(r.number("scale", 1e-4, 1e4));
+    if (r.has("rotate")) t.rotate_deg = static_cast<float>(r.number("rotate", -36000.0, 36000.0));
+    return t;
+}
+
+std::string resolve(const std::filesystem::path& base, const std::string& name) {
+    const std::filesystem::path p(name);
+    return (p.is_absolute() ? p : base / p).string();
+}
+
+// "layers": [{"strokes": FILE, "color", "width_scale", "scale_widths", "outline", "fill",
+//             "slam" | "ribbon" (+ "ribbon_scale"), "taper", "transform" | "keyframes"}, ...]
+std::vector<VectorLayerDesc> read_layers(ObjectReader& scene, const std::filesystem::path& file) {
+    const json& list = scene.at("layers");
+    if (!list.is_array()) scene.fail_key("layers", "expected an array of layers");
+    const std::filesystem::path base = file.parent_path();
+    std::vector<VectorLayerDesc> layers;
+    for (size_t i = 0; i < list.size(); ++i) {
+        ObjectReader r(list[i], "layers[" + std::to_string(i) + "]", file);
+        VectorLayerDesc layer;
+        if (!r.has("strokes")) r.fail_key("strokes", "required (a stroke file, .json or .svg)");
+        layer.strokes = r.string_of("strokes");
+        if (layer.strokes.empty()) r.fail_key("strokes", "expected a stroke file (.json or .svg)");
+        layer.strokes = resolve(base, layer.strokes);
+        if (r.has("color")) layer.color = r.vec3("color", 0.0, 1.0);
+        if (r.has("width_scale")) layer.width_scale = static_cast<float>(r.number("width_scale", 0.0, 1000.0));
+        if (r.has("scale_widths")) layer.scale_widths = r.boolean("scale_widths");
+        if (r.has("outline")) layer.outline = r.boolean("outline");
+        if (r.has("fill")) layer.fill = r.vec3("fill", 0.0, 1.0);
+        if (r.has("slam")) layer.slam = resolve(base, r.string_of("slam"));
+        if (r.has("ribbon")) layer.ribbon = resolve(base, r.string_of("ribbon"));
+        if (!layer.slam.empty() && !layer.ribbon.empty())
+            r.fail_key("ribbon", "a layer is drawn with a SLAM or a ribbon, not both");
+        if (r.has("ribbon_scale")) layer.ribbon_scale = static_cast<float>(r.number("ribbon_scale", 1.0, 4096.0));
+        if (r.has("taper")) layer.taper_px = static_cast<float>(r.number("taper", 0.0, 4096.0));
+        if (r.has("transform")) {
+            ObjectReader t(r.at("transform"), r.path("transform"), file);
+            layer.keys.push_back({0.0f, read_layer_transform(t)});
+            t.reject_unknown();
+        }
+        if (r.has("keyframes")) {
+            if (r.has("transform")) r.fail_key("keyframes", "cannot be combined with transform");
+            const json& keys = r.at("keyframes");
+            if (!keys.is_array() || keys.empty()) r.fail_key("keyframes", "expected a non-empty array");
+            for (size_t k = 0; k < keys.size(); ++k) {
+                ObjectReader key(keys[k], r.path("keyframes") + "[" + std::to_string(k) + "]", file);
+                if (!key.has("time")) key.fail_key("time", "required (seconds)");
+                const auto time = static_cast<float>(key.number("time", 0.0, 1e6));
+                if (!layer.keys.empty() && time <= layer.keys.back().time)
+                    key.fail_key("time", "keyframes must be in increasing time");
+                layer.keys.push_back({time, read_layer_transform(key)});
+                key.reject_unknown();
+            }
+        }
+        r.reject_unknown();
+        layers.push_back(std::move(layer));
+    }
+    return layers;
+}
+
 SceneDesc parse_scene_json(const std::string& text, const std::filesystem::path& source) {
     json root;
     try {
@@ -302,8 +371,10 @@ SceneDesc parse_scene_json(const std::string& text, const std::filesystem::path&
     ObjectReader r(root, "", source);
 
     if (r.has("version") && r.number("version", 1, 1) != 1) r.fail_key("version", "unsupported");
-    if (!r.has("model")) r.fail_key("model", "required (a .gltf/.glb path, or an array of them)");
-    {
+    if (r.has("layers")) scene.layers = read_layers(r, source);
+    if (!r.has("model") && scene.layers.empty())
+        r.fail_key("model", "required (a .gltf/.glb path, or an array of them) unless the scene has layers");
+    if (r.has("model")) {
         const json& m = r.at("model");
         std::vector<std::string> names;
         if (m.is_string()) {

@@ -19,6 +19,7 @@
 #include "scene/camera.h"
 #include "scene/camera_path.h"
 #include "scene/style.h"
+#include "vector/layer.h"
 
 namespace lw {
 
@@ -35,7 +36,7 @@ struct AnimationDesc {
 
 struct SceneDesc {
     std::filesystem::path source;                // the scene file; empty for a bare model
-    std::vector<std::filesystem::path> models;   // at least one
+    std::vector<std::filesystem::path> models;   // none only in a scene of vector layers alone
     int width = 960;
     int height = 720;
     std::optional<ViewCamera> camera;            // absent: frame the bounding box
@@ -46,6 +47,7 @@ struct SceneDesc {
     float fov_deg = 40.0f;                       // used when framing
     SurfaceStyle style;
     LinesDesc lines;
+    std::vector<VectorLayerDesc> layers;         // 2D drawings over the 3D frame, in order
 };
 
 // Reads and validates a scene file. Throws lw::Error("<file>: <key>: <problem>").

@@ -30,7 +30,7 @@ void append_stroke(const ScreenPath& path, const StrokeParams& params, std::vect
         glm::vec2 miter = n_prev + n_next;
         const float miter_len = glm::length(miter);
         glm::vec2 offset(0.0f);
-        float half = 0.5f * params.width;
+        float half = 0.5f * params.width * s[i].width;
         if (params.taper_px > 0.0f && !closed) {
             const float from_end = std::min(s[i].s - s.front().s, s.back().s - s[i].s);
             half *= std::clamp(from_end / std::min(params.taper_px, 0.5f * std::max(length, 1e-3f)), 0.15f, 1.0f);

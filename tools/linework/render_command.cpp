@@ -18,6 +18,7 @@
 #include "gpu/context.h"
 #include "io/image_io.h"
 #include "io/slam_io.h"
+#include "render_layers.h"
 #include "ribbon/exemplar.h"
 #include "ribbon/ribbon_strokes.h"
 #include "lines/svg_export.h"
@@ -174,7 +175,8 @@ int run_render(const RenderOptions& o) {
     }
 
     Timer load_timer;
-    LoadedScene scene = load_scene(desc);
+    const bool has_model = !desc.models.empty();  // a scene may hold vector layers alone
+    LoadedScene scene = has_model ? load_scene(desc) : LoadedScene{.desc = desc};
     apply_camera_overrides(o, scene);
     // Frames: the command line, else the scene's, else the clips' length (one frame without).
     const float fps = desc.animation.fps;
@@ -205,8 +207,12 @@ int run_render(const RenderOptions& o) {
         const std::string& file = desc.lines.styles[size_t(t)].ribbon;
         if (!file.empty()) ribbons[size_t(t)] = make_exemplar(read_image_rgba8(file), file);
     }
+    SceneLayers layers = load_scene_layers(desc);
     const bool strokes = std::any_of(slams.begin(), slams.end(), [](const auto& s) { return s.has_value(); });
-    const bool coherent = desc.lines.enabled && (strokes || !o.dump_paths.empty() || !o.param.empty());
+    const bool layer_slams = std::any_of(layers.styles.begin(), layers.styles.end(),
+                                         [](const LayerStyle& s) { return s.slam.has_value(); });
+    const bool coherent = (desc.lines.enabled && has_model && (strokes || !o.dump_paths.empty() || !o.param.empty())) ||
+                          layer_slams;
     CoherenceParams coherence;
     if (o.param == "arclength") coherence.policy = ParamPolicy::Arclength;
     if (o.param == "stretch") coherence.policy = ParamPolicy::Stretch;
@@ -222,6 +228,13 @@ int run_render(const RenderOptions& o) {
                                          : float(slams[size_t(t)]->height) / desc.lines.styles[size_t(t)].width;
         }
     if (o.length_scale > 0.0f) coherence.length_scale = o.length_scale;
+    for (LayerStyle& style : layers.styles) {  // the same policy and tracker settings for layers
+        style.coherence.policy = coherence.policy;
+        style.coherence.splat_radius_px = coherence.splat_radius_px;
+        style.coherence.ransac = coherence.ransac;
+        style.coherence.min_stroke_length_px = coherence.min_stroke_length_px;
+        if (o.length_scale > 0.0f) style.coherence.length_scale = o.length_scale;
+    }
 
     const bool validation = o.validation || validation_from_environment();
     Context ctx({.device = parse_device_choice(o.device), .validation = validation});
@@ -234,8 +247,11 @@ int run_render(const RenderOptions& o) {
         if (slams[size_t(t)]) renderer.set_slam(LineType(t), *slams[size_t(t)]);
     Timer prepare_timer;
     const bool animated = desc.animation.play && animation_duration(scene) > 0.0f;  // clips move the mesh
-    renderer.set_mesh(animated ? pose_scene(scene, frame_time(range.first - o.warmup, range, fps).seconds) : scene.mesh,
-                      desc.lines.enabled, desc.lines.params.crease_angle_deg);
+    if (has_model)
+        renderer.set_mesh(animated ? pose_scene(scene, frame_time(range.first - o.warmup, range, fps).seconds)
+                                   : scene.mesh,
+                          desc.lines.enabled, desc.lines.params.crease_angle_deg);
+    if (!layers.descs.empty()) renderer.set_layers(layers.styles);
     if (const LineMesh* lm = renderer.line_mesh())
         std::printf("lines: %zu welded vertices, feature size %.4g, curvature in %.0f ms\n", lm->mesh.positions.size(),
                     double(lm->feature_size), prepare_timer.elapsed_ms());
@@ -250,10 +266,14 @@ int run_render(const RenderOptions& o) {
         const PathTime when = frame_time(f, range, fps);
         if (animated && f != range.first - o.warmup) renderer.deform(pose_scene(scene, when.seconds));
         const ViewCamera view = camera_at(desc.camera_path, scene.camera, when);
-        const CameraMatrices camera = camera_matrices(view, float(width) / float(height), scene.bounds);
+        const CameraMatrices camera =
+            has_model ? camera_matrices(view, float(width) / float(height), scene.bounds) : CameraMatrices{};
+        std::vector<LayerFrame> layer_frames =
+            scene_layer_frames(layers, when.seconds, glm::vec2(width, height), desc.lines.sample_spacing_px);
         const bool write = f >= range.first;
         Frame frame = renderer.render(camera, view.eye, desc.style, desc.lines,
-                                      {.color = write, .depth = write && o.exr}, coherent ? &coherence : nullptr);
+                                      {.color = write, .depth = write && o.exr}, coherent ? &coherence : nullptr,
+                                      layers.descs.empty() ? nullptr : &layer_frames);
         for (int t = 0; t < kLineTypeCount && write; ++t)
             if (ribbons[size_t(t)]) {
                 const LineStyle& style = desc.lines.styles[size_t(t)];
@@ -266,6 +286,8 @@ int run_render(const RenderOptions& o) {
                     std::printf("ribbons (%s): %zu paths in %.0f ms, %zu too short\n", line_type_name(LineType(t)),
                                 stats.paths, stats.ms, stats.skipped);
             }
+        // Layers lie over the 3D lines, their ribbons too.
+        if (write) frame.timings.total_ms += draw_layer_ribbons(ctx, layers, frame.layers, uint64_t(f) + 1, frame.image.color);
         ++done;
         total_ms += frame.timings.total_ms;
         progress.update(done, f, frame.timings.total_ms);
@@ -281,7 +303,7 @@ int run_render(const RenderOptions& o) {
         }
         if (!o.dump_paths.empty())
             write_text(std::filesystem::path(o.dump_paths) / frame_name(f, "json"),
-                       path_dump_json(f, desc.width, desc.height, frame.screen_paths, frame.params));
+                       path_dump_json(f, desc.width, desc.height, frame.screen_paths, frame.params, frame.layers));
         if (!sequence) {
             std::printf("frame %d: %.2f ms", f, frame.timings.total_ms);
             for (const PassTime& t : frame.timings.gpu)

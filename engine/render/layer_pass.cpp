@@ -1,0 +1,74 @@
+#include "render/layer_pass.h"
+
+#include "core/error.h"
+
+namespace lw {
+
+namespace {
+
+// Two levels of full ink: a SLAM that draws every fragment at the stroke's colour.
+Slam solid_slam() {
+    Slam slam{.levels = 2, .length = 4, .height = 2, .exemplar = "procedural:solid"};
+    slam.ink.assign(size_t(slam.levels) * slam.length * slam.height, 1.0f);
+    return slam;
+}
+
+}  // namespace
+
+LayerPass::LayerPass(const Context& ctx, uint32_t width, uint32_t height, std::vector<LayerStyle> styles)
+    : solid_(std::make_unique<SlamTexture>(ctx, solid_slam())) {
+    for (LayerStyle& style : styles) {
+        Layer layer{.style = std::move(style)};
+        if (layer.style.slam) {
+            layer.texture = std::make_unique<SlamTexture>(ctx, *layer.style.slam);
+            layer.tracker = std::make_unique<CoherenceTracker>(ctx, width, height);
+        }
+        layers_.push_back(std::move(layer));
+    }
+}
+
+std::vector<LayerResult> LayerPass::prepare(std::vector<LayerFrame>& frames, bool coherent, float spacing) {
+    if (frames.size() != layers_.size()) throw Error("LayerPass: one LayerFrame per layer expected");
+    std::vector<LayerResult> results(frames.size());
+    for (size_t i = 0; i < layers_.size(); ++i) {
+        Layer& layer = layers_[i];
+        LayerFrame& frame = frames[i];
+        LayerResult& result = results[i];
+        layer.fill.clear();
+        layer.strokes.clear();
+        for (const glm::vec2& p : frame.fill)
+            layer.fill.push_back({p, glm::vec3(0.0f, 0.5f, 1.0f), glm::vec4(layer.style.fill_color, 1.0f)});
+        if (layer.tracker) {
+            CoherenceParams params = layer.style.coherence;
+            if (!coherent) params.policy = ParamPolicy::Arclength;
+            result.params = layer.tracker->update(frame.paths, frame.camera, {}, params);
+            for (size_t p = 0; p < frame.paths.size(); ++p)
+                frame.paths[p] = resample_at_phase(frame.paths[p], result.params[p], spacing);
+        } else {
+            result.params.assign(frame.paths.size(), PathParam{});
+        }
+        for (size_t p = 0; p < frame.paths.size() && layer.style.strokes; ++p) {
+            const PathParam& param = result.params[p];
+            append_stroke(frame.paths[p],
+                          StrokeParams{.rho = param.rho, .phi = param.phi, .fold = param.fold, .width = 1.0f,
+                                       .color = frame.colors[frame.paths[p].source],
+                                       .taper_px = layer.style.taper_px},
+                          layer.strokes);
+        }
+        result.paths = frame.paths;
+    }
+    return results;
+}
+
+std::vector<Buffer> LayerPass::record(const Context& ctx, VkCommandBuffer cmd, const RenderTarget& target,
+                                      const StrokePass& strokes) const {
+    std::vector<Buffer> buffers;
+    for (const Layer& layer : layers_) {
+        if (!layer.fill.empty()) buffers.push_back(strokes.record(ctx, cmd, target, layer.fill, *solid_));
+        if (!layer.strokes.empty())
+            buffers.push_back(strokes.record(ctx, cmd, target, layer.strokes, layer.texture ? *layer.texture : *solid_));
+    }
+    return buffers;
+}
+
+}  // namespace lw

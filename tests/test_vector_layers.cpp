@@ -1,0 +1,153 @@
+// Vector-art layers: fills, 2D transforms and their keyframes, clipping, scene keys, and the
+// SLAM paper's zoom (Fig. 5) measured from dumps.
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "coherence/path_dump.h"
+#include "core/image.h"
+#include "io/image_io.h"
+#include "scene/scene_file.h"
+#include "test_support.h"
+#include "vector/fill.h"
+#include "vector/layer.h"
+
+namespace lw {
+namespace {
+
+namespace fs = std::filesystem;
+
+float triangles_area(const std::vector<glm::vec2>& t) {
+    float area = 0.0f;
+    for (size_t i = 0; i + 2 < t.size(); i += 3) {
+        const glm::vec2 a = t[i + 1] - t[i], b = t[i + 2] - t[i];
+        area += 0.5f * std::abs(a.x * b.y - a.y * b.x);
+    }
+    return area;
+}
+
+std::vector<glm::vec2> square(glm::vec2 lo, float side) {
+    return {lo, lo + glm::vec2(side, 0), lo + glm::vec2(side), lo + glm::vec2(0, side)};
+}
+
+TEST(VectorFill, EvenOddCutsHolesAndOverlaps) {
+    // A 10×10 square with a 4×4 hole: 84.
+    EXPECT_NEAR(triangles_area(triangulate_even_odd({square({0, 0}, 10), square({3, 3}, 4)})), 84.0f, 1e-3f);
+    // Two 10×10 squares overlapping in 5×5: even-odd leaves 100 + 100 − 2·25.
+    EXPECT_NEAR(triangles_area(triangulate_even_odd({square({0, 0}, 10), square({5, 5}, 10)})), 150.0f, 1e-3f);
+    // A bow tie (its edges cross at (5, 5)): two triangles of 25.
+    EXPECT_NEAR(triangles_area(triangulate_even_odd({{{0, 0}, {10, 10}, {10, 0}, {0, 10}}})), 50.0f, 1e-3f);
+    EXPECT_TRUE(triangulate_even_odd({{{0, 0}, {1, 1}}}).empty());
+}
+
+TEST(VectorLayer, CameraMatchesThePixelMapAndKeysZoomGeometrically) {
+    const glm::vec2 size(320, 200);
+    const LayerTransform t{.center = glm::vec2(40, -12), .scale = 3.5f, .rotate_deg = 30.0f};
+    const CameraMatrices camera = layer_camera(t, size);
+    for (const glm::vec2 p : {glm::vec2(0, 0), glm::vec2(40, -12), glm::vec2(-100, 73), glm::vec2(12.5f, 300)}) {
+        const glm::vec2 a = layer_to_pixel(t, p, size);
+        const glm::vec3 b = project_to_pixel(camera, glm::vec3(p, 0.0f), size.x, size.y);
+        EXPECT_NEAR(a.x, b.x, 1e-3f);
+        EXPECT_NEAR(a.y, b.y, 1e-3f);
+        EXPECT_GT(b.z, 0.0f);
+    }
+    EXPECT_EQ(layer_to_pixel(t, glm::vec2(40, -12), size), 0.5f * size);  // the centre goes to the middle
+    const std::vector<LayerKey> keys{{0.0f, {.center = glm::vec2(0, 0), .scale = 1.0f}},
+                                     {2.0f, {.center = glm::vec2(10, 20), .scale = 16.0f, .rotate_deg = 90.0f}}};
+    const LayerTransform mid = layer_transform_at(keys, 1.0f);
+    EXPECT_NEAR(mid.scale, 4.0f, 1e-4f);  // √(1 · 16): a constant zoom rate
+    EXPECT_NEAR(mid.rotate_deg, 45.0f, 1e-4f);
+    EXPECT_NEAR(mid.center->x, 5.0f, 1e-4f);
+    EXPECT_EQ(layer_transform_at(keys, -1.0f).scale, 1.0f);
+    EXPECT_EQ(layer_transform_at(keys, 5.0f).scale, 16.0f);
+}
+
+TEST(VectorLayer, FramesSampleStrokesAndCutThemToTheImage) {
+    StrokeSet drawing;
+    drawing.strokes.push_back(make_stroke({{10, 50}, {150, 50}, {400, 50}}, 3.0f, glm::vec3(1, 0, 0)));
+    drawing.strokes.push_back(make_stroke(square({20, 20}, 20), 2.0f, glm::vec3(0, 0, 1), true));
+    VectorLayerDesc desc;
+    const LayerFrame frame = layer_frame(drawing, {}, desc, LayerTransform{}, glm::vec2(200, 100), 2.0f);
+    ASSERT_EQ(frame.paths.size(), 2u);
+    // The line leaves the image at x = 200: kept up to the 16 px margin, sampled every 2 px.
+    const ScreenPath& line = frame.paths[0];
+    EXPECT_FALSE(line.closed);
+    EXPECT_LE(line.samples.back().pixel.x, 216.0f);
+    EXPECT_GE(line.samples.back().pixel.x, 214.0f);
+    for (size_t k = 1; k < line.samples.size(); ++k)
+        EXPECT_LE(glm::length(line.samples[k].pixel - line.samples[k - 1].pixel), 2.0f + 1e-4f);
+    EXPECT_EQ(line.samples.front().width, 3.0f);
+    EXPECT_EQ(frame.colors[line.source], glm::vec3(1, 0, 0));
+    // The square stays a loop, with its corners among the samples.
+    const ScreenPath& loop = frame.paths[1];
+    EXPECT_TRUE(loop.closed);
+    EXPECT_EQ(loop.samples.size(), 40u);
+    EXPECT_EQ(frame.colors[loop.source], glm::vec3(0, 0, 1));
+}
+
+TEST(VectorLayer, SceneKeysAreCheckedByName) {
+    const fs::path file = "/tmp/layers.json";
+    const SceneDesc ok = parse_scene_json(
+        R"({"layers": [{"strokes": "a.svg", "fill": [1, 0, 0], "slam": "s.exr",
+                        "keyframes": [{"time": 0, "scale": 1}, {"time": 2, "center": [5, 6], "scale": 16}]}]})",
+        file);
+    EXPECT_TRUE(ok.models.empty());
+    ASSERT_EQ(ok.layers.size(), 1u);
+    EXPECT_EQ(ok.layers[0].strokes, "/tmp/a.svg");
+    EXPECT_EQ(ok.layers[0].keys.size(), 2u);
+    auto error_of = [&](const std::string& text) {
+        try {
+            (void)parse_scene_json(text, file);
+        } catch (const std::exception& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    EXPECT_EQ(error_of(R"({"layers": [{"fill": [1, 0, 0]}]})"),
+              "/tmp/layers.json: layers[0].strokes: required (a stroke file, .json or .svg)");
+    EXPECT_NE(error_of(R"({"layers": [{"strokes": "a.svg", "keyframes": [{"time": 1}, {"time": 0}]}]})")
+                  .find("layers[0].keyframes[1].time: keyframes must be in increasing time"),
+              std::string::npos);
+    EXPECT_NE(error_of(R"({"layers": [{"strokes": "a.svg", "wobble": 1}]})").find("layers[0]"), std::string::npos);
+    EXPECT_NE(error_of(R"({"size": [10, 10]})").find("model: required"), std::string::npos);
+}
+
+// Fig. 5 of the SLAM paper: a drawing zoomed 16× keeps its texture period on screen within
+// one factor of 2 of the target Lmax/κ, because the level follows ρ and folds.
+TEST(VectorLayerCli, ZoomKeepsTheTexturePeriod) {
+    const fs::path dir = test::temp_dir();
+    const fs::path scene = dir / "zoom.json";
+    std::ofstream(scene) << R"({"size": [160, 120], "animation": {"fps": 24, "frames": [0, 23]},
+        "layers": [{"strokes": ")" << (test::source_dir() / "scenes/drawings/spiral.svg").string()
+                         << R"(", "slam": ")" << (test::source_dir() / "scenes/slams/dots.exr").string() << R"(",
+        "fill": [0.9, 0.8, 0.2],
+        "keyframes": [{"time": 0, "center": [320, 240], "scale": 0.25},
+                      {"time": 0.9583, "center": [320, 240], "scale": 4}]}]})";
+    const auto r = test::run_linework("render " + test::quote(scene) + " -o " + test::quote(dir / "out") +
+                                      " --device cpu --dump-paths " + test::quote(dir / "dump"));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    std::vector<PathDump> dumps;
+    for (int f = 0; f < 24; ++f) {
+        char name[32];
+        std::snprintf(name, sizeof(name), "frame_%04d.json", f);
+        dumps.push_back(read_path_dump(dir / "dump" / name));
+        for (const auto& path : dumps.back().paths) EXPECT_EQ(path.type, "layer");
+    }
+    const StretchMeasure stretch = measure_stretch(dumps);
+    // κ = SLAM height / median stroke width = 32 / 2: the period's target is 1024 / 16 = 64 px.
+    EXPECT_GE(stretch.share_in_band, 0.99);
+    EXPECT_GE(stretch.median_ds_du, 32.0);
+    EXPECT_LE(stretch.median_ds_du, 64.0 * 1.01);
+    RecordProperty("zoom_share_in_band", std::to_string(stretch.share_in_band));
+    // The last frame: the fill (yellow) shows between strokes at the spiral's centre.
+    const ImageRGBA8 last = read_image_rgba8(dir / "out/frame_0023.png");
+    size_t yellow = 0;
+    for (size_t i = 0; i < last.pixels.size(); i += 4)
+        yellow += last.pixels[i] > 200 && last.pixels[i + 1] > 180 && last.pixels[i + 2] < 90;
+    EXPECT_GT(yellow, 100u);
+}
+
+}  // namespace
+}  // namespace lw
