@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
+#include "vector/json_object.h"
 
 namespace lw {
 
@@ -75,15 +76,7 @@ private:
 
 Curve2D parse_curve_json(const std::string& text, const std::string& where) {
     using json = nlohmann::json;
-    json root;
-    try {
-        root = json::parse(text);
-    } catch (const json::parse_error& e) {
-        throw Error(where + ": not valid JSON (" + std::string(e.what()) + ")");
-    }
-    if (!root.is_object()) throw Error(where + ": the curve must be a JSON object with \"points\"");
-    for (const auto& [key, value] : root.items())
-        if (key != "points" && key != "closed") throw Error(where + ": " + key + ": unknown key");
+    json root = parse_json_object(text, where, {"points", "closed"}, "the curve must be a JSON object with \"points\"");
     if (!root.contains("points")) throw Error(where + ": points: missing (an array of [x, y] pairs)");
     const json& points = root["points"];
     if (!points.is_array()) throw Error(where + ": points: expected an array of [x, y] pairs");

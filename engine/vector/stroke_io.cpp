@@ -12,6 +12,7 @@
 
 #include "core/error.h"
 #include "vector/curve.h"
+#include "vector/json_object.h"
 
 namespace lw {
 
@@ -270,15 +271,8 @@ glm::vec3 parse_svg_color(const std::string& text, const std::string& where) {
 
 StrokeSet parse_strokes_json(const std::string& text, const std::string& where) {
     using json = nlohmann::json;
-    json root;
-    try {
-        root = json::parse(text);
-    } catch (const json::parse_error& e) {
-        throw Error(where + ": not valid JSON (" + std::string(e.what()) + ")");
-    }
-    if (!root.is_object()) throw Error(where + ": a stroke file must be a JSON object with \"strokes\"");
-    for (const auto& [key, value] : root.items())
-        if (key != "strokes" && key != "size") throw Error(where + ": " + key + ": unknown key");
+    json root = parse_json_object(text, where, {"strokes", "size"},
+                                  "a stroke file must be a JSON object with \"strokes\"");
     if (!root.contains("strokes") || !root["strokes"].is_array())
         throw Error(where + ": strokes: missing or not an array");
     StrokeSet set;

@@ -11,22 +11,13 @@
 #include "pattern/fidelity.h"
 #include "pattern/synthesis.h"
 #include "vector/stroke_io.h"
+#include "stats.h"
 
 namespace lw::bench {
 
 namespace {
 
 constexpr float kPi = 3.14159265f;
-
-struct Stats {
-    double median = 0, min = 0, max = 0;
-};
-Stats stats(std::vector<double> v) {
-    if (v.empty()) return {};
-    std::sort(v.begin(), v.end());
-    const size_t n = v.size();
-    return {n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]), v.front(), v.back()};
-}
 
 Stroke segment(glm::vec2 c, float angle, float length, float width, glm::vec3 color = glm::vec3(0.0f)) {
     const glm::vec2 d = 0.5f * length * glm::vec2(std::cos(angle), std::sin(angle));

@@ -11,22 +11,9 @@
 #include "ribbon/dp_reference.h"
 #include "ribbon/exemplar_gen.h"
 #include "ribbon/problem.h"
+#include "stats.h"
 
 namespace lw::bench {
-
-namespace {
-
-struct Stats {
-    double median = 0, min = 0, max = 0;
-};
-Stats stats(std::vector<double> v) {
-    if (v.empty()) return {};
-    std::sort(v.begin(), v.end());
-    const size_t n = v.size();
-    return {n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]), v.front(), v.back()};
-}
-
-}  // namespace
 
 CLI::App* add_ribbon_bench(CLI::App& app, RibbonBenchOptions& o) {
     CLI::App* cmd = app.add_subcommand(

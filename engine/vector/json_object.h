@@ -1,0 +1,34 @@
+// engine/vector/json_object.h — the top of a JSON input file (curves, strokes): one object
+// whose keys are all known; every error names the file (`where`).
+#pragma once
+
+#include <initializer_list>
+#include <string>
+#include <string_view>
+
+#include <nlohmann/json.hpp>
+
+#include "core/error.h"
+
+namespace lw {
+
+// `shape` says what the object should be, for the message when it is not one
+// (e.g. "a curve must be a JSON object with \"points\"").
+inline nlohmann::json parse_json_object(const std::string& text, const std::string& where,
+                                        std::initializer_list<std::string_view> keys, const std::string& shape) {
+    nlohmann::json root;
+    try {
+        root = nlohmann::json::parse(text);
+    } catch (const nlohmann::json::parse_error& e) {
+        throw Error(where + ": not valid JSON (" + std::string(e.what()) + ")");
+    }
+    if (!root.is_object()) throw Error(where + ": " + shape);
+    for (const auto& [key, value] : root.items()) {
+        bool known = false;
+        for (std::string_view k : keys) known = known || key == k;
+        if (!known) throw Error(where + ": " + key + ": unknown key");
+    }
+    return root;
+}
+
+}  // namespace lw
