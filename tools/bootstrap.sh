@@ -13,6 +13,7 @@ packages=(
   libglm-dev libtinygltf-dev nlohmann-json3-dev libcli11-dev
   libopenimageio-dev libglfw3-dev
   libcgal-dev                               # Delaunay triangulations of the stroke-pattern synthesizer
+  libfftw3-dev                              # FFTs of the SLAM synthesizer (fftw3f)
   libgtest-dev libbenchmark-dev
 )
 missing=()

@@ -9,6 +9,7 @@
 //   linework-bench ribbon  [--pattern NAME] [--exemplar-size WxH] [--rows N] [--device D]
 //   linework-bench pattern [--elements N] [--path-elements N] [--repeats R]   (CPU)
 //   linework-bench hatch   [--count N] [--training-size N] [--window N] [--repeats R]   (CPU)
+//   linework-bench slam    [--levels N] [--iterations K] [--length L] [--threads T] [--repeat R]
 //
 // surface: the shaded surface pass (colour + depth), GPU time from timestamps.
 // lines:   the whole line frame (surface + extraction + depth readback + chaining +
@@ -35,6 +36,7 @@
 #include "stroke/slam.h"
 #include "pattern_bench.h"
 #include "ribbon_bench.h"
+#include "slam_bench.h"
 
 namespace {
 
@@ -225,6 +227,8 @@ int main(int argc, char** argv) {
     CLI::App* pattern_cmd = lw::bench::add_pattern_bench(app, pattern);
     lw::bench::HatchBenchOptions hatch;
     CLI::App* hatch_cmd = lw::bench::add_hatch_bench(app, hatch);
+    lw::bench::SlamBenchOptions slam;
+    CLI::App* slam_cmd = lw::bench::add_slam_bench(app, slam);
     lines_cmd->add_flag("--coherence", lines.coherence,
                         "Also parameterize every visible path coherently (splat, votes, RANSAC) and time it");
     lines_cmd->add_flag("--strokes", lines.strokes,
@@ -244,6 +248,7 @@ int main(int argc, char** argv) {
         if (ribbon_cmd->parsed()) return lw::bench::run_ribbon_bench(ribbon);
         if (pattern_cmd->parsed()) return lw::bench::run_pattern_bench(pattern);
         if (hatch_cmd->parsed()) return lw::bench::run_hatch_bench(hatch);
+        if (slam_cmd->parsed()) return lw::bench::run_slam_bench(slam);
     } catch (const lw::Error& e) {
         std::fprintf(stderr, "linework-bench: error: %s\n", e.what());
         return e.exit_code();

@@ -21,6 +21,7 @@ Runner add_render_command(CLI::App& app);
 Runner add_diff_command(CLI::App& app);
 Runner add_devices_command(CLI::App& app);
 Runner add_slam_pattern_command(CLI::App& app);
+Runner add_slam_command(CLI::App& app);
 Runner add_coherence_report_command(CLI::App& app);
 Runner add_ribbon_command(CLI::App& app);
 Runner add_ribbon_exemplar_command(CLI::App& app);

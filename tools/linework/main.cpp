@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
     add(&lw::cli::add_render_command);
     add(&lw::cli::add_diff_command);
     add(&lw::cli::add_devices_command);
+    add(&lw::cli::add_slam_command);
     add(&lw::cli::add_slam_pattern_command);
     add(&lw::cli::add_coherence_report_command);
     add(&lw::cli::add_ribbon_command);

@@ -4,8 +4,6 @@
 #include <memory>
 #include <optional>
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -13,6 +11,7 @@
 
 #include "coherence/path_dump.h"
 #include "commands.h"
+#include "progress.h"
 #include "core/error.h"
 #include "core/timer.h"
 #include "gpu/context.h"
@@ -118,27 +117,6 @@ std::string frame_name(int frame, const char* extension) {
     std::snprintf(name, sizeof name, "frame_%04d.%s", frame, extension);
     return name;
 }
-
-// A progress bar on a terminal, a line every tenth of the work otherwise (logs stay short).
-class Progress {
-public:
-    explicit Progress(int total) : total_(total), tty_(isatty(fileno(stderr)) != 0) {}
-    void update(int done, int frame, double ms) {
-        if (total_ <= 1) return;
-        if (tty_) {
-            const int width = 30, filled = width * done / total_;
-            std::fprintf(stderr, "\r[%s%s] %d/%d frame %d (%.0f ms)%s", std::string(size_t(filled), '#').c_str(),
-                         std::string(size_t(width - filled), '.').c_str(), done, total_, frame, ms,
-                         done == total_ ? "\n" : "");
-        } else if (done == total_ || done * 10 / total_ != (done - 1) * 10 / total_) {
-            std::fprintf(stderr, "progress: %d/%d frames (frame %d, %.0f ms)\n", done, total_, frame, ms);
-        }
-    }
-
-private:
-    int total_;
-    bool tty_;
-};
 
 void write_text(const std::filesystem::path& path, const std::string& text) {
     std::ofstream out(path, std::ios::binary);
@@ -259,7 +237,7 @@ int run_render(const RenderOptions& o) {
         std::printf("frames: %d to %d%s at %g fps\n", range.first, range.last,
                     o.warmup ? (", after " + std::to_string(o.warmup) + " warm-up frames").c_str() : "", double(fps));
 
-    Progress progress(range.last - range.first + 1 + o.warmup);
+    Progress progress(range.last - range.first + 1 + o.warmup, "frame");
     int done = 0;
     double total_ms = 0.0;
     for (int f = range.first - o.warmup; f <= range.last; ++f) {

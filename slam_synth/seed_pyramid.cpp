@@ -1,0 +1,65 @@
+#include "seed_pyramid.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <random>
+#include <vector>
+
+namespace lw::synth {
+
+Plane filtered_seed(int rows, int length, uint32_t seed) {
+    // mt19937's output sequence is fixed by the standard; the float conversion is ours
+    // (std::uniform_real_distribution may differ between library versions).
+    std::mt19937 rng(seed);
+    Plane source(rows, length);
+    for (float& v : source.v) v = float(rng() >> 8) * (1.0f / 16777216.0f);
+    // Gaussian of width 5 (σ = 1) along the length only, periodic.
+    double weight[5], total = 0.0;
+    for (int k = -2; k <= 2; ++k) total += weight[k + 2] = std::exp(-0.5 * k * k);
+    Plane filtered(rows, length);
+    for (int r = 0; r < rows; ++r)
+        for (int x = 0; x < length; ++x) {
+            double sum = 0.0;
+            for (int k = -2; k <= 2; ++k) sum += weight[k + 2] * source.at(r, (x + k + length) % length);
+            filtered.at(r, x) = float(sum / total);
+        }
+    // Histogram matching to uniform: the value of rank i becomes (i + ½)/n (ties by index).
+    std::vector<size_t> order(filtered.size());
+    std::iota(order.begin(), order.end(), size_t(0));
+    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return filtered.v[a] < filtered.v[b]; });
+    const double n = double(order.size());
+    for (size_t i = 0; i < order.size(); ++i) filtered.v[order[i]] = float((double(i) + 0.5) / n);
+    return filtered;
+}
+
+Plane resample_length(const Plane& in, int cols) {
+    Plane out(in.rows, cols);
+    for (int x = 0; x < cols; ++x) {
+        // Exact rational position x·in.cols/cols: integer part and remainder.
+        const long long num = (long long)x * in.cols;
+        const int i0 = int(num / cols);
+        const float f = float(num % cols) / float(cols);
+        const int i1 = (i0 + 1) % in.cols;
+        for (int r = 0; r < in.rows; ++r) out.at(r, x) = f == 0.0f ? in.at(r, i0) : (1.0f - f) * in.at(r, i0) + f * in.at(r, i1);
+    }
+    return out;
+}
+
+Plane seed_level(const Plane& half, double level, int cols) {
+    const float alpha = float(2.0 * level - 1.0);
+    // W_1.0 = [W_0.5 W_0.5] scaled to `cols`: W_0.5 sampled at twice the rate, wrapping.
+    Plane whole(half.rows, 2 * half.cols);
+    for (int r = 0; r < half.rows; ++r)
+        for (int x = 0; x < whole.cols; ++x) whole.at(r, x) = half.at(r, x % half.cols);
+    const Plane a = resample_length(half, cols), b = resample_length(whole, cols);
+    Plane out(half.rows, cols);
+    for (size_t i = 0; i < out.size(); ++i) {
+        if (alpha == 0.0f) out.v[i] = a.v[i];
+        else if (alpha == 1.0f) out.v[i] = b.v[i];
+        else out.v[i] = alpha * b.v[i] + (1.0f - alpha) * a.v[i];
+    }
+    return out;
+}
+
+}  // namespace lw::synth

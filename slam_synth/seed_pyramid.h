@@ -1,0 +1,28 @@
+// slam_synth/seed_pyramid.h — the synthesis seeds of a SLAM (Bénard et al. 2010 §3.2.1).
+//
+// W_source: uniform white noise, `rows` × `length` (Lmax). W_f: W_source filtered along the
+// length only by a Gaussian of width 5 texels (σ = 1, taps −2 … 2, periodic: it keeps
+// the seeds from aliasing when they are scaled), then histogram-matched back to uniform on
+// (0, 1) (rank r of n ↦ (r + ½)/n). W_0.5: W_f scaled to half its length; W_1.0 = [W_0.5 W_0.5];
+// W_l = α·W_1.0 + (1 − α)·W_0.5 with α = 2l − 1, both scaled to the level's length by
+// periodic linear interpolation. Self-similarity and smooth variation hold by construction,
+// and each A_l is synthesized from W_l (slam_builder.h). Deterministic for a given seed.
+#pragma once
+
+#include <cstdint>
+
+#include "fft.h"
+
+namespace lw::synth {
+
+// W_f (rows × length).
+[[nodiscard]] Plane filtered_seed(int rows, int length, uint32_t seed);
+
+// Periodic linear resampling along the rows: output texel x samples the input at
+// x·in.cols/cols (so equal lengths copy exactly, and halving keeps the even texels).
+[[nodiscard]] Plane resample_length(const Plane& in, int cols);
+
+// W_l at `cols` texels from W_0.5 (= resample_length(W_f, length/2)).
+[[nodiscard]] Plane seed_level(const Plane& half, double level, int cols);
+
+}  // namespace lw::synth

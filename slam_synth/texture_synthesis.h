@@ -1,0 +1,38 @@
+// slam_synth/texture_synthesis.h — Portilla–Simoncelli synthesis (2000, §4; textureSynth's
+// textureSynthesis): starting from a seed image, each iteration builds the pyramid and
+// imposes the target statistics coarse to fine, then the pixel statistics.
+//
+// Input: target statistics (texture_statistics.h, from an exemplar of any length but the same
+// row count and model), a seed of the geometry's size, and the iteration count. Output: the
+// synthesized image, the seed's size.
+//
+// Scope (Bénard et al. 2010 §3.2.2): `Global` is the model as published (the 1D case of
+// the paper: every statistic per texture). `Rows` is the paper's 1.5D modification, as the
+// authors' code does it: the final mean/variance step is done per row (so rows keep the
+// exemplar's profile across the stroke, and the zero padding stays empty); skewness,
+// kurtosis and range are then still imposed globally — followed here by three alternations
+// of range and per-row mean/variance, which keep every row within 5 % of the exemplar's
+// (the range clamp alone moves inky rows by up to 10 %). The output is then not clamped to
+// the exemplar's range by its last step; callers clamp (slam_builder does, to [0, 1]).
+#pragma once
+
+#include <functional>
+
+#include "steerable_pyramid.h"
+#include "texture_statistics.h"
+
+namespace lw::synth {
+
+enum class StatisticsScope { Global, Rows };
+
+struct SynthesisDesc {
+    int iterations = 50;  // textureSynth's default; the authors' SLAM code runs 15 per level
+    StatisticsScope scope = StatisticsScope::Rows;
+    // Called after each iteration with its index and the current image (for reports).
+    std::function<void(int iteration, const Plane& image)> on_iteration;
+};
+
+[[nodiscard]] Plane synthesize_texture(const TextureStatistics& target, const Plane& seed, const PyramidGeometry& g,
+                                       const SynthesisDesc& desc = {});
+
+}  // namespace lw::synth

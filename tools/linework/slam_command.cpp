@@ -1,0 +1,124 @@
+// `linework slam EXEMPLAR.png -o OUT.exr` — a self-similar line artmap synthesized from one
+// exemplar (Bénard et al. 2010 §3.2: Portilla–Simoncelli synthesis on a seed pyramid).
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+#include "commands.h"
+#include "core/error.h"
+#include "io/image_io.h"
+#include "io/slam_io.h"
+#include "progress.h"
+#include "slam_synth/slam_builder.h"
+#include "slam_synth/slam_conditions.h"
+
+namespace lw::cli {
+
+namespace {
+
+struct SlamOptions {
+    std::string exemplar, output, preview;
+    int levels = 17, length = 1024, iterations = 15, threads = 0;
+    unsigned seed = 1;
+    bool global = false, report = false;
+};
+
+std::string decibels(double db) {
+    char text[32];
+    if (std::isinf(db)) return db > 0 ? "inf" : "-inf";
+    std::snprintf(text, sizeof text, "%.1f", db);
+    return text;
+}
+
+void print_report(const synth::SlamSynthesis& s, const synth::SlamSynthesisDesc& desc) {
+    // textureSynth's per-group SNR, for the first and the last level against their seeds.
+    const int first = 0, last = s.slam.levels - 1;
+    const auto a = synth::level_statistics_report(s, desc, first), b = synth::level_statistics_report(s, desc, last);
+    std::printf("statistics, SNR in dB against the exemplar (seed -> synthesized):\n");
+    std::printf("  %-30s %-18s %s\n", "group", "level 0.5", "level 1.0");
+    for (size_t g = 0; g < a.seed.size(); ++g)
+        std::printf("  %-30s %6s -> %-8s %6s -> %s\n", a.seed[g].name.c_str(), decibels(a.seed[g].snr_db).c_str(),
+                    decibels(a.synthesized[g].snr_db).c_str(), decibels(b.seed[g].snr_db).c_str(),
+                    decibels(b.synthesized[g].snr_db).c_str());
+}
+
+int run_slam(const SlamOptions& o) {
+    if (std::filesystem::path(o.output).extension() != ".exr")
+        throw usage_error("-o: " + o.output + ": a SLAM file is OpenEXR (.exr)");
+    const synth::Plane ink = synth::exemplar_ink(read_image_rgba8(o.exemplar));
+    synth::SlamSynthesisDesc desc{.levels = o.levels,
+                                  .length = o.length,
+                                  .iterations = o.iterations,
+                                  .seed = o.seed,
+                                  .scope = o.global ? synth::StatisticsScope::Global : synth::StatisticsScope::Rows,
+                                  .threads = o.threads,
+                                  .exemplar_name = o.exemplar};
+    const synth::SlamModel m = synth::slam_model(ink.rows, o.exemplar);
+    std::printf("exemplar: %s (%dx%d), padded to %d rows; %d scales, 4 orientations, Na = 9; %s statistics\n",
+                o.exemplar.c_str(), ink.cols, ink.rows, m.padded_rows, m.scales,
+                o.global ? "global (1D)" : "per-row mean/variance (1.5D)");
+    std::printf("SLAM: %d levels, Lmax = %d, %d iterations per level, seed %u\n", o.levels, o.length, o.iterations, o.seed);
+    std::fflush(stdout);
+
+    Progress progress(o.levels, "level");
+    int done = 0;
+    desc.on_level = [&](const synth::SlamLevelReport& r) { progress.update(++done, r.index, r.ms); };
+    const synth::SlamSynthesis s = synth::synthesize_slam(ink, desc);
+    if (s.exemplar_cols != ink.cols)
+        std::printf("exemplar cropped to %d columns (a multiple of %d)\n", s.exemplar_cols, m.unit);
+    for (const synth::SlamLevelReport& r : s.reports)
+        std::printf("  level %2d  l = %.4f  %5d texels  %7.1f ms\n", r.index, r.level, r.length, r.ms);
+    std::printf("analysis %.0f ms, synthesis %.0f ms\n", s.analysis_ms, s.synthesis_ms);
+
+    const synth::SlamConditions c = synth::measure_slam_conditions(s);
+    std::printf("top level periodic: left half vs right half differ by at most %.3g\n", c.top_periodicity);
+    std::printf("self-similarity error (A_1.0 vs [A_0.5 A_0.5]): %.3g\n", c.self_similarity);
+    std::printf("mean |A_l - A_l+| between adjacent levels: %.4f\n", c.mean_level_step);
+    std::printf("tiling: wrap-around column step %.4f; interior mean %.4f, largest %.4f (the wrap ranks above %.0f %% of them)\n",
+                c.wrap_difference, c.interior_difference, c.interior_max, 100.0 * c.wrap_rank);
+    if (o.report) print_report(s, desc);
+
+    write_slam(o.output, s.slam);
+    std::printf("wrote %s\n", o.output.c_str());
+    if (!o.preview.empty()) {
+        write_png(o.preview, synth::contact_sheet(s, ink));
+        std::printf("wrote %s\n", o.preview.c_str());
+    }
+    return 0;
+}
+
+}  // namespace
+
+Runner add_slam_command(CLI::App& app) {
+    auto o = std::make_shared<SlamOptions>();
+    CLI::App* cmd = app.add_subcommand(
+        "slam",
+        "Synthesize a self-similar line artmap (SLAM) from one stroke exemplar (Bénard et al. 2010).\n"
+        "Each level A_l, l = 0.5 … 1, is a Portilla–Simoncelli texture synthesized at length l·Lmax from\n"
+        "a seed W_l of a seed pyramid built so that A_1.0 = [A_0.5 A_0.5] and adjacent levels differ\n"
+        "little. Rows across the stroke keep the exemplar's mean and variance (1.5D).\n"
+        "Example: linework slam scenes/exemplars/slam-dots.png -o dots.exr --preview dots.png");
+    cmd->add_option("exemplar", o->exemplar,
+                    "Exemplar image, 4–64 rows across the stroke: its alpha is the ink when it has any\n"
+                    "translucent pixel, else 1 − luminance")
+        ->required();
+    cmd->add_option("-o,--output", o->output, "Output SLAM file (.exr)")->required();
+    cmd->add_option("--levels", o->levels, "Levels from 0.5 to 1.0")->check(CLI::Range(2, 256))->capture_default_str();
+    cmd->add_option("--length", o->length, "Lmax: texels of level 1.0 (and of every stored level)")
+        ->check(CLI::Range(16, 16384))
+        ->capture_default_str();
+    cmd->add_option("--iterations", o->iterations, "Synthesis iterations per level (textureSynth uses 50)")
+        ->check(CLI::Range(1, 1000))
+        ->capture_default_str();
+    cmd->add_option("--seed", o->seed, "Seed of the white noise W_source")->capture_default_str();
+    cmd->add_option("--preview", o->preview, "Write a contact sheet of the exemplar and every level (PNG)");
+    cmd->add_option("--threads", o->threads, "Levels synthesized in parallel (default: one per core)")
+        ->check(CLI::Range(0, 256));
+    cmd->add_flag("--global", o->global, "Impose every statistic per texture (the 1D model), not mean/variance per row");
+    cmd->add_flag("--report", o->report,
+                  "Print the SNR of each statistic group (as textureSynth) of levels 0.5 and 1.0 and their seeds");
+    return [o] { return run_slam(*o); };
+}
+
+}  // namespace lw::cli
