@@ -253,12 +253,29 @@ VoteSet CoherenceTracker::gather_votes(const std::vector<ScreenPath>& paths, con
 
 void CoherenceTracker::splat(const std::vector<ScreenPath>& paths, const std::vector<PathParam>& params, float radius,
                              GpuTimer* timer) {
-    std::vector<Sprite> sprites;
+    std::vector<glm::vec3> sprites;
     for (size_t p = 0; p < paths.size(); ++p) {
         if (!paths[p].visible) continue;
         for (size_t k = 0; k < paths[p].samples.size(); ++k)
-            sprites.push_back({paths[p].samples[k].pixel, params[p].rho * path_arclength(paths[p], k) + params[p].phi});
+            sprites.push_back(glm::vec3(paths[p].samples[k].pixel,
+                                        params[p].rho * path_arclength(paths[p], k) + params[p].phi));
     }
+    splat_sprites(sprites, radius, timer);
+}
+
+void CoherenceTracker::restore(const State& state, const SurfaceFrame& surface) {
+    has_previous_ = state.has_previous;
+    previous_camera_ = state.camera;
+    if (surface.positions) previous_positions_ = *surface.positions;
+    if (state.has_previous) splat_sprites(state.sprites, state.radius, nullptr);
+}
+
+void CoherenceTracker::splat_sprites(const std::vector<glm::vec3>& sprite_list, float radius, GpuTimer* timer) {
+    last_sprites_ = sprite_list;
+    last_radius_ = radius;
+    std::vector<Sprite> sprites;
+    sprites.reserve(sprite_list.size());
+    for (const glm::vec3& s : sprite_list) sprites.push_back({glm::vec2(s), s.z});
     Buffer sprite_buffer;
     if (!sprites.empty()) sprite_buffer = upload_vertices(*ctx_, std::as_bytes(std::span(sprites)), "splat sprites");
     ctx_->submit_and_wait([&](VkCommandBuffer cmd) {

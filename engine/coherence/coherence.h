@@ -100,6 +100,20 @@ public:
     // Forgets the previous frame (a cut).
     void reset() { has_previous_ = false; }
 
+    // What the next update() needs of the frames before it, small enough to keep beside an
+    // offline render (`linework render --resume`): the last splat's sprites (centre, T) and
+    // radius, and the camera they were drawn with. The surface positions are the caller's to
+    // restore (the mesh posed at that frame).
+    struct State {
+        bool has_previous = false;
+        CameraMatrices camera;
+        float radius = 0.0f;
+        std::vector<glm::vec3> sprites;  // x, y in pixels; T
+    };
+    [[nodiscard]] State state() const { return {has_previous_, previous_camera_, last_radius_, last_sprites_}; }
+    // Splats the state's sprites again (the same buffer, bit for bit, on the same device).
+    void restore(const State& state, const SurfaceFrame& surface);
+
     const std::vector<glm::vec4>& splat_buffer() const { return splat_; }
 
 private:
@@ -111,6 +125,7 @@ private:
     [[nodiscard]] VoteSet gather_votes(const std::vector<ScreenPath>& paths, const SurfaceFrame& surface) const;
     void splat(const std::vector<ScreenPath>& paths, const std::vector<PathParam>& params, float radius,
                GpuTimer* timer);
+    void splat_sprites(const std::vector<glm::vec3>& sprites, float radius, GpuTimer* timer);
 
     const Context* ctx_;
     uint32_t width_, height_;
@@ -122,6 +137,8 @@ private:
     CameraMatrices previous_camera_;
     std::vector<glm::vec3> previous_positions_;
     std::vector<glm::vec4> splat_;  // previous frame's (Σ w·t, Σ w, Σ w·(c − pixel)), row-major
+    std::vector<glm::vec3> last_sprites_;  // what made it (state())
+    float last_radius_ = 0.0f;
 };
 
 }  // namespace lw

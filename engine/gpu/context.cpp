@@ -130,7 +130,15 @@ VkInstance create_instance(bool validation, bool debug_utils) {
     if (validation) layers.push_back(kValidationLayer);
     std::vector<const char*> extensions;
     if (debug_utils) extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+    // Synchronization validation too: a missing barrier is as real a bug as a bad parameter
+    // (the layer provides VK_EXT_validation_features itself).
+    const VkValidationFeatureEnableEXT enables[] = {VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT};
+    const VkValidationFeaturesEXT features{.sType = VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT,
+                                           .enabledValidationFeatureCount = 1,
+                                           .pEnabledValidationFeatures = enables};
+    if (validation) extensions.push_back(VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME);
     VkInstanceCreateInfo info{.sType = VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO,
+                              .pNext = validation ? &features : nullptr,
                               .pApplicationInfo = &app,
                               .enabledLayerCount = static_cast<uint32_t>(layers.size()),
                               .ppEnabledLayerNames = layers.data(),

@@ -117,7 +117,7 @@ void split_into_runs(const LinePath& path, size_t index, const CameraMatrices& c
 
 std::vector<ScreenPath> compute_visibility(const std::vector<LinePath>& paths, const CameraMatrices& camera,
                                            const DepthImage& depth, const VisibilityParams& params) {
-    const DepthTester tester(depth, params);
+    const DepthTester tester{depth, params};
     // Paths are independent: test them on every core, each chunk into its own list, and
     // concatenate in order (the result does not depend on the thread count).
     std::vector<std::vector<ScreenPath>> chunk_out(worker_count());

@@ -48,6 +48,22 @@ void FrameRenderer::set_layers(std::vector<LayerStyle> styles) {
     if (!stroke_pass_) stroke_pass_ = std::make_unique<StrokePass>(*ctx_);
 }
 
+FrameRenderer::CoherenceSnapshot FrameRenderer::coherence_snapshot() const {
+    CoherenceSnapshot snapshot;
+    if (tracker_) snapshot.lines = tracker_->state();
+    if (layers_) snapshot.layers = layers_->states();
+    return snapshot;
+}
+
+void FrameRenderer::restore_coherence(const CoherenceSnapshot& snapshot) {
+    if (snapshot.lines) {
+        if (!tracker_) tracker_ = std::make_unique<CoherenceTracker>(*ctx_, target_.width, target_.height);
+        tracker_->restore(*snapshot.lines, line_mesh_ ? SurfaceFrame{&line_mesh_->mesh.positions, &line_mesh_->mesh.faces}
+                                                      : SurfaceFrame{});
+    }
+    if (layers_) layers_->restore(snapshot.layers);
+}
+
 Frame FrameRenderer::render(const CameraMatrices& camera, const glm::vec3& eye, const SurfaceStyle& surface,
                             const LinesDesc& lines, const FrameOutputs& outputs, const CoherenceParams* coherence,
                             std::vector<LayerFrame>* layers) {

@@ -80,6 +80,16 @@ public:
     // Vector-art layers drawn over the 3D lines (render/layer_pass.h), in order.
     void set_layers(std::vector<LayerStyle> styles);
 
+    // The coherent parameterization carried from frame to frame (3D lines and each SLAM
+    // layer), to save beside an offline render and restore when it resumes. Restoring
+    // takes the line mesh as it is now: pose it at the saved frame first.
+    struct CoherenceSnapshot {
+        std::optional<CoherenceTracker::State> lines;
+        std::vector<std::optional<CoherenceTracker::State>> layers;
+    };
+    [[nodiscard]] CoherenceSnapshot coherence_snapshot() const;
+    void restore_coherence(const CoherenceSnapshot& snapshot);
+
     // One frame. With `coherence`, every visible path is parameterized (§4: votes from the
     // previous frame, RANSAC, splat for the next one) — call it for consecutive frames in
     // order — and stroked where a SLAM is set; without, lines are drawn plain. `layers`:

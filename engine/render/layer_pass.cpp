@@ -60,6 +60,22 @@ std::vector<LayerResult> LayerPass::prepare(std::vector<LayerFrame>& frames, boo
     return results;
 }
 
+std::vector<std::optional<CoherenceTracker::State>> LayerPass::states() const {
+    std::vector<std::optional<CoherenceTracker::State>> out;
+    for (const Layer& layer : layers_)
+        out.push_back(layer.tracker ? std::optional(layer.tracker->state()) : std::nullopt);
+    return out;
+}
+
+void LayerPass::restore(const std::vector<std::optional<CoherenceTracker::State>>& states) {
+    if (states.size() != layers_.size()) throw Error("the saved state has " + std::to_string(states.size()) +
+                                                     " layers, the scene " + std::to_string(layers_.size()));
+    for (size_t i = 0; i < layers_.size(); ++i) {
+        if (bool(states[i]) != bool(layers_[i].tracker)) throw Error("the saved state's layers differ from the scene's");
+        if (states[i]) layers_[i].tracker->restore(*states[i], {});
+    }
+}
+
 std::vector<Buffer> LayerPass::record(const Context& ctx, VkCommandBuffer cmd, const RenderTarget& target,
                                       const StrokePass& strokes) const {
     std::vector<Buffer> buffers;

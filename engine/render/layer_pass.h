@@ -53,6 +53,10 @@ public:
     [[nodiscard]] std::vector<Buffer> record(const Context& ctx, VkCommandBuffer cmd, const RenderTarget& target,
                                              const StrokePass& strokes) const;
 
+    // The SLAM layers' tracker states (absent for solid layers), for --resume.
+    [[nodiscard]] std::vector<std::optional<CoherenceTracker::State>> states() const;
+    void restore(const std::vector<std::optional<CoherenceTracker::State>>& states);
+
 private:
     struct Layer {
         LayerStyle style;

@@ -1,4 +1,5 @@
 // `linework render SCENE.json|MODEL.glb -o DIR` — headless render to PNG (and EXR).
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -18,6 +19,7 @@
 #include "io/image_io.h"
 #include "io/slam_io.h"
 #include "render_layers.h"
+#include "render_state.h"
 #include "ribbon/exemplar.h"
 #include "ribbon/ribbon_strokes.h"
 #include "lines/svg_export.h"
@@ -51,6 +53,8 @@ struct RenderOptions {
     float splat_radius = 0.0f;  // 0: twice the sample spacing
     float inlier_px = 1.5f;
     float min_stroke_length = CoherenceParams{}.min_stroke_length_px;
+    bool resume = false;
+    std::string signature;  // the options that shape the frames (--resume checks them)
     float length_scale = 0.0f;  // 0: square texels (the SLAM's height over the stroke width)
 };
 
@@ -121,6 +125,18 @@ std::string frame_name(int frame, const char* extension) {
 void write_text(const std::filesystem::path& path, const std::string& text) {
     std::ofstream out(path, std::ios::binary);
     if (!out || !(out << text) || !out.flush()) throw Error(path.string() + ": cannot write");
+}
+
+volatile std::sig_atomic_t g_interrupted = 0;
+
+int interrupted(int frame, int first) {
+    std::fflush(stdout);
+    if (frame >= first)
+        std::fprintf(stderr, "\nlinework: interrupted after frame %d (written); run the same command with --resume to go on\n",
+                     frame);
+    else
+        std::fprintf(stderr, "\nlinework: interrupted during the warm-up frames; nothing written\n");
+    return 130;
 }
 
 int run_render(const RenderOptions& o) {
@@ -237,10 +253,46 @@ int run_render(const RenderOptions& o) {
         std::printf("frames: %d to %d%s at %g fps\n", range.first, range.last,
                     o.warmup ? (", after " + std::to_string(o.warmup) + " warm-up frames").c_str() : "", double(fps));
 
-    Progress progress(range.last - range.first + 1 + o.warmup, "frame");
+    // --resume: skip the frames already written; the parameterization goes on from the state
+    // saved after the last of them (render_state.h), so the frames match an unbroken run.
+    const std::filesystem::path state_path = out_dir / ".linework-state";
+    int start = range.first - o.warmup;
+    if (o.resume) {
+        int first_missing = range.first;
+        while (first_missing <= range.last && std::filesystem::exists(out_dir / frame_name(first_missing, "png")))
+            ++first_missing;
+        if (first_missing > range.last) {
+            std::printf("all frames %d to %d are already in %s\n", range.first, range.last, out_dir.string().c_str());
+            return 0;
+        }
+        if (first_missing > range.first) {
+            const RenderState state = read_render_state(state_path);
+            if (state.signature != o.signature)
+                throw Error(state_path.string() + ": written by a render with other options; rerun that command "
+                                                  "with --resume, or remove the file to start over");
+            if (state.frame != first_missing - 1)
+                throw Error(state_path.string() + ": holds the state after frame " + std::to_string(state.frame) +
+                            ", but the first missing frame is " + std::to_string(first_missing));
+            if (animated) renderer.deform(pose_scene(scene, frame_time(first_missing - 1, range, fps).seconds));
+            renderer.restore_coherence(state.snapshot);
+            start = first_missing;
+            std::printf("resuming at frame %d (frames %d to %d already written)\n", first_missing, range.first,
+                        first_missing - 1);
+        }
+    }
+
+    // Ctrl-C finishes the frame in hand, writes it and the state, and stops (exit code 130).
+    g_interrupted = 0;
+    const auto previous_handler = std::signal(SIGINT, [](int) { g_interrupted = 1; });
+    struct RestoreHandler {
+        decltype(previous_handler) handler;
+        ~RestoreHandler() { std::signal(SIGINT, handler); }
+    } restore_handler{previous_handler};
+
+    Progress progress(range.last - start + 1, "frame");
     int done = 0;
     double total_ms = 0.0;
-    for (int f = range.first - o.warmup; f <= range.last; ++f) {
+    for (int f = start; f <= range.last; ++f) {
         const PathTime when = frame_time(f, range, fps);
         if (animated && f != range.first - o.warmup) renderer.deform(pose_scene(scene, when.seconds));
         const ViewCamera view = camera_at(desc.camera_path, scene.camera, when);
@@ -269,19 +321,31 @@ int run_render(const RenderOptions& o) {
         ++done;
         total_ms += frame.timings.total_ms;
         progress.update(done, f, frame.timings.total_ms);
-        if (!write) continue;
+        if (!write) {
+            if (g_interrupted) return interrupted(f, range.first);
+            continue;
+        }
 
+        // Everything through a temporary name: a killed render never leaves half a file. The
+        // PNG goes last, so that a frame whose PNG exists is complete (--resume).
         const std::filesystem::path png = out_dir / frame_name(f, "png");
-        write_png(png, frame.image.color);
-        if (o.exr) write_exr(out_dir / frame_name(f, "exr"), frame.image.color, frame.image.depth);
+        if (o.exr)
+            write_atomically(out_dir / frame_name(f, "exr"), [&](const std::filesystem::path& file) {
+                write_exr(file, frame.image.color, frame.image.depth);
+            });
         if (!o.svg.empty()) {
             std::filesystem::path svg(o.svg);
             if (sequence) svg = svg.parent_path() / (svg.stem().string() + "_" + frame_name(f, "svg").substr(6));
-            write_lines_svg(svg, desc.width, desc.height, frame.screen_paths, desc.lines.styles);
+            write_atomically(svg, [&](const std::filesystem::path& file) {
+                write_lines_svg(file, desc.width, desc.height, frame.screen_paths, desc.lines.styles);
+            });
         }
         if (!o.dump_paths.empty())
-            write_text(std::filesystem::path(o.dump_paths) / frame_name(f, "json"),
-                       path_dump_json(f, desc.width, desc.height, frame.screen_paths, frame.params, frame.layers));
+            write_atomically(std::filesystem::path(o.dump_paths) / frame_name(f, "json"), [&](const std::filesystem::path& file) {
+                write_text(file, path_dump_json(f, desc.width, desc.height, frame.screen_paths, frame.params, frame.layers));
+            });
+        if (sequence) write_render_state(state_path, {o.signature, f, renderer.coherence_snapshot()});
+        write_atomically(png, [&](const std::filesystem::path& file) { write_png(file, frame.image.color); });
         if (!sequence) {
             std::printf("frame %d: %.2f ms", f, frame.timings.total_ms);
             for (const PassTime& t : frame.timings.gpu)
@@ -298,6 +362,7 @@ int run_render(const RenderOptions& o) {
             if (o.exr) std::printf("wrote %s\n", (out_dir / frame_name(f, "exr")).string().c_str());
             if (!o.svg.empty()) std::printf("wrote %s\n", o.svg.c_str());
         }
+        if (g_interrupted && f < range.last) return interrupted(f, range.first);
     }
     if (sequence) {
         std::printf("time per frame: %.2f ms (mean of %d)\n", total_ms / std::max(done, 1), done);
@@ -374,7 +439,21 @@ Runner add_render_command(CLI::App& app) {
     cmd->add_flag("--validation", o->validation,
                   "Enable the Khronos validation layer; any warning or error fails the run "
                   "(also LINEWORK_VALIDATION=1)");
-    return [o] { return run_render(*o); };
+    cmd->add_flag("--resume", o->resume,
+                  "Go on with an interrupted sequence: skip the frames already in the output folder and "
+                  "restore the parameterization from its .linework-state");
+    return [o, cmd] {
+        // The options as given, less --resume itself: what a resumed run must repeat.
+        std::string signature;
+        for (const CLI::Option* option : cmd->get_options())
+            if (option->count() > 0 && option->get_name() != "--resume") {
+                signature += option->get_name() + "=";
+                for (const std::string& value : option->results()) signature += value + ";";
+                signature += "\n";
+            }
+        o->signature = signature;
+        return run_render(*o);
+    };
 }
 
 }  // namespace lw::cli

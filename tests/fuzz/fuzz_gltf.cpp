@@ -1,0 +1,16 @@
+// glTF loader: .gltf (JSON) or .glb (by the magic bytes), then the flattened mesh.
+#include "core/error.h"
+#include "fuzz_support.h"
+#include "scene/model.h"
+#include "scene/triangle_mesh.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+    const bool binary = size >= 4 && data[0] == 'g' && data[1] == 'l' && data[2] == 'T' && data[3] == 'F';
+    const auto path = lw::fuzz::write_input(data, size, binary ? ".glb" : ".gltf");
+    try {
+        const lw::Model model = lw::load_gltf(path);
+        (void)lw::flatten(model, lw::world_transforms(model));
+    } catch (const lw::Error&) {
+    }
+    return 0;
+}

@@ -1,0 +1,72 @@
+// Offline renders: Ctrl-C stops after the frame in hand, --resume goes on from the saved
+// parameterization and gives the frames of an unbroken run; nothing is left half-written.
+#include <filesystem>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "core/image.h"
+#include "io/image_io.h"
+#include "test_support.h"
+
+namespace lw {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string frame_png(int f) {
+    char name[32];
+    std::snprintf(name, sizeof(name), "frame_%04d.png", f);
+    return name;
+}
+
+TEST(Resume, InterruptedAndResumedSequenceEqualsAnUnbrokenOne) {
+    const fs::path dir = test::temp_dir();
+    const int last = 23;
+    const std::string args = test::quote(test::data_dir() / "models/spot/spot.glb") +
+                             " --device cpu --size 160x120 --frames 0:" + std::to_string(last) +
+                             " --orbit 90 --slam " + test::quote(test::source_dir() / "scenes/slams/dots.exr");
+    const auto whole = test::run_linework("render " + args + " -o " + test::quote(dir / "whole"));
+    ASSERT_EQ(whole.exit_code, 0) << whole.output;
+
+    // Interrupt once frame 2 is on disk (a real SIGINT to the running process).
+    const fs::path broken = dir / "broken";
+    const std::string exe = LW_LINEWORK_EXE;
+    const std::string script = "LINEWORK_VALIDATION=1 '" + exe + "' render " + args + " -o " + test::quote(broken) +
+                               " > /dev/null 2>&1 & pid=$!; while [ ! -f " + test::quote(broken / frame_png(2)) +
+                               " ]; do sleep 0.01; if ! kill -0 $pid 2>/dev/null; then break; fi; done; "
+                               "kill -INT $pid; wait $pid; echo $?";
+    FILE* pipe = popen(script.c_str(), "r");
+    ASSERT_NE(pipe, nullptr);
+    char buffer[64] = {};
+    ASSERT_NE(fgets(buffer, sizeof(buffer), pipe), nullptr);
+    pclose(pipe);
+    ASSERT_EQ(std::string(buffer), "130\n") << "the render was not interrupted (exit " << buffer << ")";
+    int written = 0;
+    while (fs::exists(broken / frame_png(written))) ++written;
+    ASSERT_LT(written, last + 1) << "every frame was written before the interrupt arrived";
+    EXPECT_GE(written, 3);
+    for (const auto& entry : fs::directory_iterator(broken))
+        EXPECT_EQ(entry.path().string().find(".partial"), std::string::npos) << entry.path();
+
+    const auto resumed = test::run_linework("render " + args + " -o " + test::quote(broken) + " --resume");
+    ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
+    EXPECT_NE(resumed.output.find("resuming at frame " + std::to_string(written)), std::string::npos) << resumed.output;
+    for (int f = 0; f <= last; ++f) {
+        const ImageRGBA8 a = read_image_rgba8(dir / "whole" / frame_png(f));
+        const ImageRGBA8 b = read_image_rgba8(broken / frame_png(f));
+        EXPECT_TRUE(a.pixels == b.pixels) << "frame " << f << " differs from the unbroken run";
+    }
+
+    // Resuming with other options is refused, naming the state file.
+    fs::remove(broken / frame_png(last));
+    std::string other_args = args;
+    other_args.replace(other_args.find("--orbit 90"), 10, "--orbit 45");
+    const auto other = test::run_linework("render " + other_args + " -o " + test::quote(broken) + " --resume");
+    EXPECT_EQ(other.exit_code, 1) << other.output;
+    EXPECT_NE(other.output.find(".linework-state: written by a render with other options"), std::string::npos)
+        << other.output;
+}
+
+}  // namespace
+}  // namespace lw

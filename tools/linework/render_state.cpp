@@ -1,0 +1,117 @@
+#include "render_state.h"
+
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <vector>
+
+#include "core/error.h"
+
+namespace lw::cli {
+
+namespace {
+
+constexpr char kMagic[8] = {'L', 'W', 'S', 'T', 'A', 'T', 'E', '1'};
+
+class Writer {
+public:
+    template <class T>
+    void put(const T& value) {
+        put_bytes(&value, sizeof(T));
+    }
+    void put_bytes(const void* data, size_t size) { bytes.append(static_cast<const char*>(data), size); }
+    std::string bytes;
+};
+
+class Reader {
+public:
+    Reader(std::vector<char> bytes, std::string where) : bytes_(std::move(bytes)), where_(std::move(where)) {}
+    template <class T>
+    T get() {
+        T value;
+        get_bytes(&value, sizeof(T));
+        return value;
+    }
+    void get_bytes(void* out, size_t size) {
+        if (size > bytes_.size() - at_) throw Error(where_ + ": truncated state file");
+        std::memcpy(out, bytes_.data() + at_, size);
+        at_ += size;
+    }
+    uint32_t count(size_t item_size) {
+        const auto n = get<uint32_t>();
+        if (size_t(n) * item_size > bytes_.size() - at_) throw Error(where_ + ": truncated state file");
+        return n;
+    }
+
+private:
+    std::vector<char> bytes_;
+    std::string where_;
+    size_t at_ = 0;
+};
+
+void put_state(Writer& w, const std::optional<CoherenceTracker::State>& state) {
+    w.put<uint8_t>(state ? 1 : 0);
+    if (!state) return;
+    w.put<uint8_t>(state->has_previous ? 1 : 0);
+    w.put(state->camera);
+    w.put(state->radius);
+    w.put(uint32_t(state->sprites.size()));
+    w.put_bytes(state->sprites.data(), state->sprites.size() * sizeof(glm::vec3));
+}
+
+std::optional<CoherenceTracker::State> get_state(Reader& r) {
+    if (r.get<uint8_t>() == 0) return std::nullopt;
+    CoherenceTracker::State state;
+    state.has_previous = r.get<uint8_t>() != 0;
+    state.camera = r.get<CameraMatrices>();
+    state.radius = r.get<float>();
+    state.sprites.resize(r.count(sizeof(glm::vec3)));
+    r.get_bytes(state.sprites.data(), state.sprites.size() * sizeof(glm::vec3));
+    return state;
+}
+
+}  // namespace
+
+void write_atomically(const std::filesystem::path& path, const std::function<void(const std::filesystem::path&)>& write) {
+    const auto temporary = path.parent_path() / (path.stem().string() + ".partial" + path.extension().string());
+    write(temporary);
+    std::error_code ec;
+    std::filesystem::rename(temporary, path, ec);
+    if (ec) throw Error(path.string() + ": cannot write (" + ec.message() + ")");
+}
+
+void write_render_state(const std::filesystem::path& path, const RenderState& state) {
+    Writer w;
+    w.put_bytes(kMagic, sizeof(kMagic));
+    w.put(uint32_t(state.signature.size()));
+    w.put_bytes(state.signature.data(), state.signature.size());
+    w.put(int32_t(state.frame));
+    put_state(w, state.snapshot.lines);
+    w.put(uint32_t(state.snapshot.layers.size()));
+    for (const auto& layer : state.snapshot.layers) put_state(w, layer);
+    write_atomically(path, [&](const std::filesystem::path& file) {
+        std::ofstream out(file, std::ios::binary);
+        if (!out.write(w.bytes.data(), std::streamsize(w.bytes.size())) || !out.flush())
+            throw Error(path.string() + ": cannot write the render state");
+    });
+}
+
+RenderState read_render_state(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw Error(path.string() + ": no render state to resume from (the sequence was not started, or by an "
+                                         "older linework)");
+    Reader r(std::vector<char>(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()), path.string());
+    char magic[sizeof(kMagic)];
+    r.get_bytes(magic, sizeof(magic));
+    if (std::memcmp(magic, kMagic, sizeof(kMagic)) != 0) throw Error(path.string() + ": not a linework render state");
+    RenderState state;
+    state.signature.resize(r.count(1));
+    r.get_bytes(state.signature.data(), state.signature.size());
+    state.frame = r.get<int32_t>();
+    state.snapshot.lines = get_state(r);
+    const uint32_t layers = r.count(1);
+    for (uint32_t i = 0; i < layers; ++i) state.snapshot.layers.push_back(get_state(r));
+    return state;
+}
+
+}  // namespace lw::cli

@@ -1,0 +1,33 @@
+// tools/linework/render_state.h — what `linework render --resume` needs to go on where an
+// interrupted sequence stopped, and files that are never seen half-written.
+//
+// OUT/.linework-state (binary, rewritten after every frame): the command's signature (its
+// options, so that a different render does not resume from it), the last frame written,
+// and the coherent parameterization's state after it (FrameRenderer::coherence_snapshot:
+// per tracker, the last splat's sprites and camera — tens to hundreds of kB).
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <string>
+
+#include "render/frame_renderer.h"
+
+namespace lw::cli {
+
+struct RenderState {
+    std::string signature;
+    int frame = 0;
+    FrameRenderer::CoherenceSnapshot snapshot;
+};
+
+void write_render_state(const std::filesystem::path& path, const RenderState& state);
+// Throws lw::Error naming the file when it is missing, truncated or not a state file.
+[[nodiscard]] RenderState read_render_state(const std::filesystem::path& path);
+
+// Writes through `write(temporary)` (NAME.partial.EXT beside `path`, so that image writers
+// still see the extension) and renames the result onto `path`: a reader, or a render killed
+// mid-write, never leaves a half-written file under the final name.
+void write_atomically(const std::filesystem::path& path, const std::function<void(const std::filesystem::path&)>& write);
+
+}  // namespace lw::cli
