@@ -149,6 +149,9 @@ std::vector<Curve2D> parse_svg_subpaths(const std::string& d, const std::string&
             case 'Z': {
                 subpaths.back().closed = true;
                 current = start;
+                // Z takes no numbers: without this check they would be read as Z again, for ever
+                // (found by tests/fuzz/fuzz_strokes; regression input in its corpus).
+                if (!lex.at_end() && !lex.at_command()) lex.fail("expected a command after Z");
                 break;
             }
             default:
