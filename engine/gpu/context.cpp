@@ -52,7 +52,7 @@ int find_queue_family(VkPhysicalDevice device) {
     return -1;
 }
 
-DeviceInfo describe_device(VkPhysicalDevice device, int index) {
+DeviceInfo describe_device(VkPhysicalDevice device, int index, bool need_swapchain = false) {
     VkPhysicalDeviceProperties props{};
     vkGetPhysicalDeviceProperties(device, &props);
     DeviceInfo info{.index = index, .name = props.deviceName, .type = props.deviceType, .api_version = props.apiVersion};
@@ -67,6 +67,8 @@ DeviceInfo describe_device(VkPhysicalDevice device, int index) {
         info.unsuitable_reason = "lacks dynamicRendering, synchronization2 or maintenance4";
     else if (find_queue_family(device) < 0)
         info.unsuitable_reason = "has no graphics+compute queue";
+    else if (need_swapchain && !has_device_extension(device, VK_KHR_SWAPCHAIN_EXTENSION_NAME))
+        info.unsuitable_reason = "lacks VK_KHR_swapchain (needed for a window)";
     info.suitable = info.unsuitable_reason.empty();
     return info;
 }
@@ -119,7 +121,7 @@ int choose_device(const std::vector<DeviceInfo>& devices, const DeviceChoice& ch
     return best;
 }
 
-VkInstance create_instance(bool validation, bool debug_utils) {
+VkInstance create_instance(bool validation, bool debug_utils, const std::vector<std::string>& wanted = {}) {
     VkApplicationInfo app{.sType = VK_STRUCTURE_TYPE_APPLICATION_INFO,
                           .pApplicationName = "linework",
                           .applicationVersion = VK_MAKE_VERSION(0, 1, 0),
@@ -130,6 +132,11 @@ VkInstance create_instance(bool validation, bool debug_utils) {
     if (validation) layers.push_back(kValidationLayer);
     std::vector<const char*> extensions;
     if (debug_utils) extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+    for (const std::string& name : wanted) {
+        if (!has_instance_extension(name.c_str()))
+            throw Error("the Vulkan instance lacks " + name + " (needed for a window; is a display available?)");
+        extensions.push_back(name.c_str());
+    }
     // Synchronization validation too: a missing barrier is as real a bug as a bad parameter
     // (the layer provides VK_EXT_validation_features itself).
     const VkValidationFeatureEnableEXT enables[] = {VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT};
@@ -207,7 +214,7 @@ Context::Context(const ContextDesc& desc) {
         throw Error("validation requested but VK_LAYER_KHRONOS_validation is not installed "
                     "(apt-get install vulkan-validationlayers)");
     has_debug_utils_ = has_instance_extension(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
-    instance_ = create_instance(desc.validation, has_debug_utils_);
+    instance_ = create_instance(desc.validation, has_debug_utils_, desc.instance_extensions);
 
     try {
         if (desc.validation && has_debug_utils_) {
@@ -230,7 +237,8 @@ Context::Context(const ContextDesc& desc) {
 
         const auto devices = enumerate(instance_);
         std::vector<DeviceInfo> infos;
-        for (size_t i = 0; i < devices.size(); ++i) infos.push_back(describe_device(devices[i], static_cast<int>(i)));
+        for (size_t i = 0; i < devices.size(); ++i)
+            infos.push_back(describe_device(devices[i], static_cast<int>(i), desc.swapchain));
         const int chosen = choose_device(infos, desc.device);
         physical_device_ = devices[static_cast<size_t>(chosen)];
         info_ = infos[static_cast<size_t>(chosen)];
@@ -249,6 +257,7 @@ Context::Context(const ContextDesc& desc) {
         std::vector<const char*> extensions;
         has_push_descriptors_ = has_device_extension(physical_device_, VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME);
         if (has_push_descriptors_) extensions.push_back(VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME);
+        if (desc.swapchain) extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
 
         const float priority = 1.0f;
         VkDeviceQueueCreateInfo queue_info{.sType = VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO,

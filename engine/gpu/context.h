@@ -5,6 +5,11 @@
 // Output: a `Context` owning VkInstance, VkDevice, one graphics+compute queue and a
 //         command pool; helpers to record-submit-wait one command buffer.
 //
+// Headless by default. A window (engine/platform) passes the instance extensions its
+// surface needs (glfwGetRequiredInstanceExtensions) and asks for VK_KHR_swapchain; devices
+// without it are then unsuitable. Presentation support of the queue is checked by the
+// window's swapchain, which has the surface.
+//
 // Device choice (DESIGN.md "Contracts"): `auto` takes a discrete GPU when there is one,
 // else an integrated or virtual GPU, else the CPU device (Mesa lavapipe). `cpu` and `gpu`
 // insist on that kind and fail with a message listing the devices when none exists; `N` is
@@ -38,6 +43,10 @@ struct DeviceChoice {
 struct ContextDesc {
     DeviceChoice device{};
     bool validation = false;  // enable VK_LAYER_KHRONOS_validation and record its messages
+    // For a window: instance extensions of the surface (VK_KHR_surface, VK_KHR_xcb_surface, …)
+    // and the VK_KHR_swapchain device extension. Empty / false: headless.
+    std::vector<std::string> instance_extensions;
+    bool swapchain = false;
 };
 
 struct DeviceInfo {

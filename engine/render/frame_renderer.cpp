@@ -43,7 +43,20 @@ void FrameRenderer::set_slam(LineType type, const Slam& slam) {
     if (!stroke_pass_) stroke_pass_ = std::make_unique<StrokePass>(*ctx_);
 }
 
+void FrameRenderer::resize(uint32_t width, uint32_t height) {
+    if (width == target_.width && height == target_.height) return;
+    vkDeviceWaitIdle(ctx_->device());  // nothing in flight may still use the old target
+    target_ = RenderTarget(*ctx_, width, height);
+    depth_readback_ = Buffer(*ctx_, {.size = VkDeviceSize(width) * height * 4, .usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                     .purpose = MemoryPurpose::Readback, .name = "depth readback"});
+    color_readback_ = Buffer(*ctx_, {.size = VkDeviceSize(width) * height * 4, .usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                     .purpose = MemoryPurpose::Readback, .name = "color readback"});
+    tracker_.reset();
+    if (layers_) layers_ = std::make_unique<LayerPass>(*ctx_, width, height, layer_styles_);
+}
+
 void FrameRenderer::set_layers(std::vector<LayerStyle> styles) {
+    layer_styles_ = styles;
     layers_ = std::make_unique<LayerPass>(*ctx_, target_.width, target_.height, std::move(styles));
     if (!stroke_pass_) stroke_pass_ = std::make_unique<StrokePass>(*ctx_);
 }

@@ -76,6 +76,16 @@ public:
 
     // Lines of `type` are drawn as strokes textured with `slam` (others stay plain lines).
     void set_slam(LineType type, const Slam& slam);
+    // Lines of `type` are drawn plain again (the viewer's per-type style switch).
+    void clear_slam(LineType type) { slams_[size_t(type)].reset(); }
+
+    // A new image size (a resized window): the target and the readback buffers are made
+    // again; the coherence tracker starts afresh (its splat buffer has the old size).
+    void resize(uint32_t width, uint32_t height);
+
+    // The target the last frame was drawn into; after render() its colour image holds the
+    // final frame in TRANSFER_SRC_OPTIMAL (a viewer blits it to the screen).
+    const RenderTarget& target() const { return target_; }
 
     // Vector-art layers drawn over the 3D lines (render/layer_pass.h), in order.
     void set_layers(std::vector<LayerStyle> styles);
@@ -113,6 +123,7 @@ private:
     std::unique_ptr<StrokePass> stroke_pass_;
     std::array<std::unique_ptr<SlamTexture>, kLineTypeCount> slams_;
     std::unique_ptr<LayerPass> layers_;
+    std::vector<LayerStyle> layer_styles_;  // to make layers_ again on resize
 };
 
 }  // namespace lw

@@ -56,6 +56,15 @@ struct SceneDesc {
 // Parses scene JSON text; `source` names it in errors and anchors relative model paths.
 [[nodiscard]] SceneDesc parse_scene_json(const std::string& text, const std::filesystem::path& source);
 
+// Scene JSON for `desc` with its fixed `camera` (what the viewer saves as "the current
+// view"), in the format load_scene_file reads. Model, SLAM and ribbon paths are written
+// relative to `dest_dir` (the folder the file will be in) when they can be. Written: models,
+// size, fov, camera, shading and colours, lines (every type, thresholds, styles), the
+// animation's clip and fps. Not written: camera paths (the view is one fixed camera) and
+// vector layers.
+[[nodiscard]] std::string scene_json(const SceneDesc& desc, const ViewCamera& camera,
+                                     const std::filesystem::path& dest_dir);
+
 // A scene of one model with every default.
 [[nodiscard]] SceneDesc scene_for_model(const std::filesystem::path& model);
 

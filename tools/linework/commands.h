@@ -27,6 +27,7 @@ Runner add_ribbon_command(CLI::App& app);
 Runner add_ribbon_exemplar_command(CLI::App& app);
 Runner add_pattern_command(CLI::App& app);
 Runner add_hatch_command(CLI::App& app);
+Runner add_view_command(CLI::App& app);
 
 // "1,2.5,-3" -> vec3; throws a usage error naming `option`.
 glm::vec3 parse_vec3(const std::string& text, const std::string& option);

@@ -12,7 +12,7 @@
 
 int main(int argc, char** argv) {
     CLI::App app{"linework — real-time line stylization on Vulkan.\n"
-                 "Renders glTF models and scene files headlessly (Mesa lavapipe or a GPU)."};
+                 "Renders glTF models and scene files headlessly (Mesa lavapipe or a GPU), or in a window (view)."};
     app.require_subcommand(1);
     app.set_version_flag("--version", "linework 0.1.0");
 
@@ -32,6 +32,7 @@ int main(int argc, char** argv) {
     add(&lw::cli::add_ribbon_exemplar_command);
     add(&lw::cli::add_pattern_command);
     add(&lw::cli::add_hatch_command);
+    add(&lw::cli::add_view_command);
 
     try {
         app.parse(argc, argv);

@@ -1,0 +1,226 @@
+// tools/linework/view_panel.cpp — the viewer's camera, keys and Dear ImGui panel.
+#include <algorithm>
+#include <cmath>
+
+#include <GLFW/glfw3.h>
+#include <glm/gtc/matrix_transform.hpp>
+#include <imgui.h>
+
+#include "view_state.h"
+
+namespace lw::cli {
+
+OrbitCamera OrbitCamera::from(const ViewCamera& c) {
+    OrbitCamera o;
+    o.target = c.target;
+    o.offset = c.eye - c.target;
+    o.up = glm::length(c.up) > 0.0f ? glm::normalize(c.up) : glm::vec3(0.0f, 1.0f, 0.0f);
+    o.fov_deg = c.fov_deg;
+    o.znear = c.znear;
+    o.zfar = c.zfar;
+    return o;
+}
+
+ViewCamera OrbitCamera::view() const {
+    return ViewCamera{.eye = target + offset, .target = target, .up = up, .fov_deg = fov_deg, .znear = znear, .zfar = zfar};
+}
+
+void OrbitCamera::orbit(float dx_deg, float dy_deg) {
+    offset = glm::vec3(glm::rotate(glm::mat4(1.0f), glm::radians(dx_deg), up) * glm::vec4(offset, 0.0f));
+    const glm::vec3 right = glm::cross(-offset, up);
+    if (glm::length(right) < 1e-8f) return;
+    const glm::vec3 turned =
+        glm::vec3(glm::rotate(glm::mat4(1.0f), glm::radians(-dy_deg), glm::normalize(right)) * glm::vec4(offset, 0.0f));
+    // Not over the pole: the eye stays at least 1° from the up axis.
+    const float cos_to_up = glm::dot(glm::normalize(turned), up);
+    if (std::abs(cos_to_up) < std::cos(glm::radians(1.0f))) offset = turned;
+}
+
+void OrbitCamera::zoom(float factor) {
+    if (factor > 0.0f) offset /= factor;
+}
+
+void OrbitCamera::pan(float dx_px, float dy_px, float height) {
+    const float distance = glm::length(offset);
+    const float px = 2.0f * distance * std::tan(glm::radians(fov_deg) * 0.5f) / std::max(height, 1.0f);
+    const glm::vec3 forward = glm::normalize(-offset);
+    const glm::vec3 right = glm::normalize(glm::cross(forward, up));
+    const glm::vec3 screen_up = glm::cross(right, forward);
+    const glm::vec3 move = (-dx_px * right + dy_px * screen_up) * px;  // the scene follows the mouse
+    target += move;
+}
+
+const char* policy_name(ParamPolicy policy) {
+    switch (policy) {
+        case ParamPolicy::Coherent: return "coherent";
+        case ParamPolicy::Arclength: return "arclength";
+        case ParamPolicy::Stretch: return "stretch";
+    }
+    return "?";
+}
+
+namespace {
+
+void toggle_type(LineParams& p, LineType type) {
+    switch (type) {
+        case LineType::Silhouette: p.silhouettes = !p.silhouettes; break;
+        case LineType::Suggestive: p.suggestive = !p.suggestive; break;
+        case LineType::Crease: p.creases = !p.creases; break;
+        case LineType::Border: p.borders = !p.borders; break;
+    }
+}
+
+void toggle_strokes(ViewerState& s, int type) {
+    if (!s.slams[size_t(type)]) {
+        s.message = std::string("no SLAM for ") + line_type_name(LineType(type)) + " (--slam or the scene's \"slam\")";
+        return;
+    }
+    s.strokes[size_t(type)] = !s.strokes[size_t(type)];
+    s.slams_changed = true;
+}
+
+void step_time(ViewerState& s, float frames) {
+    if (!s.animated) return;
+    s.playing = false;
+    s.time_s = std::clamp(s.time_s + frames / s.fps, 0.0f, s.duration_s);
+    s.time_changed = true;
+}
+
+}  // namespace
+
+bool apply_key(ViewerState& s, int key) {
+    LineParams& p = s.desc.lines.params;
+    switch (key) {
+        case GLFW_KEY_L: toggle_type(p, LineType::Silhouette); break;
+        case GLFW_KEY_S: toggle_type(p, LineType::Suggestive); break;
+        case GLFW_KEY_C: toggle_type(p, LineType::Crease); break;
+        case GLFW_KEY_B: toggle_type(p, LineType::Border); break;
+        case GLFW_KEY_1: case GLFW_KEY_2: case GLFW_KEY_3: case GLFW_KEY_4: toggle_strokes(s, key - GLFW_KEY_1); break;
+        case GLFW_KEY_P:
+            s.coherence.policy = ParamPolicy((int(s.coherence.policy) + 1) % 3);
+            s.message = std::string("parameterization: ") + policy_name(s.coherence.policy);
+            break;
+        case GLFW_KEY_T: {
+            SurfaceStyle& st = s.desc.style;
+            if (!st.draw_surface) {
+                st.draw_surface = true;
+                st.shading = Shading::Toon;
+            } else if (st.shading == Shading::Toon) {
+                st.shading = Shading::Flat;
+            } else if (st.shading == Shading::Flat) {
+                st.shading = Shading::Unlit;
+            } else {
+                st.draw_surface = false;
+            }
+            break;
+        }
+        case GLFW_KEY_H: s.desc.lines.hidden = HiddenLines((int(s.desc.lines.hidden) + 1) % 3); break;
+        case GLFW_KEY_R: s.camera = s.home; break;
+        case GLFW_KEY_Q: case GLFW_KEY_ESCAPE: s.quit = true; break;
+        case GLFW_KEY_SPACE:
+            if (s.animated) s.playing = !s.playing;
+            break;
+        case GLFW_KEY_LEFT_BRACKET: step_time(s, -1.0f); break;
+        case GLFW_KEY_RIGHT_BRACKET: step_time(s, 1.0f); break;
+        case GLFW_KEY_LEFT: s.camera.orbit(-5.0f, 0.0f); break;
+        case GLFW_KEY_RIGHT: s.camera.orbit(5.0f, 0.0f); break;
+        case GLFW_KEY_UP: s.camera.orbit(0.0f, 5.0f); break;
+        case GLFW_KEY_DOWN: s.camera.orbit(0.0f, -5.0f); break;
+        case GLFW_KEY_EQUAL: s.camera.zoom(1.1f); break;
+        case GLFW_KEY_MINUS: s.camera.zoom(1.0f / 1.1f); break;
+        case GLFW_KEY_F1: s.panel = !s.panel; break;
+        case GLFW_KEY_F5: s.save_path = "*"; break;        // a numbered file in the output folder
+        case GLFW_KEY_F12: s.screenshot_path = "*"; break;
+        default: return false;
+    }
+    return true;
+}
+
+void draw_panel(ViewerState& s) {
+    if (!s.panel) return;
+    ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(330, 0), ImGuiCond_FirstUseEver);
+    ImGui::Begin("linework (F1 hides)");
+    ImGui::Text("%s", s.device.c_str());
+    ImGui::Text("frame %.1f ms (%.1f fps), render %.1f, present %.1f", s.frame_ms, s.frame_ms > 0 ? 1000.0 / s.frame_ms : 0.0,
+                s.render_ms, s.present_ms);
+    if (!s.history.empty()) {
+        std::vector<float> h(s.history.begin(), s.history.end());
+        ImGui::PlotLines("##frametimes", h.data(), int(h.size()), 0, "frame ms", 0.0f, 100.0f, ImVec2(0, 40));
+    }
+    if (ImGui::TreeNodeEx("GPU time per pass", ImGuiTreeNodeFlags_DefaultOpen)) {
+        for (const PassTime& t : s.gpu)
+            if (t.ms >= 0.0)
+                ImGui::Text("%-14s %7.3f ms", t.name.c_str(), t.ms);
+            else
+                ImGui::Text("%-14s (no timestamps)", t.name.c_str());
+        ImGui::TreePop();
+    }
+    ImGui::Text("%zu triangles, %zu paths", s.triangles, s.paths);
+
+    LinesDesc& lines = s.desc.lines;
+    if (ImGui::CollapsingHeader("Lines", ImGuiTreeNodeFlags_DefaultOpen)) {
+        ImGui::Checkbox("silhouettes (l)", &lines.params.silhouettes);
+        ImGui::SameLine(170);
+        ImGui::Checkbox("suggestive (s)", &lines.params.suggestive);
+        ImGui::Checkbox("creases (c)", &lines.params.creases);
+        ImGui::SameLine(170);
+        ImGui::Checkbox("borders (b)", &lines.params.borders);
+        ImGui::SliderFloat("suggestive thr.", &lines.params.sug_thresh, 0.0f, 0.2f, "%.3f");
+        ImGui::SliderFloat("crease angle", &lines.params.crease_angle_deg, 1.0f, 179.0f, "%.0f°");
+        if (ImGui::IsItemDeactivatedAfterEdit()) s.crease_changed = true;
+        ImGui::SliderFloat("δ (sample px)", &lines.sample_spacing_px, 0.5f, 16.0f, "%.1f");
+        int hidden = int(lines.hidden);
+        if (ImGui::Combo("hidden (h)", &hidden, "none\0dashed\0faint\0")) lines.hidden = HiddenLines(hidden);
+    }
+    if (ImGui::CollapsingHeader("Strokes", ImGuiTreeNodeFlags_DefaultOpen)) {
+        int policy = int(s.coherence.policy);
+        if (ImGui::Combo("policy (p)", &policy, "coherent\0arclength\0stretch\0")) s.coherence.policy = ParamPolicy(policy);
+        ImGui::SliderFloat("splat radius", &s.coherence.splat_radius_px, 0.5f, 32.0f, "%.1f px");
+    }
+    if (ImGui::CollapsingHeader("Style per line type")) {
+        for (int t = 0; t < kLineTypeCount; ++t) {
+            LineStyle& st = lines.styles[size_t(t)];
+            ImGui::PushID(t);
+            ImGui::TextUnformatted(line_type_name(LineType(t)));
+            ImGui::SliderFloat("width", &st.width, 0.5f, 16.0f, "%.1f px");
+            ImGui::ColorEdit3("colour", &st.color.x, ImGuiColorEditFlags_NoInputs);
+            if (s.slams[size_t(t)]) {
+                ImGui::SameLine();
+                bool on = s.strokes[size_t(t)];
+                if (ImGui::Checkbox("SLAM strokes", &on)) {
+                    s.strokes[size_t(t)] = on;
+                    s.slams_changed = true;
+                }
+                ImGui::SliderFloat("taper", &st.taper_px, 0.0f, 64.0f, "%.0f px");
+            }
+            ImGui::PopID();
+        }
+    }
+    if (ImGui::CollapsingHeader("Surface")) {
+        int shading = s.desc.style.draw_surface ? int(s.desc.style.shading) : 3;
+        if (ImGui::Combo("shading (t)", &shading, "flat\0toon\0unlit\0none\0")) {
+            s.desc.style.draw_surface = shading != 3;
+            if (shading != 3) s.desc.style.shading = Shading(shading);
+        }
+        ImGui::ColorEdit3("surface", &s.desc.style.color.x, ImGuiColorEditFlags_NoInputs);
+        ImGui::SameLine();
+        ImGui::ColorEdit3("background", &s.desc.style.background.x, ImGuiColorEditFlags_NoInputs);
+    }
+    if (s.animated && ImGui::CollapsingHeader("Animation", ImGuiTreeNodeFlags_DefaultOpen)) {
+        if (ImGui::Button(s.playing ? "pause (space)" : "play (space)")) s.playing = !s.playing;
+        if (ImGui::SliderFloat("time", &s.time_s, 0.0f, s.duration_s, "%.2f s")) {
+            s.playing = false;
+            s.time_changed = true;
+        }
+    }
+    if (ImGui::Button("screenshot (F12)")) s.screenshot_path = "*";
+    ImGui::SameLine();
+    if (ImGui::Button("save view (F5)")) s.save_path = "*";
+    ImGui::SameLine();
+    if (ImGui::Button("reset camera (r)")) s.camera = s.home;
+    if (!s.message.empty()) ImGui::TextWrapped("%s", s.message.c_str());
+    ImGui::End();
+}
+
+}  // namespace lw::cli

@@ -1,0 +1,78 @@
+// tools/linework/view_state.h — what `linework view` lets a person change, in one place.
+//
+// The render loop (view_command.cpp) reads it every frame; keys, the script and the ImGui
+// panel (view_panel.cpp) change it. Changes that need more than the next frame's
+// parameters (a crease angle: the line mesh is built again; a SLAM switched: the stroke
+// pass) are flagged and applied by the loop between frames.
+#pragma once
+
+#include <array>
+#include <deque>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "coherence/coherence.h"
+#include "gpu/timestamps.h"
+#include "scene/scene.h"
+#include "stroke/slam.h"
+
+namespace lw::cli {
+
+// A camera turning about its target: the eye is target + offset.
+struct OrbitCamera {
+    glm::vec3 target{0.0f};
+    glm::vec3 offset{0.0f, 0.0f, 5.0f};
+    glm::vec3 up{0.0f, 1.0f, 0.0f};
+    float fov_deg = 40.0f;
+    float znear = 0.0f, zfar = 0.0f;
+
+    static OrbitCamera from(const ViewCamera& camera);
+    [[nodiscard]] ViewCamera view() const;
+    // DX > 0 moves the eye to the right about the up axis, DY > 0 moves it up (stops 1°
+    // short of the poles).
+    void orbit(float dx_deg, float dy_deg);
+    void zoom(float factor);  // distance × 1 / factor
+    // Moves eye and target by (dx, dy) pixels of an image `height` pixels high (right, down).
+    void pan(float dx_px, float dy_px, float height);
+};
+
+struct ViewerState {
+    SceneDesc desc;                       // lines, styles and surface as edited
+    OrbitCamera camera, home;             // home: `r` goes back to it
+    CoherenceParams coherence;
+    std::array<std::optional<Slam>, kLineTypeCount> slams;  // loaded SLAM per type
+    std::array<bool, kLineTypeCount> strokes{};             // draw that type with its SLAM
+    bool slams_changed = true;
+    bool crease_changed = false;          // rebuild the line mesh
+    bool panel = true;
+    bool quit = false;
+    // Animation clock.
+    bool animated = false;
+    bool playing = false;
+    float time_s = 0.0f, duration_s = 0.0f, fps = 24.0f;
+    bool time_changed = false;
+    // Requests the loop carries out after this frame is drawn.
+    std::string screenshot_path, save_path;
+    std::string output_dir = ".";
+    int screenshots_taken = 0, saves_done = 0;
+    // Statistics for the panel.
+    double frame_ms = 0.0, render_ms = 0.0, present_ms = 0.0;
+    std::vector<PassTime> gpu;
+    size_t triangles = 0, paths = 0;
+    std::string device;
+    std::deque<float> history;            // recent frame times, ms
+    std::string message;                  // last action ("wrote shot.png")
+};
+
+const char* policy_name(ParamPolicy policy);
+
+// The action of a key (GLFW key code); returns false for keys the viewer does not use.
+bool apply_key(ViewerState& s, int key);
+
+// The ImGui panel (view_panel.cpp); call between UiOverlay::begin_frame and end_frame.
+void draw_panel(ViewerState& s);
+
+}  // namespace lw::cli
