@@ -291,9 +291,10 @@ LayerTransform read_layer_transform(ObjectReader& r) {
     LayerTransform t;
     if (r.has("center")) {
         const json& c = r.at("center");
-        if (!c.is_array() || c.size() != 2 || !c[0].is_number() || !c[1].is_number())
-            r.fail_key("center", "expected [x, y] in drawing units");
-        t.center = glm::vec2(c[0].get<float>(), c[1].get<float>());
+        if (!c.is_array() || c.size() != 2 || !c[0].is_number() || !c[1].is_number() ||
+            !(std::abs(c[0].get<double>()) <= 1e7) || !(std::abs(c[1].get<double>()) <= 1e7))
+            r.fail_key("center", "expected [x, y] in drawing units (|x|, |y| up to 1e7)");
+        t.center = glm::vec2(float(c[0].get<double>()), float(c[1].get<double>()));
     }
     if (r.has("scale")) t.scale = static_cast<float>(r.number("scale", 1e-4, 1e4));
     if (r.has("rotate")) t.rotate_deg = static_cast<float>(r.number("rotate", -36000.0, 36000.0));
@@ -359,7 +360,7 @@ SceneDesc parse_scene_json(const std::string& text, const std::filesystem::path&
     json root;
     try {
         root = json::parse(text);
-    } catch (const json::parse_error& e) {
+    } catch (const json::exception& e) {  // syntax, and numbers past double's range (out_of_range)
         std::string what = e.what();
         const auto colon = what.find("parse error");
         throw Error(source.string() + ": invalid JSON: " + (colon == std::string::npos ? what : what.substr(colon)));

@@ -138,7 +138,9 @@ std::vector<Curve2D> parse_svg_subpaths(const std::string& d, const std::string&
                 const glm::dvec2 p3 = base + lex.point();
                 // Chords under ~1 px: the control polygon bounds the curve's length.
                 const double hull = glm::length(p1 - p0) + glm::length(p2 - p1) + glm::length(p3 - p2);
-                const int n = std::clamp(static_cast<int>(std::ceil(hull)), 4, 4096);
+                if (!std::isfinite(hull)) lex.fail("curve control points out of range");
+                // Clamped as a double: a huge hull does not fit an int (found by fuzz_strokes).
+                const int n = static_cast<int>(std::clamp(std::ceil(hull), 4.0, 4096.0));
                 for (int k = 1; k <= n; ++k) {
                     const double t = double(k) / n, s = 1.0 - t;
                     add(s * s * s * p0 + 3.0 * s * s * t * p1 + 3.0 * s * t * t * p2 + t * t * t * p3);

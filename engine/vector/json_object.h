@@ -19,7 +19,7 @@ inline nlohmann::json parse_json_object(const std::string& text, const std::stri
     nlohmann::json root;
     try {
         root = nlohmann::json::parse(text);
-    } catch (const nlohmann::json::parse_error& e) {
+    } catch (const nlohmann::json::exception& e) {  // syntax, and numbers past double's range
         throw Error(where + ": not valid JSON (" + std::string(e.what()) + ")");
     }
     if (!root.is_object()) throw Error(where + ": " + shape);

@@ -1,0 +1,119 @@
+// docs/ERRORS.md as a test: every row of its table is run and checked (exit code, message),
+// so the document and the program cannot drift apart.
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "core/error.h"
+#include "gpu/vk_check.h"
+#include "test_support.h"
+
+namespace lw {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Row {
+    std::string input, failure, command, message;
+    int exit_code = 0;
+};
+
+std::vector<Row> error_table() {
+    std::ifstream in(test::source_dir() / "docs/ERRORS.md");
+    std::vector<Row> rows;
+    std::string line;
+    // | input | failure | `linework …` | exit | `message` |
+    const std::regex row(R"(^\| ([^|]+) \| ([^|]+) \| `linework([^`]*)` \| (\d) \| `([^`]*)` \|$)");
+    while (std::getline(in, line)) {
+        std::smatch m;
+        if (std::regex_match(line, m, row)) rows.push_back({m[1], m[2], m[3], m[5], std::stoi(m[4])});
+    }
+    return rows;
+}
+
+std::string substitute(std::string text, const fs::path& tmp) {
+    const std::pair<std::string, std::string> keys[] = {
+        {"{tmp}", tmp.string()}, {"{data}", test::data_dir().string()}, {"{src}", test::source_dir().string()}};
+    for (const auto& [key, value] : keys)
+        for (size_t at = text.find(key); at != std::string::npos; at = text.find(key, at + value.size()))
+            text.replace(at, key.size(), value);
+    return text;
+}
+
+void write(const fs::path& path, const std::string& text) { std::ofstream(path, std::ios::binary) << text; }
+
+// The fixtures ERRORS.md lists.
+void write_fixtures(const fs::path& tmp) {
+    const fs::path data = test::data_dir();
+    write(tmp / "empty.glb", "");
+    {
+        std::ifstream box(data / "models/BoxTextured/BoxTextured.glb", std::ios::binary);
+        std::string head(100, '\0');
+        box.read(head.data(), 100);
+        write(tmp / "truncated.glb", head);
+    }
+    write(tmp / "text.png", "not an image\n");
+    write(tmp / "text.exr", "not an exr\n");
+    write(tmp / "badjson.json", "{\n");
+    write(tmp / "overflow.json", R"({"model": "x.glb", "fov": 1e400})");
+    const std::string spot = (data / "models/spot/spot.glb").string();
+    write(tmp / "unknownkey.json", R"({"model": ")" + spot + R"(", "wobble": 1})");
+    write(tmp / "badsize.json", R"({"model": ")" + spot + R"(", "size": [0, 10]})");
+    write(tmp / "nomodel.json", R"({"size": [10, 10]})");
+    write(tmp / "missingmodel.json", R"({"model": "missing.glb"})");
+    write(tmp / "layernostrokes.json", R"({"layers": [{"fill": [1, 0, 0]}]})");
+    write(tmp / "layermissing.json", R"({"layers": [{"strokes": "nope.svg"}]})");
+    write(tmp / "onepoint.json", R"({"points": [[1, 2]]})");
+    write(tmp / "square.json", R"({"points": [[0, 0], [100, 0], [100, 100], [0, 100]], "closed": true})");
+    write(tmp / "afterz.svg", R"(<svg><path d="M0 0 L5 5 Z 3 4" stroke="black"/></svg>)");
+    write(tmp / "strokeskey.json", R"({"strokes": [], "colour": 1})");
+    const auto small = test::run_linework("ribbon-exemplar beads -o " + test::quote(tmp / "small.png") + " --size 16x16");
+    ASSERT_EQ(small.exit_code, 0) << small.output;
+    const auto tall = test::run_linework("ribbon-exemplar beads -o " + test::quote(tmp / "tall.png") + " --size 64x100");
+    ASSERT_EQ(tall.exit_code, 0) << tall.output;
+    fs::create_directories(tmp / "resume");
+    fs::copy_file(tmp / "small.png", tmp / "resume/frame_0000.png");
+}
+
+TEST(ErrorTable, EveryRowGivesItsMessageAndExitCode) {
+    const fs::path tmp = test::temp_dir();
+    write_fixtures(tmp);
+    const std::vector<Row> rows = error_table();
+    ASSERT_GE(rows.size(), 30u) << "docs/ERRORS.md's table was not found or lost rows";
+    const bool has_gpu = test::run_linework("devices").output.find("[gpu") != std::string::npos;
+    for (const Row& row : rows) {
+        if (has_gpu && row.command.find("--device gpu") != std::string::npos) continue;
+        SCOPED_TRACE(row.input + " / " + row.failure);
+        const auto r = test::run_linework(substitute(row.command, tmp));
+        EXPECT_EQ(r.exit_code, row.exit_code) << r.output;
+        EXPECT_NE(r.output.find(substitute(row.message, tmp)), std::string::npos) << r.output;
+        if (row.exit_code == 1) {
+            EXPECT_EQ(r.output.find("internal error"), std::string::npos) << r.output;
+            EXPECT_NE(r.output.find("linework: error: "), std::string::npos) << r.output;
+        }
+    }
+}
+
+TEST(VkCheck, FailuresNameTheCallAndTheResult) {
+    const std::pair<VkResult, std::string> cases[] = {
+        {VK_ERROR_DEVICE_LOST, "vkQueueSubmit failed: VK_ERROR_DEVICE_LOST"},
+        {VK_ERROR_OUT_OF_DEVICE_MEMORY, "vkQueueSubmit failed: VK_ERROR_OUT_OF_DEVICE_MEMORY"},
+        {VK_ERROR_EXTENSION_NOT_PRESENT, "vkQueueSubmit failed: VK_ERROR_EXTENSION_NOT_PRESENT"}};
+    for (const auto& [result, message] : cases) {
+        try {
+            vk_check(result, "vkQueueSubmit");
+            ADD_FAILURE() << "no error for " << message;
+        } catch (const Error& e) {
+            EXPECT_EQ(std::string(e.what()), message);
+        }
+    }
+    EXPECT_NO_THROW(vk_check(VK_SUCCESS, "vkQueueSubmit"));
+}
+
+}  // namespace
+}  // namespace lw
