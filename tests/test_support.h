@@ -49,9 +49,8 @@ struct CommandResult {
     std::string output;  // stdout and stderr together
 };
 
-// Runs the `linework` binary built beside the tests with `args` (shell-quoted by the caller).
-inline CommandResult run_linework(const std::string& args) {
-    const std::string command = "LINEWORK_VALIDATION=1 '" + std::string(LW_LINEWORK_EXE) + "' " + args + " 2>&1";
+// Runs a shell command line, stdout and stderr together.
+inline CommandResult run_command(const std::string& command) {
     CommandResult result;
     FILE* pipe = popen(command.c_str(), "r");
     if (!pipe) return result;
@@ -61,6 +60,12 @@ inline CommandResult run_linework(const std::string& args) {
     const int status = pclose(pipe);
     result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     return result;
+}
+
+// Runs the `linework` binary built beside the tests with `args` (shell-quoted by the caller),
+// validation on.
+inline CommandResult run_linework(const std::string& args) {
+    return run_command("LINEWORK_VALIDATION=1 '" + std::string(LW_LINEWORK_EXE) + "' " + args + " 2>&1");
 }
 
 // Shell-quoted path (built with +=: GCC 12 warns falsely, -Wrestrict, about "'" + std::string&&).

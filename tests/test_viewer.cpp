@@ -27,17 +27,8 @@ bool have_xvfb() { return std::system("command -v xvfb-run >/dev/null 2>&1") == 
 
 // `linework view ARGS` in a fresh X server, validation on.
 test::CommandResult run_view(const std::string& args) {
-    const std::string command = "LINEWORK_VALIDATION=1 xvfb-run -a -s '-screen 0 1280x1024x24' '" +
-                                std::string(LW_LINEWORK_EXE) + "' view " + args + " --device cpu 2>&1";
-    test::CommandResult result;
-    FILE* pipe = popen(command.c_str(), "r");
-    if (!pipe) return result;
-    char buffer[4096];
-    size_t n = 0;
-    while ((n = fread(buffer, 1, sizeof(buffer), pipe)) > 0) result.output.append(buffer, n);
-    const int status = pclose(pipe);
-    result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return result;
+    return test::run_command("LINEWORK_VALIDATION=1 xvfb-run -a -s '-screen 0 1280x1024x24' '" +
+                             std::string(LW_LINEWORK_EXE) + "' view " + args + " --device cpu 2>&1");
 }
 
 void write_file(const fs::path& path, const std::string& text) { std::ofstream(path) << text; }

@@ -33,6 +33,10 @@ ImageRGBA8 read_image_rgba8(const std::filesystem::path& path) {
     const OIIO::ImageSpec& spec = in->spec();
     if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
         throw Error(path.string() + ": empty image");
+    // Before allocating: a header may claim any size (found by tests/fuzz/fuzz_image).
+    if (spec.width > 16384 || spec.height > 16384 || spec.nchannels > 64)
+        throw Error(path.string() + ": image of " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
+                    " with " + std::to_string(spec.nchannels) + " channels is too large (at most 16384x16384, 64 channels)");
     std::vector<uint8_t> raw(size_t(spec.width) * spec.height * spec.nchannels);
     if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::UINT8, raw.data()))
         throw Error(path.string() + ": read failed: " + in->geterror());

@@ -51,6 +51,10 @@ Slam read_slam(const std::filesystem::path& path) {
     slam.exemplar = first.get_string_attribute("linework:exemplar", "");
     slam.seed = uint32_t(first.get_int_attribute("linework:seed", 0));
     if (slam.levels < 2) throw Error(name + ": not a SLAM file (no linework:levels ≥ 2 in its metadata)");
+    // Before allocating: metadata and headers may claim anything.
+    if (slam.levels > 1024 || slam.length < 1 || slam.length > 65536 || slam.height < 1 || slam.height > 1024)
+        throw Error(name + ": a SLAM of " + std::to_string(slam.levels) + " levels of " + std::to_string(slam.length) +
+                    "x" + std::to_string(slam.height) + " is out of range (at most 1024 levels of 65536x1024)");
     const size_t part = size_t(slam.length) * slam.height;
     slam.ink.resize(part * size_t(slam.levels));
     for (int i = 0; i < slam.levels; ++i) {

@@ -13,6 +13,10 @@
 
 #include "core/error.h"
 
+namespace lw {
+class Context;
+}
+
 namespace lw::cli {
 
 using Runner = std::function<int()>;
@@ -35,6 +39,8 @@ glm::vec3 parse_vec3(const std::string& text, const std::string& option);
 glm::ivec2 parse_size(const std::string& text, const std::string& option);
 // True when LINEWORK_VALIDATION is set to something other than 0 or empty.
 bool validation_from_environment();
+// 1 (after one line on stderr) when validation was on and reported anything, else 0.
+int exit_code_after_validation(const Context& ctx, bool validation);
 
 // Runs f; an engine error that does not name its file is re-thrown with the file in front.
 template <typename F>

@@ -1,9 +1,11 @@
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <sstream>
 
 #include "commands.h"
 #include "core/error.h"
+#include "gpu/context.h"
 
 namespace lw::cli {
 
@@ -50,6 +52,12 @@ glm::ivec2 parse_size(const std::string& text, const std::string& option) {
 bool validation_from_environment() {
     const char* value = std::getenv("LINEWORK_VALIDATION");
     return value && *value && std::string(value) != "0";
+}
+
+int exit_code_after_validation(const Context& ctx, bool validation) {
+    if (!validation || ctx.validation_messages().empty()) return 0;
+    std::fprintf(stderr, "linework: error: %zu validation message(s); see above\n", ctx.validation_messages().size());
+    return 1;
 }
 
 }  // namespace lw::cli

@@ -370,14 +370,7 @@ int run_render(const RenderOptions& o) {
         if (!o.dump_paths.empty()) std::printf("wrote path dumps to %s\n", o.dump_paths.c_str());
     }
 
-    if (validation) {
-        const auto messages = ctx.validation_messages();
-        if (!messages.empty()) {
-            std::fprintf(stderr, "linework: error: %zu validation message(s); see above\n", messages.size());
-            return 1;
-        }
-    }
-    return 0;
+    return exit_code_after_validation(ctx, validation);
 }
 
 }  // namespace

@@ -154,11 +154,7 @@ int run_ribbon(const RibbonOptions& o) {
         write_dump(o.dump, s);
         std::printf("wrote %s\n", o.dump.c_str());
     }
-    if (validation && !ctx.validation_messages().empty()) {
-        std::fprintf(stderr, "linework: error: %zu validation message(s); see above\n", ctx.validation_messages().size());
-        return 1;
-    }
-    return 0;
+    return exit_code_after_validation(ctx, validation);
 }
 
 struct ExemplarOptions {
