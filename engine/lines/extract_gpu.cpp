@@ -97,8 +97,9 @@ bool LineExtractor::read_segments(std::vector<LineSegment>& segments) {
         return false;
     }
     segments.resize(count);
-    std::memcpy(segments.data(), static_cast<const std::byte*>(readback_.mapped()) + kHeaderBytes,
-                count * sizeof(LineSegment));
+    if (count > 0)  // an empty vector's data() may be null, which memcpy must not get
+        std::memcpy(segments.data(), static_cast<const std::byte*>(readback_.mapped()) + kHeaderBytes,
+                    count * sizeof(LineSegment));
     return true;
 }
 

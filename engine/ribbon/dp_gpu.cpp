@@ -167,7 +167,7 @@ DpTables RibbonDpGpu::run(const DpProblem& problem, const DpRunOptions& options)
     };
     auto read_u32 = [&](VkDeviceSize offset, size_t n) {
         std::vector<uint32_t> out(n);
-        std::memcpy(out.data(), static_cast<const std::byte*>(row_readback.mapped()) + offset, n * 4);
+        if (n > 0) std::memcpy(out.data(), static_cast<const std::byte*>(row_readback.mapped()) + offset, n * 4);
         return out;
     };
 

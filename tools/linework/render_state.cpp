@@ -33,6 +33,7 @@ public:
         return value;
     }
     void get_bytes(void* out, size_t size) {
+        if (size == 0) return;  // `out` may be an empty vector's null data()
         if (size > bytes_.size() - at_) throw Error(where_ + ": truncated state file");
         std::memcpy(out, bytes_.data() + at_, size);
         at_ += size;
