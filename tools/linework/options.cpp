@@ -6,6 +6,7 @@
 #include "commands.h"
 #include "core/error.h"
 #include "gpu/context.h"
+#include "scene/style.h"
 
 namespace lw::cli {
 
@@ -52,6 +53,16 @@ glm::ivec2 parse_size(const std::string& text, const std::string& option) {
 bool validation_from_environment() {
     const char* value = std::getenv("LINEWORK_VALIDATION");
     return value && *value && std::string(value) != "0";
+}
+
+void use_slam_strokes(LinesDesc& lines, const std::string& slam, float width) {
+    for (LineType type : {LineType::Silhouette, LineType::Suggestive}) {
+        LineStyle& style = lines.styles[size_t(type)];
+        style.slam = slam;
+        style.ribbon.clear();
+        style.width = width;
+        style.taper_px = 2.0f * width;
+    }
 }
 
 int exit_code_after_validation(const Context& ctx, bool validation) {

@@ -148,14 +148,7 @@ int run_render(const RenderOptions& o) {
     SceneDesc desc = is_model_path(input) ? scene_for_model(input) : load_scene_file(input);
     apply_overrides(o, desc);
     if (o.orbit) desc.camera_path = CameraPath{.kind = CameraPath::Kind::Orbit, .orbit = {.degrees = *o.orbit}};
-    if (!o.slam.empty())
-        for (LineType type : {LineType::Silhouette, LineType::Suggestive}) {
-            LineStyle& style = desc.lines.styles[size_t(type)];
-            style.slam = o.slam;
-            style.ribbon.clear();
-            style.width = o.stroke_width;
-            style.taper_px = 2.0f * o.stroke_width;
-        }
+    if (!o.slam.empty()) use_slam_strokes(desc.lines, o.slam, o.stroke_width);
 
     std::filesystem::path out_dir(o.output);
     std::error_code ec;

@@ -103,14 +103,7 @@ int run_view(const ViewOptions& o) {
         desc.width = size.x;
         desc.height = size.y;
     }
-    if (!o.slam.empty())
-        for (LineType type : {LineType::Silhouette, LineType::Suggestive}) {
-            LineStyle& style = desc.lines.styles[size_t(type)];
-            style.slam = o.slam;
-            style.ribbon.clear();
-            style.width = o.stroke_width;
-            style.taper_px = 2.0f * o.stroke_width;
-        }
+    if (!o.slam.empty()) use_slam_strokes(desc.lines, o.slam, o.stroke_width);
     for (LineStyle& style : desc.lines.styles)
         if (!style.ribbon.empty()) {
             std::printf("view: ribbon styles are drawn as plain lines (ribbons are synthesized after readback: "
