@@ -4,8 +4,10 @@
 // length only by a Gaussian of width 5 texels (σ = 1, taps −2 … 2, periodic: it keeps
 // the seeds from aliasing when they are scaled), then histogram-matched back to uniform on
 // (0, 1) (rank r of n ↦ (r + ½)/n). W_0.5: W_f scaled to half its length; W_1.0 = [W_0.5 W_0.5];
-// W_l = α·W_1.0 + (1 − α)·W_0.5 with α = 2l − 1, both scaled to the level's length by
-// periodic linear interpolation. Self-similarity and smooth variation hold by construction,
+// W_l = α·W_1.0 + (1 − α)·W_0.5 with α = 2l − 1, both scaled to the level's length. Scaling is
+// band-limited (FFT) resampling, so one seed at two lengths is one periodic function sampled
+// at two rates (linear interpolation would blur it by an amount that depends on where the
+// samples fall, a difference between adjacent levels that does not shrink with their spacing). Self-similarity and smooth variation hold by construction,
 // and each A_l is synthesized from W_l (slam_builder.h). Deterministic for a given seed.
 #pragma once
 
@@ -22,7 +24,14 @@ namespace lw::synth {
 // x·in.cols/cols (so equal lengths copy exactly, and halving keeps the even texels).
 [[nodiscard]] Plane resample_length(const Plane& in, int cols);
 
-// W_l at `cols` texels from W_0.5 (= resample_length(W_f, length/2)).
+// Periodic band-limited resampling along the rows (FFT: spectrum truncated or zero-padded).
+// Equal lengths copy exactly.
+[[nodiscard]] Plane fourier_resample_length(const Plane& in, int cols);
+
+// W_0.5: W_f (rows × length) scaled to length/2.
+[[nodiscard]] Plane half_seed(int rows, int length, uint32_t seed);
+
+// W_l at `cols` texels from W_0.5.
 [[nodiscard]] Plane seed_level(const Plane& half, double level, int cols);
 
 }  // namespace lw::synth

@@ -79,7 +79,7 @@ SlamSynthesis synthesize_slam(const Plane& exemplar, const SlamSynthesisDesc& de
     out.analysis_ms = analysis.elapsed_ms();
 
     Timer synthesis;
-    const Plane half = resample_length(filtered_seed(m.padded_rows, desc.length, desc.seed), desc.length / 2);
+    const Plane half = half_seed(m.padded_rows, desc.length, desc.seed);
     Slam& slam = out.slam;
     slam.levels = desc.levels;
     slam.length = desc.length;
@@ -90,35 +90,57 @@ SlamSynthesis synthesize_slam(const Plane& exemplar, const SlamSynthesisDesc& de
     out.levels.resize(size_t(desc.levels));
     out.reports.resize(size_t(desc.levels));
 
-    // Levels are independent: workers take them longest first; each writes only its own slots.
-    std::atomic<int> next{0};
+    // Stores level i (cropped to the exemplar's rows) and reports it.
     std::mutex report_mutex;
+    auto store = [&](int i, Plane cropped, const Timer& timer) {
+        const Plane stored = resample_length(cropped, desc.length);
+        std::copy(stored.v.begin(), stored.v.end(), slam.ink.begin() + std::ptrdiff_t(size_t(i) * stored.size()));
+        const SlamLevelReport report{.index = i, .level = slam.level_value(i), .length = cropped.cols, .ms = timer.elapsed_ms(),
+                                     .tiled = i == desc.levels - 1};
+        out.levels[size_t(i)] = std::move(cropped);
+        std::lock_guard<std::mutex> lock(report_mutex);
+        out.reports[size_t(i)] = report;
+        if (desc.on_level) desc.on_level(report);
+    };
+
+    // Levels 0.5 … below 1.0 are independent: workers take them longest first; each writes
+    // only its own slots.
+    const int synthesized = desc.levels - 1;
+    std::atomic<int> next{0};
     auto work = [&] {
-        for (int k = next++; k < desc.levels; k = next++) {
-            const int i = desc.levels - 1 - k;
+        for (int k = next++; k < synthesized; k = next++) {
+            const int i = synthesized - 1 - k;
             Timer timer;
-            const double level = slam.level_value(i);
-            const int cols = level_length(level, desc.length, m.unit);
+            const int cols = level_length(slam.level_value(i), desc.length, m.unit);
             const PyramidGeometry g = make_pyramid_geometry(m.padded_rows, cols, m.scales, kOrientations);
-            const Plane result = synthesize_texture(out.target, seed_level(half, level, cols), g,
+            const Plane result = synthesize_texture(out.target, seed_level(half, slam.level_value(i), cols), g,
                                                     {.iterations = desc.iterations, .scope = desc.scope});
             Plane cropped(exemplar.rows, cols);
             for (int r = 0; r < exemplar.rows; ++r)
                 for (int x = 0; x < cols; ++x) cropped.at(r, x) = std::clamp(result.at(r + m.pad_top, x), 0.0f, 1.0f);
-            const Plane stored = resample_length(cropped, desc.length);
-            std::copy(stored.v.begin(), stored.v.end(), slam.ink.begin() + std::ptrdiff_t(size_t(i) * stored.size()));
-            out.levels[size_t(i)] = cropped;
-            const SlamLevelReport report{.index = i, .level = level, .length = cols, .ms = timer.elapsed_ms()};
-            std::lock_guard<std::mutex> lock(report_mutex);
-            out.reports[size_t(i)] = report;
-            if (desc.on_level) desc.on_level(report);
+            store(i, std::move(cropped), timer);
         }
     };
-    const int threads = std::clamp(desc.threads > 0 ? desc.threads : int(worker_count()), 1, desc.levels);
+    const int threads = std::clamp(desc.threads > 0 ? desc.threads : int(worker_count()), 1, synthesized);
     std::vector<std::thread> pool;
     for (int t = 1; t < threads; ++t) pool.emplace_back(work);
     work();
     for (std::thread& t : pool) t.join();
+
+    // Level 1.0: its seed is [W_0.5 W_0.5] exactly, and every step of the synthesis commutes
+    // with the half-length shift (circular pyramid, statistics gathered over the whole image),
+    // so in exact arithmetic A_1.0 = [A_0.5 A_0.5] (§3.2.1: self-similarity by construction).
+    // Synthesized in float at twice the length it differs by rounding that the projections
+    // amplify to 1e-4 … 1e-3 (SlamSynthSlam.FullTopLevelIsTheTiledHalfUpToRounding measures
+    // it); built by tiling it is exact, and the longest level costs nothing.
+    {
+        Timer timer;
+        const Plane& half_level = out.levels.front();
+        Plane top(half_level.rows, 2 * half_level.cols);
+        for (int r = 0; r < top.rows; ++r)
+            for (int x = 0; x < top.cols; ++x) top.at(r, x) = half_level.at(r, x % half_level.cols);
+        store(desc.levels - 1, std::move(top), timer);
+    }
     out.synthesis_ms = synthesis.elapsed_ms();
     return out;
 }

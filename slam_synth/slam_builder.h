@@ -9,6 +9,7 @@
 // Na = 9; the padded height is rounded up to a multiple of 2^(Nsc+1).
 // Level i (l = 0.5 + 0.5·i/(N − 1)) is synthesized at its own length l·Lmax (rounded to a
 // multiple of 2^(Nsc+1)), so texture elements keep the exemplar's size in every level;
+// level 1.0 is A_0.5 twice, which is what its synthesis computes in exact arithmetic;
 // it is cropped back to the exemplar's rows and stored in the Slam at Lmax texels by
 // periodic linear resampling (engine/stroke/slam.h: texel x samples u = x/Lmax).
 // Output: the Slam (levels ordered 0.5 … 1.0; exemplar name and seed recorded), the levels
@@ -42,6 +43,7 @@ struct SlamLevelReport {
     double level = 0;
     int length = 0;  // texels synthesized
     double ms = 0;
+    bool tiled = false;  // level 1.0: [A_0.5 A_0.5], not synthesized (see synthesize_slam)
 };
 
 struct SlamSynthesisDesc {

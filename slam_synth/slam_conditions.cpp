@@ -54,7 +54,7 @@ LevelStatisticsReport level_statistics_report(const SlamSynthesis& s, const Slam
     const SlamModel& m = s.model;
     const Plane& level = s.levels[size_t(index)];
     const PyramidGeometry g = make_pyramid_geometry(m.padded_rows, level.cols, s.target.scales, s.target.orientations);
-    const Plane half = resample_length(filtered_seed(m.padded_rows, desc.length, desc.seed), desc.length / 2);
+    const Plane half = half_seed(m.padded_rows, desc.length, desc.seed);
     const Plane seed = seed_level(half, s.slam.level_value(index), level.cols);
     Plane seed_rows(m.exemplar_rows, level.cols);
     for (int r = 0; r < m.exemplar_rows; ++r)

@@ -68,7 +68,8 @@ int run_slam(const SlamOptions& o) {
     if (s.exemplar_cols != ink.cols)
         std::printf("exemplar cropped to %d columns (a multiple of %d)\n", s.exemplar_cols, m.unit);
     for (const synth::SlamLevelReport& r : s.reports)
-        std::printf("  level %2d  l = %.4f  %5d texels  %7.1f ms\n", r.index, r.level, r.length, r.ms);
+        std::printf("  level %2d  l = %.4f  %5d texels  %7.1f ms%s\n", r.index, r.level, r.length, r.ms,
+                    r.tiled ? "  (A_0.5 twice: what its synthesis computes, without the rounding)" : "");
     std::printf("analysis %.0f ms, synthesis %.0f ms\n", s.analysis_ms, s.synthesis_ms);
 
     const synth::SlamConditions c = synth::measure_slam_conditions(s);
