@@ -77,8 +77,14 @@ TEST_F(RansacGpu, MatchesTheCpuReference) {
         set.offsets.push_back(uint32_t(set.votes.size()));
     }
     const RansacParams params;
+    // A small set first, so that the second fit grows the fitter's kept buffers.
+    RansacFitter fitter(ctx(), FitBackend::Device);
+    VoteSet small{.votes = std::vector<Vote>(set.votes.begin(), set.votes.begin() + set.offsets[3]),
+                  .offsets = std::vector<uint32_t>(set.offsets.begin(), set.offsets.begin() + 4)};
+    const auto small_gpu = fitter.fit(small, params), small_cpu = fit_paths_reference(small, params);
+    for (size_t p = 0; p < small_cpu.size(); ++p) EXPECT_EQ(small_gpu[p].inliers, small_cpu[p].inliers) << p;
     const auto cpu = fit_paths_reference(set, params);
-    const auto gpu = RansacFitter(ctx()).fit(set, params);
+    const auto gpu = fitter.fit(set, params);
     ASSERT_EQ(gpu.size(), cpu.size());
     size_t fitted = 0;
     for (size_t p = 0; p < cpu.size(); ++p) {

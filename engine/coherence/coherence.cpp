@@ -195,7 +195,7 @@ CoherenceTracker::CoherenceTracker(const Context& ctx, uint32_t width, uint32_t 
                             .usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                             .purpose = MemoryPurpose::Readback,
                             .name = "splat readback"}),
-      fitter_(ctx) {
+      fitter_(ctx, preferred_fit_backend(ctx)) {
     VkFormatProperties props{};
     vkGetPhysicalDeviceFormatProperties(ctx.physical_device(), VK_FORMAT_R32G32B32A32_SFLOAT, &props);
     if (!(props.optimalTilingFeatures & VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BLEND_BIT))
@@ -231,7 +231,7 @@ VoteSet CoherenceTracker::gather_votes(const std::vector<ScreenPath>& paths, con
                 if (pixel.z <= 0.0f || pixel.x < 0.0f || pixel.y < 0.0f || pixel.x >= float(width_) ||
                     pixel.y >= float(height_))
                     continue;
-                const glm::vec4 sum = splat_[size_t(pixel.y) * width_ + size_t(pixel.x)];
+                const glm::vec4 sum = splat_at(uint32_t(pixel.x), uint32_t(pixel.y));
                 if (sum.y > 1e-6f) {
                     // Σwt/Σw is the parameterization at the weighted centre of the sprites that
                     // reached this pixel, not at the sample: near a path's ends (where all
@@ -273,11 +273,28 @@ void CoherenceTracker::restore(const State& state, const SurfaceFrame& surface) 
 void CoherenceTracker::splat_sprites(const std::vector<glm::vec3>& sprite_list, float radius, GpuTimer* timer) {
     last_sprites_ = sprite_list;
     last_radius_ = radius;
-    std::vector<Sprite> sprites;
-    sprites.reserve(sprite_list.size());
-    for (const glm::vec3& s : sprite_list) sprites.push_back({glm::vec2(s), s.z});
-    Buffer sprite_buffer;
-    if (!sprites.empty()) sprite_buffer = upload_vertices(*ctx_, std::as_bytes(std::span(sprites)), "splat sprites");
+    // Only the band of rows the sprites reach is cleared, drawn and read back: the copy of a
+    // whole RGBA32F frame (15 MB at 1280×720) was most of this stage's time on lavapipe.
+    splat_first_row_ = splat_rows_ = 0;
+    if (sprite_list.empty()) return;
+    float top = sprite_list.front().y, bottom = top;
+    for (const glm::vec3& s : sprite_list) {
+        top = std::min(top, s.y);
+        bottom = std::max(bottom, s.y);
+    }
+    const float margin = radius + 2.0f;  // the sprite quads reach radius + 1 (coherence_splat.vert)
+    const auto first = uint32_t(std::clamp(std::floor(top - margin), 0.0f, float(height_)));
+    const auto end = uint32_t(std::clamp(std::ceil(bottom + margin) + 1.0f, 0.0f, float(height_)));
+    if (end <= first) return;
+    splat_first_row_ = first;
+    splat_rows_ = end - first;
+
+    ensure_buffer(*ctx_, sprite_buffer_, {.size = sprite_list.size() * sizeof(Sprite),
+                                          .usage = VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
+                                          .purpose = MemoryPurpose::Upload,
+                                          .name = "splat sprites"});
+    auto* sprites = static_cast<Sprite*>(sprite_buffer_.mapped());
+    for (size_t i = 0; i < sprite_list.size(); ++i) sprites[i] = {glm::vec2(sprite_list[i]), sprite_list[i].z};
     ctx_->submit_and_wait([&](VkCommandBuffer cmd) {
         if (timer) {
             timer->reset(cmd);
@@ -296,21 +313,19 @@ void CoherenceTracker::splat_sprites(const std::vector<glm::vec3>& sprite_list, 
                                              .imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                                              .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
                                              .storeOp = VK_ATTACHMENT_STORE_OP_STORE};
+        const VkRect2D band{{0, int32_t(splat_first_row_)}, {width_, splat_rows_}};
         VkRenderingInfo rendering{.sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
-                                  .renderArea = {{0, 0}, {width_, height_}},
+                                  .renderArea = band,
                                   .layerCount = 1,
                                   .colorAttachmentCount = 1,
                                   .pColorAttachments = &attachment};
         vkCmdBeginRendering(cmd, &rendering);
-        if (!sprites.empty()) {
-            VkViewport viewport{0.0f, 0.0f, float(width_), float(height_), 0.0f, 1.0f};
-            VkRect2D scissor{{0, 0}, {width_, height_}};
-            vkCmdSetViewport(cmd, 0, 1, &viewport);
-            vkCmdSetScissor(cmd, 0, 1, &scissor);
-            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, splat_pipeline_.get());
-            const SplatPush push{{float(width_), float(height_)}, radius, 0.0f};
-            splat_pipeline_.draw(cmd, sprite_buffer, 6, &push, sizeof(push), uint32_t(sprites.size()));
-        }
+        VkViewport viewport{0.0f, 0.0f, float(width_), float(height_), 0.0f, 1.0f};
+        vkCmdSetViewport(cmd, 0, 1, &viewport);
+        vkCmdSetScissor(cmd, 0, 1, &band);
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, splat_pipeline_.get());
+        const SplatPush push{{float(width_), float(height_)}, radius, 0.0f};
+        splat_pipeline_.draw(cmd, sprite_buffer_, 6, &push, sizeof(push), uint32_t(sprite_list.size()));
         vkCmdEndRendering(cmd);
         record_image_barrier(cmd, splat_image_,
                              {.old_layout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
@@ -320,13 +335,24 @@ void CoherenceTracker::splat_sprites(const std::vector<glm::vec3>& sprite_list, 
                               .dst_stage = VK_PIPELINE_STAGE_2_COPY_BIT,
                               .dst_access = VK_ACCESS_2_TRANSFER_READ_BIT});
         if (timer) timer->end(cmd);
-        record_image_to_buffer(cmd, splat_image_, splat_readback_);
+        record_image_rows_to_buffer(cmd, splat_image_, splat_readback_, splat_first_row_, splat_rows_);
         record_memory_barrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                               VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
     });
+    // The next update() reads the band in place (splat_at), before anything splats again.
     splat_readback_.invalidate(*ctx_);
-    splat_.resize(size_t(width_) * height_);
-    std::memcpy(splat_.data(), splat_readback_.mapped(), splat_.size() * sizeof(glm::vec4));
+}
+
+glm::vec4 CoherenceTracker::splat_at(uint32_t x, uint32_t y) const {
+    if (y < splat_first_row_ || y >= splat_first_row_ + splat_rows_) return glm::vec4(0.0f);
+    return static_cast<const glm::vec4*>(splat_readback_.mapped())[size_t(y) * width_ + x];
+}
+
+std::vector<glm::vec4> CoherenceTracker::splat_buffer() const {
+    std::vector<glm::vec4> out(size_t(width_) * height_);
+    for (uint32_t y = 0; y < height_; ++y)
+        for (uint32_t x = 0; x < width_; ++x) out[size_t(y) * width_ + x] = splat_at(x, y);
+    return out;
 }
 
 void CoherenceTracker::split_merged_paths(std::vector<ScreenPath>& paths, VoteSet& votes, std::vector<PathFit>& fits,

@@ -114,7 +114,8 @@ public:
     // Splats the state's sprites again (the same buffer, bit for bit, on the same device).
     void restore(const State& state, const SurfaceFrame& surface);
 
-    const std::vector<glm::vec4>& splat_buffer() const { return splat_; }
+    // The last splat, whole frame (rows it did not reach are zero); for tests.
+    [[nodiscard]] std::vector<glm::vec4> splat_buffer() const;
 
 private:
     // Where a long run of a path's votes disagrees with its fit, the path merged pieces that
@@ -126,17 +127,20 @@ private:
     void splat(const std::vector<ScreenPath>& paths, const std::vector<PathParam>& params, float radius,
                GpuTimer* timer);
     void splat_sprites(const std::vector<glm::vec3>& sprites, float radius, GpuTimer* timer);
+    // The last splat's (Σ w·t, Σ w, Σ w·(c − pixel)) at a pixel, read in place from the readback.
+    [[nodiscard]] glm::vec4 splat_at(uint32_t x, uint32_t y) const;
 
     const Context* ctx_;
     uint32_t width_, height_;
     Image splat_image_;
     GraphicsPipeline splat_pipeline_;
-    Buffer splat_readback_;
+    Buffer splat_readback_;  // the last splat, rows [splat_first_row_, + splat_rows_) valid
+    uint32_t splat_first_row_ = 0, splat_rows_ = 0;
+    Buffer sprite_buffer_;   // host-visible, kept from frame to frame
     RansacFitter fitter_;
     bool has_previous_ = false;
     CameraMatrices previous_camera_;
     std::vector<glm::vec3> previous_positions_;
-    std::vector<glm::vec4> splat_;  // previous frame's (Σ w·t, Σ w, Σ w·(c − pixel)), row-major
     std::vector<glm::vec3> last_sprites_;  // what made it (state())
     float last_radius_ = 0.0f;
 };

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include "gpu/resources.h"
 
 #include <cstring>
@@ -75,6 +76,14 @@ void Buffer::invalidate(const Context& ctx) const {
     if (coherent_ || !mapped_) return;
     VkMappedMemoryRange range{.sType = VK_STRUCTURE_TYPE_MAPPED_MEMORY_RANGE, .memory = memory_, .size = VK_WHOLE_SIZE};
     LW_VK(vkInvalidateMappedMemoryRanges(ctx.device(), 1, &range));
+}
+
+Buffer& ensure_buffer(const Context& ctx, Buffer& buffer, const BufferDesc& desc) {
+    if (buffer.get() != VK_NULL_HANDLE && buffer.size() >= desc.size) return buffer;
+    BufferDesc grown = desc;
+    grown.size = std::max(desc.size, buffer.size() + buffer.size() / 2);
+    buffer = Buffer(ctx, grown);
+    return buffer;
 }
 
 Buffer upload_buffer(const Context& ctx, std::span<const std::byte> bytes, VkBufferUsageFlags usage, const char* name) {
@@ -209,6 +218,18 @@ void record_image_to_buffer(VkCommandBuffer cmd, const Image& image, const Buffe
                              .imageSubresource = {image.aspect(), 0, 0, 1},
                              .imageOffset = {0, 0, 0},
                              .imageExtent = {image.extent().width, image.extent().height, 1}};
+    vkCmdCopyImageToBuffer(cmd, image.get(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, buffer.get(), 1, &region);
+}
+
+void record_image_rows_to_buffer(VkCommandBuffer cmd, const Image& image, const Buffer& buffer, uint32_t first_row,
+                                 uint32_t rows) {
+    const VkExtent2D extent = image.extent();
+    VkBufferImageCopy region{.bufferOffset = VkDeviceSize(first_row) * extent.width * format_texel_size(image.format()),
+                             .bufferRowLength = 0,
+                             .bufferImageHeight = 0,
+                             .imageSubresource = {image.aspect(), 0, 0, 1},
+                             .imageOffset = {0, int32_t(first_row), 0},
+                             .imageExtent = {extent.width, rows, 1}};
     vkCmdCopyImageToBuffer(cmd, image.get(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, buffer.get(), 1, &region);
 }
 

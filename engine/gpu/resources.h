@@ -49,6 +49,11 @@ private:
     bool coherent_ = true;
 };
 
+// A buffer kept from call to call (per-frame uploads and readbacks): replaced by a new one of
+// `desc` when it is smaller than desc.size (grown by half again, so that slowly growing
+// sizes do not reallocate every frame; the old contents are lost). Returns `buffer`.
+Buffer& ensure_buffer(const Context& ctx, Buffer& buffer, const BufferDesc& desc);
+
 // A Device buffer filled with `bytes` through a staging buffer (waits for the copy).
 [[nodiscard]] Buffer upload_buffer(const Context& ctx, std::span<const std::byte> bytes, VkBufferUsageFlags usage,
                                    const char* name);
@@ -118,6 +123,10 @@ uint32_t format_texel_size(VkFormat format);
 
 // Records a copy of `image` (in TRANSFER_SRC_OPTIMAL layout) into a Readback buffer.
 void record_image_to_buffer(VkCommandBuffer cmd, const Image& image, const Buffer& buffer);
+// Rows [first_row, first_row + rows) of a 2D image to the same rows of a buffer laid out
+// like the whole image (row-major, tightly packed): byte offset first_row · width · texel.
+void record_image_rows_to_buffer(VkCommandBuffer cmd, const Image& image, const Buffer& buffer, uint32_t first_row,
+                                 uint32_t rows);
 
 // One synchronization2 image layout transition on the whole image.
 struct ImageBarrier {
