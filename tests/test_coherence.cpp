@@ -109,7 +109,7 @@ TEST_F(CoherenceGpu, SplatMatchesTheCpuReference) {
     const int width = 96, height = 64;
     std::vector<ScreenPath> paths{straight_path({5.3f, 7.1f}, {90.2f, 40.7f}, 2.0f),
                                   straight_path({20.0f, 60.0f}, {60.5f, 3.5f}, 2.0f)};
-    CoherenceTracker tracker(ctx(), width, height);
+    CoherenceTracker tracker(ctx(), width, height, ComputeSite::Device);  // the GPU splat, on every device
     CoherenceParams params{.policy = ParamPolicy::Arclength, .splat_radius_px = 4.0f};
     const auto fitted = tracker.update(paths, CameraMatrices{}, {}, params);
     const auto reference = splat_reference(paths, fitted, width, height, 4.0f);
@@ -153,6 +153,40 @@ TEST_F(CoherenceGpu, StillPathsKeepTheirScaleAndFragmentsAreDropped) {
     // T is kept in the octave of the tiling scale 1/64 (the 30 px path starts at T = s/L).
     EXPECT_GE(std::abs(last[0].rho), 0.5f / 64.0f);
     EXPECT_LE(std::abs(last[0].rho), 2.0f / 64.0f);
+}
+
+// On CPU devices the tracker splats and fits on the host (ComputeSite); both sites must give
+// the same parameterization, frame after frame, on a moving view of a real mesh.
+TEST_F(CoherenceGpu, HostAndDeviceSitesGiveTheSameParameterization) {
+    const TriangleMesh mesh = make_icosphere(1.0f, 4);
+    const Bounds bounds = compute_bounds(mesh.positions);
+    FrameRenderer renderer(ctx(), 320, 240);
+    renderer.set_mesh(mesh, true, 45.0f);
+    const LinesDesc lines;
+    const CoherenceParams params;
+    CoherenceTracker host(ctx(), 320, 240, ComputeSite::Host), device(ctx(), 320, 240, ComputeSite::Device);
+    const SurfaceFrame surface{&renderer.line_mesh()->mesh.positions, &renderer.line_mesh()->mesh.faces};
+    size_t fitted = 0;
+    for (int frame = 0; frame < 4; ++frame) {
+        const ViewCamera view{.eye = {0.3f + 0.05f * float(frame), 0.2f, 4.0f}, .target = {0, 0, 0}, .fov_deg = 40};
+        const CameraMatrices camera = camera_matrices(view, 4.0f / 3.0f, bounds);
+        const Frame f = renderer.render(camera, view.eye, SurfaceStyle{}, lines, {.color = false});
+        std::vector<ScreenPath> host_paths = f.screen_paths, device_paths = f.screen_paths;
+        const auto a = host.update(host_paths, camera, surface, params);
+        const auto b = device.update(device_paths, camera, surface, params);
+        ASSERT_EQ(a.size(), b.size()) << frame;
+        for (size_t p = 0; p < a.size(); ++p) {
+            EXPECT_EQ(a[p].votes, b[p].votes) << frame << " " << p;
+            EXPECT_EQ(a[p].fitted, b[p].fitted) << frame << " " << p;
+            EXPECT_NEAR(a[p].rho, b[p].rho, 1e-3f * std::abs(b[p].rho)) << frame << " " << p;
+            EXPECT_NEAR(a[p].phi, b[p].phi, 1e-2f) << frame << " " << p;
+            fitted += a[p].fitted;
+        }
+    }
+    EXPECT_GT(fitted, 2u);  // frames 1–3 fitted from the previous frame's splat
+    const auto host_buffer = host.splat_buffer(), device_buffer = device.splat_buffer();
+    ASSERT_EQ(host_buffer.size(), device_buffer.size());
+    for (size_t i = 0; i < host_buffer.size(); ++i) EXPECT_NEAR(host_buffer[i].y, device_buffer[i].y, 1e-4f) << i;
 }
 
 TEST_F(CoherenceGpu, AStillViewKeepsItsParameterization) {

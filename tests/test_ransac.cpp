@@ -78,7 +78,7 @@ TEST_F(RansacGpu, MatchesTheCpuReference) {
     }
     const RansacParams params;
     // A small set first, so that the second fit grows the fitter's kept buffers.
-    RansacFitter fitter(ctx(), FitBackend::Device);
+    RansacFitter fitter(ctx(), ComputeSite::Device);
     VoteSet small{.votes = std::vector<Vote>(set.votes.begin(), set.votes.begin() + set.offsets[3]),
                   .offsets = std::vector<uint32_t>(set.offsets.begin(), set.offsets.begin() + 4)};
     const auto small_gpu = fitter.fit(small, params), small_cpu = fit_paths_reference(small, params);

@@ -1,5 +1,7 @@
 #include "coherence/coherence.h"
 
+#include <span>
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -148,30 +150,54 @@ void keep_in_home_octave(PathParam& param, float rho0) {
 
 }  // namespace
 
+namespace {
+
+// Adds sprites (centre x, y in pixels; T) of radius δ into `buffer` (width × height), in
+// order, the weights the GPU splat's fragment stage computes at pixel centres. `touched`
+// (optional) receives the index of every pixel written.
+void splat_into(std::span<const glm::vec3> sprites, float radius, int width, int height, std::vector<glm::vec4>& buffer,
+                std::vector<uint32_t>* touched) {
+    for (const glm::vec3& sprite : sprites) {
+        const glm::vec2 c(sprite);
+        const float t = sprite.z;
+        const int x0 = std::max(0, int(std::floor(c.x - radius))), x1 = std::min(width - 1, int(std::ceil(c.x + radius)));
+        const int y0 = std::max(0, int(std::floor(c.y - radius))), y1 = std::min(height - 1, int(std::ceil(c.y + radius)));
+        for (int y = y0; y <= y1; ++y)
+            for (int x = x0; x <= x1; ++x) {
+                const glm::vec2 pixel(float(x) + 0.5f, float(y) + 0.5f);
+                const float d = glm::length(pixel - c);
+                const float w = std::clamp(1.0f - d / radius, 0.0f, 1.0f);
+                if (w <= 0.0f) continue;
+                const size_t i = size_t(y) * size_t(width) + size_t(x);
+                buffer[i] += glm::vec4(w * t, w, w * (c - pixel));
+                if (touched) touched->push_back(uint32_t(i));
+            }
+    }
+}
+
+std::vector<glm::vec3> sprites_of(const std::vector<ScreenPath>& paths, const std::vector<PathParam>& params) {
+    std::vector<glm::vec3> sprites;
+    for (size_t p = 0; p < paths.size(); ++p) {
+        if (!paths[p].visible) continue;
+        for (size_t k = 0; k < paths[p].samples.size(); ++k)
+            sprites.push_back(glm::vec3(paths[p].samples[k].pixel,
+                                        params[p].rho * path_arclength(paths[p], k) + params[p].phi));
+    }
+    return sprites;
+}
+
+}  // namespace
+
 std::vector<glm::vec4> splat_reference(const std::vector<ScreenPath>& paths, const std::vector<PathParam>& params,
                                        int width, int height, float radius) {
     std::vector<glm::vec4> buffer(size_t(width) * height, glm::vec4(0.0f));
-    for (size_t p = 0; p < paths.size(); ++p) {
-        if (!paths[p].visible) continue;
-        for (size_t k = 0; k < paths[p].samples.size(); ++k) {
-            const glm::vec2 c = paths[p].samples[k].pixel;
-            const float t = params[p].rho * path_arclength(paths[p], k) + params[p].phi;
-            const int x0 = std::max(0, int(std::floor(c.x - radius))), x1 = std::min(width - 1, int(std::ceil(c.x + radius)));
-            const int y0 = std::max(0, int(std::floor(c.y - radius))), y1 = std::min(height - 1, int(std::ceil(c.y + radius)));
-            for (int y = y0; y <= y1; ++y)
-                for (int x = x0; x <= x1; ++x) {
-                    const glm::vec2 pixel(float(x) + 0.5f, float(y) + 0.5f);
-                    const float d = glm::length(pixel - c);
-                    const float w = std::clamp(1.0f - d / radius, 0.0f, 1.0f);
-                    if (w > 0.0f) buffer[size_t(y) * width + x] += glm::vec4(w * t, w, w * (c - pixel));
-                }
-        }
-    }
+    splat_into(sprites_of(paths, params), radius, width, height, buffer, nullptr);
     return buffer;
 }
 
-CoherenceTracker::CoherenceTracker(const Context& ctx, uint32_t width, uint32_t height)
+CoherenceTracker::CoherenceTracker(const Context& ctx, uint32_t width, uint32_t height, ComputeSite site)
     : ctx_(&ctx),
+      site_(site),
       width_(width),
       height_(height),
       splat_image_(ctx, {.width = width, .height = height, .format = VK_FORMAT_R32G32B32A32_SFLOAT,
@@ -195,7 +221,7 @@ CoherenceTracker::CoherenceTracker(const Context& ctx, uint32_t width, uint32_t 
                             .usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                             .purpose = MemoryPurpose::Readback,
                             .name = "splat readback"}),
-      fitter_(ctx, preferred_fit_backend(ctx)) {
+      fitter_(ctx, site) {
     VkFormatProperties props{};
     vkGetPhysicalDeviceFormatProperties(ctx.physical_device(), VK_FORMAT_R32G32B32A32_SFLOAT, &props);
     if (!(props.optimalTilingFeatures & VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BLEND_BIT))
@@ -253,14 +279,7 @@ VoteSet CoherenceTracker::gather_votes(const std::vector<ScreenPath>& paths, con
 
 void CoherenceTracker::splat(const std::vector<ScreenPath>& paths, const std::vector<PathParam>& params, float radius,
                              GpuTimer* timer) {
-    std::vector<glm::vec3> sprites;
-    for (size_t p = 0; p < paths.size(); ++p) {
-        if (!paths[p].visible) continue;
-        for (size_t k = 0; k < paths[p].samples.size(); ++k)
-            sprites.push_back(glm::vec3(paths[p].samples[k].pixel,
-                                        params[p].rho * path_arclength(paths[p], k) + params[p].phi));
-    }
-    splat_sprites(sprites, radius, timer);
+    splat_sprites(sprites_of(paths, params), radius, timer);
 }
 
 void CoherenceTracker::restore(const State& state, const SurfaceFrame& surface) {
@@ -273,6 +292,14 @@ void CoherenceTracker::restore(const State& state, const SurfaceFrame& surface) 
 void CoherenceTracker::splat_sprites(const std::vector<glm::vec3>& sprite_list, float radius, GpuTimer* timer) {
     last_sprites_ = sprite_list;
     last_radius_ = radius;
+    if (site_ == ComputeSite::Host) {
+        // The buffer is cleared where the last splat wrote, not whole (15 MB at 1280×720).
+        if (host_splat_.empty()) host_splat_.assign(size_t(width_) * height_, glm::vec4(0.0f));
+        for (uint32_t i : host_touched_) host_splat_[i] = glm::vec4(0.0f);
+        host_touched_.clear();
+        splat_into(sprite_list, radius, int(width_), int(height_), host_splat_, &host_touched_);
+        return;
+    }
     // Only the band of rows the sprites reach is cleared, drawn and read back: the copy of a
     // whole RGBA32F frame (15 MB at 1280×720) was most of this stage's time on lavapipe.
     splat_first_row_ = splat_rows_ = 0;
@@ -344,6 +371,7 @@ void CoherenceTracker::splat_sprites(const std::vector<glm::vec3>& sprite_list, 
 }
 
 glm::vec4 CoherenceTracker::splat_at(uint32_t x, uint32_t y) const {
+    if (site_ == ComputeSite::Host) return host_splat_.empty() ? glm::vec4(0.0f) : host_splat_[size_t(y) * width_ + x];
     if (y < splat_first_row_ || y >= splat_first_row_ + splat_rows_) return glm::vec4(0.0f);
     return static_cast<const glm::vec4*>(splat_readback_.mapped())[size_t(y) * width_ + x];
 }

@@ -86,7 +86,11 @@ struct SurfaceFrame {
 
 class CoherenceTracker {
 public:
-    CoherenceTracker(const Context& ctx, uint32_t width, uint32_t height);
+    // `site` Host (the default on CPU devices, see ComputeSite): the splat is splat_reference's
+    // loop into a host buffer and RANSAC is fit_paths_reference; Device: the GPU splat and fit.
+    CoherenceTracker(const Context& ctx, uint32_t width, uint32_t height, ComputeSite site);
+    CoherenceTracker(const Context& ctx, uint32_t width, uint32_t height)
+        : CoherenceTracker(ctx, width, height, ctx.preferred_compute_site()) {}
 
     // Parameterizes this frame's visible paths (entries for hidden paths stay default) and
     // splats them for the next frame. Visible paths shorter than min_stroke_length_px are
@@ -131,12 +135,15 @@ private:
     [[nodiscard]] glm::vec4 splat_at(uint32_t x, uint32_t y) const;
 
     const Context* ctx_;
+    ComputeSite site_;
     uint32_t width_, height_;
     Image splat_image_;
     GraphicsPipeline splat_pipeline_;
     Buffer splat_readback_;  // the last splat, rows [splat_first_row_, + splat_rows_) valid
     uint32_t splat_first_row_ = 0, splat_rows_ = 0;
     Buffer sprite_buffer_;   // host-visible, kept from frame to frame
+    std::vector<glm::vec4> host_splat_;    // ComputeSite::Host: the last splat, whole frame
+    std::vector<uint32_t> host_touched_;   // pixels of host_splat_ it wrote
     RansacFitter fitter_;
     bool has_previous_ = false;
     CameraMatrices previous_camera_;

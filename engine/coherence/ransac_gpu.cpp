@@ -21,20 +21,16 @@ struct RansacPush {
 
 }  // namespace
 
-FitBackend preferred_fit_backend(const Context& ctx) {
-    return ctx.info().type == VK_PHYSICAL_DEVICE_TYPE_CPU ? FitBackend::Host : FitBackend::Device;
-}
-
-RansacFitter::RansacFitter(const Context& ctx, FitBackend backend)
+RansacFitter::RansacFitter(const Context& ctx, ComputeSite site)
     : ctx_(&ctx),
-      backend_(backend),
+      site_(site),
       pipeline_(ctx, {.spirv = LW_SPIRV(coherence_ransac_comp_spv),
                       .storage_buffers = 3,
                       .push_constant_size = sizeof(RansacPush),
                       .name = "coherence ransac"}) {}
 
 std::vector<PathFit> RansacFitter::fit(const VoteSet& set, const RansacParams& params, GpuTimer* timer) const {
-    if (backend_ == FitBackend::Host) return fit_paths_reference(set, params);
+    if (site_ == ComputeSite::Host) return fit_paths_reference(set, params);
     const auto paths = static_cast<uint32_t>(set.path_count());
     std::vector<PathFit> out(paths);
     if (paths == 0) return out;

@@ -14,16 +14,11 @@
 
 namespace lw {
 
-// Where fit() runs. On a CPU device (lavapipe) the "GPU" is the same cores, and a dispatch of
-// one 64-invocation workgroup per path, with its barriers, costs ~17× the plain loop
-// (3.9 ms against 0.23 ms for 450 paths, 1,900 votes): there the host runs the reference.
-enum class FitBackend { Device, Host };
-[[nodiscard]] FitBackend preferred_fit_backend(const Context& ctx);  // Host on CPU devices
-
 class RansacFitter {
 public:
-    explicit RansacFitter(const Context& ctx, FitBackend backend = FitBackend::Device);
-    FitBackend backend() const { return backend_; }
+    // `site` Host: fit() is fit_paths_reference (on lavapipe a dispatch of one 64-invocation
+    // workgroup per path, with its barriers, costs ~17× that loop; see ComputeSite).
+    explicit RansacFitter(const Context& ctx, ComputeSite site = ComputeSite::Device);
 
     // Device: writes the votes to host-visible buffers, dispatches, waits and reads the fits
     // in place (one submission; the buffers are kept for the next call, so fit() is not
@@ -33,7 +28,7 @@ public:
 
 private:
     const Context* ctx_;
-    FitBackend backend_;
+    ComputeSite site_;
     ComputePipeline pipeline_;
     // Scratch kept between calls: four submissions and six allocations per call (staging
     // uploads, a readback) cost more than the dispatch on lavapipe.

@@ -1,3 +1,4 @@
+#include <utility>
 #include "gpu/context.h"
 
 #include <algorithm>
@@ -311,20 +312,49 @@ void Context::destroy() {
     instance_ = VK_NULL_HANDLE;
 }
 
-void Context::submit_and_wait(const std::function<void(VkCommandBuffer)>& record) const {
+Context::Submission::Submission(VkDevice device, VkCommandPool pool, VkCommandBuffer cmd, VkFence fence)
+    : device_(device), pool_(pool), cmd_(cmd), fence_(fence) {}
+
+Context::Submission::Submission(Submission&& other) noexcept
+    : device_(std::exchange(other.device_, VK_NULL_HANDLE)),
+      pool_(other.pool_),
+      cmd_(std::exchange(other.cmd_, VK_NULL_HANDLE)),
+      fence_(std::exchange(other.fence_, VK_NULL_HANDLE)) {}
+
+void Context::Submission::wait() {
+    if (fence_ == VK_NULL_HANDLE) return;
+    const VkResult waited = vkWaitForFences(device_, 1, &fence_, VK_TRUE, UINT64_MAX);
+    vkDestroyFence(device_, fence_, nullptr);
+    fence_ = VK_NULL_HANDLE;
+    vkFreeCommandBuffers(device_, pool_, 1, &cmd_);
+    cmd_ = VK_NULL_HANDLE;
+    vk_check(waited, "vkWaitForFences");
+}
+
+Context::Submission::~Submission() {
+    if (fence_ == VK_NULL_HANDLE) return;
+    // Unwinding past a submission still in flight: wait without throwing, then free.
+    vkWaitForFences(device_, 1, &fence_, VK_TRUE, UINT64_MAX);
+    vkDestroyFence(device_, fence_, nullptr);
+    vkFreeCommandBuffers(device_, pool_, 1, &cmd_);
+}
+
+Context::Submission Context::submit(const std::function<void(VkCommandBuffer)>& record) const {
     VkCommandBufferAllocateInfo alloc{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO,
                                       .commandPool = command_pool_,
                                       .level = VK_COMMAND_BUFFER_LEVEL_PRIMARY,
                                       .commandBufferCount = 1};
     VkCommandBuffer cmd = VK_NULL_HANDLE;
     LW_VK(vkAllocateCommandBuffers(device_, &alloc, &cmd));
-    // Free the command buffer whatever happens below.
-    struct FreeOnExit {
+    // Free the command buffer if recording or submitting fails.
+    struct FreeUnlessSubmitted {
         VkDevice device;
         VkCommandPool pool;
         VkCommandBuffer cmd;
-        ~FreeOnExit() { vkFreeCommandBuffers(device, pool, 1, &cmd); }
-    } free_on_exit{device_, command_pool_, cmd};
+        ~FreeUnlessSubmitted() {
+            if (cmd) vkFreeCommandBuffers(device, pool, 1, &cmd);
+        }
+    } guard{device_, command_pool_, cmd};
 
     VkCommandBufferBeginInfo begin{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO,
                                    .flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT};
@@ -340,8 +370,9 @@ void Context::submit_and_wait(const std::function<void(VkCommandBuffer)>& record
     VkSubmitInfo2 submit{.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO_2,
                          .commandBufferInfoCount = 1,
                          .pCommandBufferInfos = &cmd_info};
-    LW_VK(vkQueueSubmit2(queue_, 1, &submit, fence));
-    LW_VK(vkWaitForFences(device_, 1, &raw_fence, VK_TRUE, UINT64_MAX));
+    LW_VK(vkQueueSubmit2(queue_, 1, &submit, raw_fence));
+    guard.cmd = VK_NULL_HANDLE;
+    return Submission(device_, command_pool_, cmd, fence.release());
 }
 
 void Context::set_name(VkObjectType type, uint64_t handle, const char* name) const {

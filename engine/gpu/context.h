@@ -61,6 +61,13 @@ struct DeviceInfo {
     std::string describe() const;   // "llvmpipe (LLVM 15.0.6, 256 bits) [cpu, Vulkan 1.3.230]"
 };
 
+// Where a compute-shaped stage runs. On a CPU device (lavapipe) the "GPU" is the host's own
+// cores, and Vulkan's submissions, barriers and float blending there cost more than the
+// reference loops the tests compare the GPU code with (RANSAC 3.9 against 0.23 ms, the splat
+// 5.5 against under 1 ms, line extraction 5.3 against 2.3 ms per frame at 70k triangles):
+// on such a device the host runs those. The GPU paths stay tested against them everywhere.
+enum class ComputeSite { Device, Host };
+
 // Lists the physical devices the loader sees (creates and drops a bare instance).
 [[nodiscard]] std::vector<DeviceInfo> list_devices();
 
@@ -77,6 +84,10 @@ public:
     VkQueue queue() const { return queue_; }
     uint32_t queue_family() const { return queue_family_; }
     const DeviceInfo& info() const { return info_; }
+    // Host on CPU devices, else Device (see ComputeSite).
+    ComputeSite preferred_compute_site() const {
+        return info_.type == VK_PHYSICAL_DEVICE_TYPE_CPU ? ComputeSite::Host : ComputeSite::Device;
+    }
     const VkPhysicalDeviceProperties& properties() const { return properties_; }
     const VkPhysicalDeviceMemoryProperties& memory_properties() const { return memory_properties_; }
 
@@ -85,8 +96,28 @@ public:
     bool has_timestamps() const { return timestamp_valid_bits_ > 0; }
     bool has_push_descriptors() const { return has_push_descriptors_; }
 
-    // Records one command buffer with `record`, submits it and waits for completion.
-    void submit_and_wait(const std::function<void(VkCommandBuffer)>& record) const;
+    // A submitted command buffer and its fence: wait() blocks until the device is done
+    // (the destructor waits too, so nothing in flight is ever freed).
+    class Submission {
+    public:
+        Submission(VkDevice device, VkCommandPool pool, VkCommandBuffer cmd, VkFence fence);
+        Submission(Submission&& other) noexcept;
+        Submission& operator=(Submission&&) = delete;
+        ~Submission();
+        void wait();
+
+    private:
+        VkDevice device_ = VK_NULL_HANDLE;
+        VkCommandPool pool_ = VK_NULL_HANDLE;
+        VkCommandBuffer cmd_ = VK_NULL_HANDLE;
+        VkFence fence_ = VK_NULL_HANDLE;
+    };
+
+    // Records one command buffer with `record` and submits it; the host may work on while
+    // the device runs it.
+    [[nodiscard]] Submission submit(const std::function<void(VkCommandBuffer)>& record) const;
+    // The same, waiting for completion.
+    void submit_and_wait(const std::function<void(VkCommandBuffer)>& record) const { submit(record).wait(); }
 
     // Gives a Vulkan object a name that validation messages and debuggers show.
     void set_name(VkObjectType type, uint64_t handle, const char* name) const;

@@ -38,6 +38,9 @@ public:
         handle_ = VK_NULL_HANDLE;
     }
 
+    // Gives the handle up: the caller destroys it.
+    [[nodiscard]] T release() { return std::exchange(handle_, VK_NULL_HANDLE); }
+
     T get() const { return handle_; }
     operator T() const { return handle_; }  // NOLINT: pass straight to Vulkan calls
     explicit operator bool() const { return handle_ != VK_NULL_HANDLE; }

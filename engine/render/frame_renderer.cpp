@@ -6,6 +6,7 @@
 #include "core/timer.h"
 #include "geometry/welded_mesh.h"
 #include "lines/chaining.h"
+#include "lines/extract_reference.h"
 
 namespace lw {
 
@@ -15,6 +16,7 @@ FrameRenderer::FrameRenderer(const Context& ctx, uint32_t width, uint32_t height
       surface_pass_(ctx),
       line_pass_(ctx),
       extractor_(ctx),
+      extraction_on_host_(ctx.preferred_compute_site() == ComputeSite::Host),
       timer_(ctx),
       depth_readback_(ctx, {.size = VkDeviceSize(width) * height * 4, .usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                             .purpose = MemoryPurpose::Readback, .name = "depth readback"}),
@@ -88,9 +90,12 @@ Frame FrameRenderer::render(const CameraMatrices& camera, const glm::vec3& eye, 
     Buffer& depth_readback = depth_readback_;
     Buffer& color_readback = color_readback_;
 
-    // (1) Surface and depth; line extraction in the same submission.
+    // (1) Surface and depth; line extraction in the same submission, or (on a CPU device, see
+    // ComputeSite) by the host while the device draws the surface: lavapipe's vertex stage
+    // runs on one thread and leaves the other core to the host extraction.
+    const bool host_extraction = draw_lines && extraction_on_host_;
     for (int attempt = 0;; ++attempt) {
-        ctx_->submit_and_wait([&](VkCommandBuffer cmd) {
+        Context::Submission surface_work = ctx_->submit([&](VkCommandBuffer cmd) {
             timer_.reset(cmd);
             timer_.begin(cmd, "surface");
             if (mesh_)
@@ -98,12 +103,18 @@ Frame FrameRenderer::render(const CameraMatrices& camera, const glm::vec3& eye, 
             else
                 surface_pass_.record_clear(cmd, target_, surface);
             timer_.end(cmd);
-            if (draw_lines) extractor_.record(cmd, eye, lines.params, &timer_);
+            if (draw_lines && !host_extraction) extractor_.record(cmd, eye, lines.params, &timer_);
             if (draw_lines || outputs.depth) record_image_to_buffer(cmd, target_.depth, depth_readback);
             record_memory_barrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                                   VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
         });
-        if (!draw_lines || extractor_.read_segments(frame.segments)) break;
+        if (host_extraction) {
+            Timer extract;
+            frame.segments = extract_lines_reference(*line_mesh_, eye, lines.params);
+            frame.timings.extract_ms = extract.elapsed_ms();
+        }
+        surface_work.wait();
+        if (!draw_lines || host_extraction || extractor_.read_segments(frame.segments)) break;
         if (attempt == 2) throw Error("line extraction: the segment count kept growing past the buffer");
     }
     frame.timings.gpu = timer_.results();

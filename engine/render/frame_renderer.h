@@ -6,8 +6,9 @@
 //         hidden screen paths (for SVG and dumps), and timings per stage.
 //
 // A frame is two submissions: (1) surface pass + line extraction compute pass, depth and
-// segments read back; (2) after chaining and visibility on the CPU, the line pass over the
-// colour target, colour read back. See README "Architecture".
+// segments read back (on a CPU device the host runs the reference extraction while the
+// device draws the surface); (2) after chaining and visibility on the CPU, the line pass
+// over the colour target, colour read back. See README "Architecture".
 #pragma once
 
 #include <memory>
@@ -32,6 +33,7 @@ namespace lw {
 
 struct FrameTimings {
     double total_ms = 0.0;       // wall, whole frame
+    double extract_ms = 0.0;     // CPU, when the host extracts (CPU devices), else 0
     double chain_ms = 0.0;       // CPU
     double visibility_ms = 0.0;  // CPU
     double coherence_ms = 0.0;   // votes + RANSAC + splat, wall
@@ -115,6 +117,7 @@ private:
     SurfacePass surface_pass_;
     LinePass line_pass_;
     LineExtractor extractor_;
+    bool extraction_on_host_;  // CPU devices: extract_lines_reference, beside the surface pass
     GpuTimer timer_;
     Buffer depth_readback_, color_readback_;  // reused every frame
     std::optional<GpuMesh> mesh_;

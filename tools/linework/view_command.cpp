@@ -194,7 +194,7 @@ int run_view(const ViewOptions& o) {
         glfwGetCursorPos(window.get(), &last_mouse.x, &last_mouse.y);
         std::vector<double> frame_times;
         struct {
-            double render = 0, present = 0, chain = 0, visibility = 0, coherence = 0;
+            double render = 0, present = 0, extract = 0, chain = 0, visibility = 0, coherence = 0;
             std::vector<PassTime> gpu;
         } sums;  // over the timed frames
         const int warmup = o.benchmark > 0 ? 10 : 0;
@@ -337,6 +337,7 @@ int run_view(const ViewOptions& o) {
                 frame_times.push_back(s.frame_ms);
                 sums.render += s.render_ms;
                 sums.present += s.present_ms;
+                sums.extract += frame.timings.extract_ms;
                 sums.chain += frame.timings.chain_ms;
                 sums.visibility += frame.timings.visibility_ms;
                 sums.coherence += frame.timings.coherence_ms;
@@ -356,8 +357,10 @@ int run_view(const ViewOptions& o) {
                         frame_times.size(), swapchain.extent().width, swapchain.extent().height, mean, med,
                         med > 0.0 ? 1000.0 / med : 0.0);
             const double n = double(frame_times.size());
-            std::printf("mean per frame: render %.2f ms (chain %.2f, visibility %.2f, coherence %.2f), present %.2f ms\n",
-                        sums.render / n, sums.chain / n, sums.visibility / n, sums.coherence / n, sums.present / n);
+            std::printf("mean per frame: render %.2f ms (host extraction %.2f, chain %.2f, visibility %.2f, coherence %.2f), "
+                        "present %.2f ms\n",
+                        sums.render / n, sums.extract / n, sums.chain / n, sums.visibility / n, sums.coherence / n,
+                        sums.present / n);
             for (const PassTime& t : sums.gpu)
                 if (t.ms >= 0.0) std::printf("  GPU %s: %.3f ms\n", t.name.c_str(), t.ms / n);
         }
