@@ -180,6 +180,13 @@ DeviceChoice parse_device_choice(const std::string& text) {
     throw usage_error("--device: expected auto, cpu, gpu or a device index, got \"" + text + "\"");
 }
 
+std::optional<ComputeSite> parse_compute_site(const std::string& text, const std::string& option) {
+    if (text == "auto") return std::nullopt;
+    if (text == "device") return ComputeSite::Device;
+    if (text == "host") return ComputeSite::Host;
+    throw usage_error(option + ": expected auto, device or host, got \"" + text + "\"");
+}
+
 std::string DeviceInfo::type_name() const {
     switch (type) {
         case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return "discrete gpu";
@@ -210,7 +217,7 @@ std::vector<DeviceInfo> list_devices() {
     return infos;
 }
 
-Context::Context(const ContextDesc& desc) {
+Context::Context(const ContextDesc& desc) : compute_site_(desc.compute_site) {
     if (desc.validation && !has_instance_layer(kValidationLayer))
         throw Error("validation requested but VK_LAYER_KHRONOS_validation is not installed "
                     "(apt-get install vulkan-validationlayers)");

@@ -22,6 +22,7 @@
 
 #include <functional>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,13 @@ struct DeviceChoice {
 // Parses "auto", "cpu", "gpu" or a device index; throws a usage error otherwise.
 [[nodiscard]] DeviceChoice parse_device_choice(const std::string& text);
 
+// Where a compute-shaped stage runs. On a CPU device (lavapipe) the "GPU" is the host's own
+// cores, and Vulkan's submissions, barriers and float blending there cost more than the
+// reference loops the tests compare the GPU code with (RANSAC 3.9 against 0.23 ms, the splat
+// 5.5 against under 1 ms, line extraction 5.3 against 2.3 ms per frame at 70k triangles):
+// on such a device the host runs those. The GPU paths stay tested against them everywhere.
+enum class ComputeSite { Device, Host };
+
 struct ContextDesc {
     DeviceChoice device{};
     bool validation = false;  // enable VK_LAYER_KHRONOS_validation and record its messages
@@ -47,7 +55,13 @@ struct ContextDesc {
     // and the VK_KHR_swapchain device extension. Empty / false: headless.
     std::vector<std::string> instance_extensions;
     bool swapchain = false;
+    std::optional<ComputeSite> compute_site;  // nullopt: Host on CPU devices, else Device
 };
+// "auto" (nullopt), "device" or "host" (a usage error otherwise, naming `option`).
+inline constexpr const char* kComputeSiteHelp =
+    "Where line extraction, the parameterization splat and RANSAC run: auto (the host on CPU devices "
+    "such as lavapipe, where that is faster; the device on GPUs), device, or host";
+[[nodiscard]] std::optional<ComputeSite> parse_compute_site(const std::string& text, const std::string& option);
 
 struct DeviceInfo {
     int index = 0;
@@ -60,13 +74,6 @@ struct DeviceInfo {
     std::string type_name() const;
     std::string describe() const;   // "llvmpipe (LLVM 15.0.6, 256 bits) [cpu, Vulkan 1.3.230]"
 };
-
-// Where a compute-shaped stage runs. On a CPU device (lavapipe) the "GPU" is the host's own
-// cores, and Vulkan's submissions, barriers and float blending there cost more than the
-// reference loops the tests compare the GPU code with (RANSAC 3.9 against 0.23 ms, the splat
-// 5.5 against under 1 ms, line extraction 5.3 against 2.3 ms per frame at 70k triangles):
-// on such a device the host runs those. The GPU paths stay tested against them everywhere.
-enum class ComputeSite { Device, Host };
 
 // Lists the physical devices the loader sees (creates and drops a bare instance).
 [[nodiscard]] std::vector<DeviceInfo> list_devices();
@@ -84,8 +91,9 @@ public:
     VkQueue queue() const { return queue_; }
     uint32_t queue_family() const { return queue_family_; }
     const DeviceInfo& info() const { return info_; }
-    // Host on CPU devices, else Device (see ComputeSite).
+    // ContextDesc::compute_site, else Host on CPU devices and Device on others.
     ComputeSite preferred_compute_site() const {
+        if (compute_site_) return *compute_site_;
         return info_.type == VK_PHYSICAL_DEVICE_TYPE_CPU ? ComputeSite::Host : ComputeSite::Device;
     }
     const VkPhysicalDeviceProperties& properties() const { return properties_; }
@@ -146,6 +154,7 @@ private:
     bool has_push_descriptors_ = false;
     bool has_debug_utils_ = false;
     DeviceInfo info_;
+    std::optional<ComputeSite> compute_site_;
     VkPhysicalDeviceProperties properties_{};
     VkPhysicalDeviceMemoryProperties memory_properties_{};
     Handle<VkCommandPool> command_pool_;

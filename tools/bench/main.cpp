@@ -46,6 +46,7 @@ struct BenchOptions {
     std::string size = "1920x1080";
     int frames = 20;
     std::string device = "auto";
+    std::string compute = "auto";  // lines: where extraction, splat and RANSAC run
     bool shaded = false;     // lines: toon shading under the lines (default: depth only)
     bool coherence = false;  // lines: parameterize every visible path (splat, votes, RANSAC)
     bool strokes = false;    // lines: draw silhouettes and suggestive contours as SLAM strokes (implies coherence)
@@ -60,6 +61,7 @@ struct Series {
         return n == 0 ? 0.0 : (n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]));
     }
     void print(const char* name) const {
+        if (values.empty()) return;  // a stage this device and compute site do not run
         std::printf("  %-22s median %9.3f ms  (min %.3f, max %.3f)\n", name, median(),
                     *std::min_element(values.begin(), values.end()), *std::max_element(values.begin(), values.end()));
     }
@@ -119,7 +121,8 @@ int run_surface(const BenchOptions& b) {
 }
 
 int run_lines(const BenchOptions& b) {
-    lw::Context ctx({.device = lw::parse_device_choice(b.device)});
+    lw::Context ctx({.device = lw::parse_device_choice(b.device),
+                     .compute_site = lw::parse_compute_site(b.compute, "--compute")});
     BenchScene s = prepare(b, ctx);
     lw::FrameRenderer renderer(ctx, uint32_t(s.width), uint32_t(s.height));
     lw::LinesDesc lines;
@@ -150,7 +153,7 @@ int run_lines(const BenchOptions& b) {
 
     Series coherence_ms;
     size_t coherent_samples = 0;
-    Series frame_ms, extract_gpu, extract_wall, surface_gpu, draw_gpu, chain, visibility, extract_cpu;
+    Series frame_ms, extract_gpu, extract_host, extract_wall, surface_gpu, draw_gpu, chain, visibility, extract_cpu;
     size_t segments = 0, paths = 0;
     for (int frame = -2; frame < b.frames; ++frame) {
         const lw::Frame f = renderer.render(s.camera, s.scene.camera.eye, surface, lines, {.color = false},
@@ -170,6 +173,7 @@ int run_lines(const BenchOptions& b) {
         if (frame < 0) continue;
         extract_wall.values.push_back(gpu_wall_ms);
         frame_ms.values.push_back(f.timings.total_ms);
+        if (ctx.preferred_compute_site() == lw::ComputeSite::Host) extract_host.values.push_back(f.timings.extract_ms);
         chain.values.push_back(f.timings.chain_ms);
         visibility.values.push_back(f.timings.visibility_ms);
         extract_cpu.values.push_back(cpu_ms);
@@ -188,6 +192,7 @@ int run_lines(const BenchOptions& b) {
     frame_ms.print("line frame (wall)");
     surface_gpu.print(b.shaded ? "GPU surface + depth" : "GPU depth pass");
     extract_gpu.print("GPU extraction");
+    extract_host.print("host extraction");
     extract_wall.print("  same, wall (submit+wait+readback)");
     chain.print("CPU chaining");
     visibility.print("CPU visibility");
@@ -195,7 +200,8 @@ int run_lines(const BenchOptions& b) {
     extract_cpu.print("CPU reference extract");
     if (coherent) {
         std::printf("  coherent parameterization of %zu visible samples:\n", coherent_samples);
-        coherence_ms.print("votes+RANSAC+splat");
+        coherence_ms.print(ctx.preferred_compute_site() == lw::ComputeSite::Host ? "votes+RANSAC+splat (host)"
+                                                                                : "votes+RANSAC+splat (device)");
     }
     return 0;
 }
@@ -208,6 +214,7 @@ void add_options(CLI::App* cmd, BenchOptions& o) {
     cmd->add_option("--size", o.size, "Image size WxH")->capture_default_str();
     cmd->add_option("--frames", o.frames, "Timed frames")->check(CLI::Range(1, 100000))->capture_default_str();
     cmd->add_option("--device", o.device, "auto, cpu, gpu or an index")->capture_default_str();
+    cmd->add_option("--compute", o.compute, lw::kComputeSiteHelp)->capture_default_str();
 }
 
 }  // namespace

@@ -34,6 +34,7 @@ struct RenderOptions {
     std::string input;
     std::string output;
     std::string device = "auto";
+    std::string compute = "auto";
     std::string size, eye, target, up;
     std::optional<float> fov;
     std::string shading;
@@ -224,7 +225,8 @@ int run_render(const RenderOptions& o) {
     }
 
     const bool validation = o.validation || validation_from_environment();
-    Context ctx({.device = parse_device_choice(o.device), .validation = validation});
+    Context ctx({.device = parse_device_choice(o.device), .validation = validation,
+                 .compute_site = parse_compute_site(o.compute, "--compute")});
     std::printf("device: %s\n", ctx.info().describe().c_str());
     std::printf("size: %dx%d\n", desc.width, desc.height);
 
@@ -380,6 +382,7 @@ Runner add_render_command(CLI::App& app) {
                     "auto (discrete GPU if present, else lavapipe), cpu, gpu, or an index from `linework devices`")
         ->capture_default_str();
     cmd->add_option("--size", o->size, "Image size WxH (default: the scene's, else 960x720)");
+    cmd->add_option("--compute", o->compute, kComputeSiteHelp)->capture_default_str();
     cmd->add_option("--eye", o->eye, "Camera position x,y,z");
     cmd->add_option("--target", o->target, "Point looked at x,y,z");
     cmd->add_option("--up", o->up, "Up vector x,y,z (default 0,1,0)");

@@ -40,6 +40,7 @@ namespace {
 struct ViewOptions {
     std::string input;
     std::string device = "auto";
+    std::string compute = "auto";
     std::string size;
     std::string slam;
     std::string param;
@@ -148,7 +149,8 @@ int run_view(const ViewOptions& o) {
     Context ctx({.device = parse_device_choice(o.device),
                  .validation = validation,
                  .instance_extensions = window.required_instance_extensions(),
-                 .swapchain = true});
+                 .swapchain = true,
+                 .compute_site = parse_compute_site(o.compute, "--compute")});
     s.device = ctx.info().describe();
     std::printf("device: %s\n", s.device.c_str());
     // Everything that records or owns GPU work lives in this scope, so that the validation
@@ -379,6 +381,7 @@ Runner add_view_command(CLI::App& app) {
         "keys and a panel switch line types, thresholds, styles and the animation (README \"linework view\").");
     cmd->add_option("input", o->input, "Scene file (.json) or model (.gltf/.glb)")->required();
     cmd->add_option("--device", o->device, "auto, cpu, gpu, or an index from `linework devices`")->capture_default_str();
+    cmd->add_option("--compute", o->compute, kComputeSiteHelp)->capture_default_str();
     cmd->add_option("--size", o->size, "Window size WxH (default: the scene's, else 960x720)");
     cmd->add_option("--slam", o->slam, "Draw silhouettes and suggestive contours as strokes textured by this SLAM (.exr)");
     cmd->add_option("--stroke-width", o->stroke_width, "Width of SLAM strokes in pixels (default 6)")
