@@ -152,6 +152,7 @@ int run_view(const ViewOptions& o) {
                  .swapchain = true,
                  .compute_site = parse_compute_site(o.compute, "--compute")});
     s.device = ctx.info().describe();
+    s.host_compute = ctx.preferred_compute_site() == ComputeSite::Host;
     std::printf("device: %s\n", s.device.c_str());
     // Everything that records or owns GPU work lives in this scope, so that the validation
     // layer has spoken about its destruction before the exit status is decided.
@@ -305,6 +306,10 @@ int run_view(const ViewOptions& o) {
                                                 layers.descs.empty() ? nullptr : &layer_frames);
             s.render_ms = render_timer.elapsed_ms();
             s.gpu = frame.timings.gpu;
+            s.extract_ms = frame.timings.extract_ms;
+            s.chain_ms = frame.timings.chain_ms;
+            s.visibility_ms = frame.timings.visibility_ms;
+            s.coherence_ms = frame.timings.coherence_ms;
             s.paths = frame.screen_paths.size();
 
             ui.begin_frame();

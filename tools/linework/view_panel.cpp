@@ -156,6 +156,13 @@ void draw_panel(ViewerState& s) {
                 ImGui::Text("%-14s (no timestamps)", t.name.c_str());
         ImGui::TreePop();
     }
+    if (ImGui::TreeNodeEx("Host time per stage", ImGuiTreeNodeFlags_DefaultOpen)) {
+        if (s.host_compute) ImGui::Text("%-14s %7.3f ms", "extraction", s.extract_ms);
+        ImGui::Text("%-14s %7.3f ms", "chaining", s.chain_ms);
+        ImGui::Text("%-14s %7.3f ms", "visibility", s.visibility_ms);
+        ImGui::Text("%-14s %7.3f ms", "coherence", s.coherence_ms);
+        ImGui::TreePop();
+    }
     ImGui::Text("%zu triangles, %zu paths", s.triangles, s.paths);
 
     LinesDesc& lines = s.desc.lines;
@@ -169,7 +176,7 @@ void draw_panel(ViewerState& s) {
         ImGui::SliderFloat("suggestive thr.", &lines.params.sug_thresh, 0.0f, 0.2f, "%.3f");
         ImGui::SliderFloat("crease angle", &lines.params.crease_angle_deg, 1.0f, 179.0f, "%.0f°");
         if (ImGui::IsItemDeactivatedAfterEdit()) s.crease_changed = true;
-        ImGui::SliderFloat("δ (sample px)", &lines.sample_spacing_px, 0.5f, 16.0f, "%.1f");
+        ImGui::SliderFloat("sample spacing px", &lines.sample_spacing_px, 0.5f, 16.0f, "%.1f");
         int hidden = int(lines.hidden);
         if (ImGui::Combo("hidden (h)", &hidden, "none\0dashed\0faint\0")) lines.hidden = HiddenLines(hidden);
     }

@@ -61,6 +61,8 @@ struct ViewerState {
     // Statistics for the panel.
     double frame_ms = 0.0, render_ms = 0.0, present_ms = 0.0;
     std::vector<PassTime> gpu;
+    double extract_ms = 0.0, chain_ms = 0.0, visibility_ms = 0.0, coherence_ms = 0.0;  // host stages
+    bool host_compute = false;  // extraction, splat and RANSAC on the host (ComputeSite)
     size_t triangles = 0, paths = 0;
     std::string device;
     std::deque<float> history;            // recent frame times, ms
