@@ -50,26 +50,32 @@ Plane fourier_resample_length(const Plane& in, int cols) {
     const int n = in.cols;
     if (cols == n) return in;
     // Each row as the periodic band-limited function its samples define: its spectrum
-    // truncated (shorter) or zero-padded (longer); the shorter grid's Nyquist term is halved
-    // between ±shared (longer) or keeps its real part (shorter), so that the result stays real.
+    // truncated (shorter) or zero-padded (longer). At the shorter grid's Nyquist frequency
+    // (even lengths) the longer grid has a ±shared pair and the shorter one bin, which the
+    // inverse counts once: growing, the bin's value is split over the pair (½ each);
+    // shrinking, the pair folds into it (2·Re), as scipy.signal.resample does.
     const int shared = std::min(n, cols) / 2;
-    Floats row(size_t(std::max(n, cols)));
+    Floats source(static_cast<size_t>(n)), row(static_cast<size_t>(cols));  // fftwf_malloc ones only (fft.h)
     Complexes from(size_t(n / 2 + 1)), to(size_t(cols / 2 + 1));
     Plane out(in.rows, cols);
     for (int r = 0; r < in.rows; ++r) {
-        fft_forward_real(1, n, &in.v[size_t(r) * size_t(n)], from.data());
+        std::copy_n(in.v.begin() + std::ptrdiff_t(size_t(r) * size_t(n)), n, source.begin());
+        fft_forward_real(1, n, source.data(), from.data());
         std::fill(to.begin(), to.end(), cfloat(0.0f));
         for (int k = 0; k < shared; ++k) to[size_t(k)] = from[size_t(k)];
-        if (std::min(n, cols) % 2 == 0) {
-            // Even shorter length: its Nyquist bin holds the longer grid's ±shared pair.
-            const cfloat nyquist = from[size_t(shared)];
-            to[size_t(shared)] = n < cols ? 0.5f * nyquist : cfloat(nyquist.real(), 0.0f);
-        } else {
-            to[size_t(shared)] = from[size_t(shared)];
-        }
+        const cfloat last = from[size_t(shared)];
+        if (std::min(n, cols) % 2 != 0) to[size_t(shared)] = last;  // no Nyquist bin: a full pair
+        else to[size_t(shared)] = n < cols ? 0.5f * last : cfloat(2.0f * last.real(), 0.0f);
         fft_inverse_real(1, cols, to.data(), row.data());
         for (int x = 0; x < cols; ++x) out.at(r, x) = row[size_t(x)] / float(n);
     }
+    return out;
+}
+
+Plane tile_twice(const Plane& in) {
+    Plane out(in.rows, 2 * in.cols);
+    for (int r = 0; r < in.rows; ++r)
+        for (int x = 0; x < out.cols; ++x) out.at(r, x) = in.at(r, x % in.cols);
     return out;
 }
 
@@ -79,11 +85,8 @@ Plane half_seed(int rows, int length, uint32_t seed) {
 
 Plane seed_level(const Plane& half, double level, int cols) {
     const float alpha = float(2.0 * level - 1.0);
-    // W_1.0 = [W_0.5 W_0.5] scaled to `cols`: W_0.5 sampled at twice the rate, wrapping.
-    Plane whole(half.rows, 2 * half.cols);
-    for (int r = 0; r < half.rows; ++r)
-        for (int x = 0; x < whole.cols; ++x) whole.at(r, x) = half.at(r, x % half.cols);
-    const Plane a = fourier_resample_length(half, cols), b = fourier_resample_length(whole, cols);
+    // W_1.0 = [W_0.5 W_0.5], scaled to `cols`.
+    const Plane a = fourier_resample_length(half, cols), b = fourier_resample_length(tile_twice(half), cols);
     Plane out(half.rows, cols);
     for (size_t i = 0; i < out.size(); ++i) {
         if (alpha == 0.0f) out.v[i] = a.v[i];

@@ -5,10 +5,12 @@
 // the seeds from aliasing when they are scaled), then histogram-matched back to uniform on
 // (0, 1) (rank r of n ↦ (r + ½)/n). W_0.5: W_f scaled to half its length; W_1.0 = [W_0.5 W_0.5];
 // W_l = α·W_1.0 + (1 − α)·W_0.5 with α = 2l − 1, both scaled to the level's length. Scaling is
-// band-limited (FFT) resampling, so one seed at two lengths is one periodic function sampled
-// at two rates (linear interpolation would blur it by an amount that depends on where the
-// samples fall, a difference between adjacent levels that does not shrink with their spacing). Self-similarity and smooth variation hold by construction,
-// and each A_l is synthesized from W_l (slam_builder.h). Deterministic for a given seed.
+// band-limited (FFT) resampling, so one seed at two lengths is one periodic function (below
+// the shorter length's Nyquist frequency) sampled at two rates; linear interpolation would
+// blur it by an amount that depends on where the samples fall, a difference between
+// adjacent levels that does not shrink with their spacing. Self-similarity and smooth
+// variation hold by construction; slam_builder.h synthesizes each A_l from W_l (A_1.0 as
+// A_0.5 twice, what that synthesis gives). Deterministic for a given seed.
 #pragma once
 
 #include <cstdint>
@@ -24,9 +26,12 @@ namespace lw::synth {
 // x·in.cols/cols (so equal lengths copy exactly, and halving keeps the even texels).
 [[nodiscard]] Plane resample_length(const Plane& in, int cols);
 
-// Periodic band-limited resampling along the rows (FFT: spectrum truncated or zero-padded).
-// Equal lengths copy exactly.
+// Periodic band-limited resampling along the rows (FFT: spectrum truncated or zero-padded,
+// the Nyquist term as scipy.signal.resample treats it). Equal lengths copy exactly.
 [[nodiscard]] Plane fourier_resample_length(const Plane& in, int cols);
+
+// [in in]: the rows repeated once along the length.
+[[nodiscard]] Plane tile_twice(const Plane& in);
 
 // W_0.5: W_f (rows × length) scaled to length/2.
 [[nodiscard]] Plane half_seed(int rows, int length, uint32_t seed);

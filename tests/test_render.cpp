@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "coherence/coherence.h"
 #include "core/image.h"
 #include "io/image_io.h"
 #include "render/coverage_reference.h"
@@ -115,6 +116,33 @@ TEST_F(RenderTest, ShadingModesDiffer) {
     for (size_t i = 0; i < toon.pixels.size(); i += 4) toon_reds.insert(toon.pixels[i]);
     EXPECT_LE(toon_reds.size(), 4u);
     EXPECT_GE(toon_reds.size(), 3u);
+}
+
+// On CPU devices the frame extracts lines on the host (ComputeSite); the device path — the
+// extraction in the surface pass's submission, its readback — must give the same frame.
+TEST_F(RenderTest, DeviceAndHostExtractionGiveTheSameFrame) {
+    Context device_ctx({.device = {DeviceChoice::Kind::Cpu}, .validation = true, .compute_site = ComputeSite::Device});
+    ASSERT_EQ(ctx().preferred_compute_site(), ComputeSite::Host);  // lavapipe
+    SceneDesc desc = scene_for_model(test::data_dir() / "models/spot/spot.glb");
+    const LoadedScene scene = load_scene(desc);
+    const CameraMatrices camera = camera_matrices(scene.camera, 4.0f / 3.0f, scene.bounds);
+    const CoherenceParams coherence;
+    std::vector<Frame> frames;
+    for (Context* c : {&ctx(), &device_ctx}) {
+        FrameRenderer renderer(*c, 320, 240);
+        renderer.set_mesh(scene.mesh, true, desc.lines.params.crease_angle_deg);
+        (void)renderer.render(camera, scene.camera.eye, desc.style, desc.lines, {}, &coherence);
+        frames.push_back(renderer.render(camera, scene.camera.eye, desc.style, desc.lines, {}, &coherence));
+    }
+    EXPECT_GT(frames[0].timings.extract_ms, 0.0);
+    EXPECT_EQ(frames[1].timings.extract_ms, 0.0);
+    ASSERT_GT(frames[0].segments.size(), 100u);
+    EXPECT_EQ(frames[0].segments.size(), frames[1].segments.size());
+    EXPECT_EQ(frames[0].paths.size(), frames[1].paths.size());
+    const ImageDiff diff = compare_images(frames[0].image.color, frames[1].image.color);
+    EXPECT_GE(diff.psnr_db, 40.0) << "max error " << diff.max_abs_error;
+    const auto messages = device_ctx.validation_messages();
+    EXPECT_TRUE(messages.empty()) << messages.front();
 }
 
 // Golden images: regenerate with

@@ -213,6 +213,16 @@ TEST_F(SlamSynthSlam, FourierResamplingKeepsBandLimitedRows) {
             for (int x = 0; x < cols; ++x) EXPECT_NEAR(out.at(r, x), wave(cols, r, x), 2e-6) << cols << " " << x;
     }
     EXPECT_EQ(fourier_resample_length(in, 96).v, in.v);  // equal lengths copy exactly
+
+    // A component at the shorter grid's Nyquist frequency: [1, 0, −1, 0] is cos(πx/2), which
+    // two samples per period hold as [1, −1]; growing back gives the original.
+    Plane quarter(1, 4);
+    quarter.v = {1.0f, 0.0f, -1.0f, 0.0f};
+    const Plane two = fourier_resample_length(quarter, 2);
+    EXPECT_NEAR(two.v[0], 1.0f, 1e-6f);
+    EXPECT_NEAR(two.v[1], -1.0f, 1e-6f);
+    const Plane back = fourier_resample_length(two, 4);
+    for (int x = 0; x < 4; ++x) EXPECT_NEAR(back.v[size_t(x)], quarter.v[size_t(x)], 1e-6f) << x;
 }
 
 SlamSynthesis small_slam(int levels, int threads = 2) {

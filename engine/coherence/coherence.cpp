@@ -169,8 +169,8 @@ void splat_into(std::span<const glm::vec3> sprites, float radius, int width, int
                 const float w = std::clamp(1.0f - d / radius, 0.0f, 1.0f);
                 if (w <= 0.0f) continue;
                 const size_t i = size_t(y) * size_t(width) + size_t(x);
+                if (touched && buffer[i].y == 0.0f) touched->push_back(uint32_t(i));  // first write only
                 buffer[i] += glm::vec4(w * t, w, w * (c - pixel));
-                if (touched) touched->push_back(uint32_t(i));
             }
     }
 }
@@ -196,36 +196,34 @@ std::vector<glm::vec4> splat_reference(const std::vector<ScreenPath>& paths, con
 }
 
 CoherenceTracker::CoherenceTracker(const Context& ctx, uint32_t width, uint32_t height, ComputeSite site)
-    : ctx_(&ctx),
-      site_(site),
-      width_(width),
-      height_(height),
-      splat_image_(ctx, {.width = width, .height = height, .format = VK_FORMAT_R32G32B32A32_SFLOAT,
-                         .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
-                         .name = "parameterization splat"}),
-      splat_pipeline_(ctx, {.vertex_spirv = LW_SPIRV(coherence_splat_vert_spv),
-                            .fragment_spirv = LW_SPIRV(coherence_splat_frag_spv),
-                            .vertex_stride = sizeof(Sprite),
-                            .attributes = {{.location = 0, .format = VK_FORMAT_R32G32_SFLOAT, .offset = 0},
-                                           {.location = 1, .format = VK_FORMAT_R32_SFLOAT,
-                                            .offset = offsetof(Sprite, t)}},
-                            .color_format = VK_FORMAT_R32G32B32A32_SFLOAT,
-                            .depth_format = VK_FORMAT_UNDEFINED,
-                            .depth_test = false,
-                            .depth_write = false,
-                            .blend = BlendMode::Additive,
-                            .push_constant_size = sizeof(SplatPush),
-                            .name = "coherence splat",
-                            .per_instance = true}),
-      splat_readback_(ctx, {.size = VkDeviceSize(width) * height * sizeof(glm::vec4),
-                            .usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                            .purpose = MemoryPurpose::Readback,
-                            .name = "splat readback"}),
-      fitter_(ctx, site) {
+    : ctx_(&ctx), site_(site), width_(width), height_(height), fitter_(ctx, site) {
+    if (site == ComputeSite::Host) return;  // the splat is a host loop (splat_sprites)
     VkFormatProperties props{};
     vkGetPhysicalDeviceFormatProperties(ctx.physical_device(), VK_FORMAT_R32G32B32A32_SFLOAT, &props);
     if (!(props.optimalTilingFeatures & VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BLEND_BIT))
-        throw Error(ctx.info().name + " cannot blend into RGBA32F attachments, which the parameterization splat needs");
+        throw Error(ctx.info().name + " cannot blend into RGBA32F attachments, which the parameterization splat needs "
+                                      "(--compute host splats on the host)");
+    splat_image_ = Image(ctx, {.width = width, .height = height, .format = VK_FORMAT_R32G32B32A32_SFLOAT,
+                               .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                               .name = "parameterization splat"});
+    splat_pipeline_ = GraphicsPipeline(ctx, {.vertex_spirv = LW_SPIRV(coherence_splat_vert_spv),
+                                             .fragment_spirv = LW_SPIRV(coherence_splat_frag_spv),
+                                             .vertex_stride = sizeof(Sprite),
+                                             .attributes = {{.location = 0, .format = VK_FORMAT_R32G32_SFLOAT, .offset = 0},
+                                                            {.location = 1, .format = VK_FORMAT_R32_SFLOAT,
+                                                             .offset = offsetof(Sprite, t)}},
+                                             .color_format = VK_FORMAT_R32G32B32A32_SFLOAT,
+                                             .depth_format = VK_FORMAT_UNDEFINED,
+                                             .depth_test = false,
+                                             .depth_write = false,
+                                             .blend = BlendMode::Additive,
+                                             .push_constant_size = sizeof(SplatPush),
+                                             .name = "coherence splat",
+                                             .per_instance = true});
+    splat_readback_ = Buffer(ctx, {.size = VkDeviceSize(width) * height * sizeof(glm::vec4),
+                                   .usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                   .purpose = MemoryPurpose::Readback,
+                                   .name = "splat readback"});
 }
 
 VoteSet CoherenceTracker::gather_votes(const std::vector<ScreenPath>& paths, const SurfaceFrame& surface) const {
@@ -289,7 +287,13 @@ void CoherenceTracker::restore(const State& state, const SurfaceFrame& surface) 
     if (state.has_previous) splat_sprites(state.sprites, state.radius, nullptr);
 }
 
-void CoherenceTracker::splat_sprites(const std::vector<glm::vec3>& sprite_list, float radius, GpuTimer* timer) {
+void CoherenceTracker::splat_sprites(const std::vector<glm::vec3>& sprites_in, float radius, GpuTimer* timer) {
+    // A sample projected from a degenerate camera or face can be NaN or infinite: it reaches
+    // no pixel (the GPU would clip it), and must not reach the integer arithmetic below.
+    std::vector<glm::vec3> sprite_list;
+    sprite_list.reserve(sprites_in.size());
+    for (const glm::vec3& s : sprites_in)
+        if (std::isfinite(s.x) && std::isfinite(s.y) && std::isfinite(s.z)) sprite_list.push_back(s);
     last_sprites_ = sprite_list;
     last_radius_ = radius;
     if (site_ == ComputeSite::Host) {

@@ -5,10 +5,12 @@
 //   1. votes: every sample of the new paths is carried to frame f − 1 (its surface point
 //      moved with the mesh, projected with frame f − 1's camera) and reads the splat buffer
 //      (Σ w·t, Σ w) there; where Σ w > 0 it votes (Σwt/Σw, s) — §4.2;
-//   2. fit: RANSAC per path on the GPU (ransac_gpu.h); fewer than two votes: T(s) = s/L;
+//   2. fit: RANSAC per path (ransac_gpu.h); fewer than two votes: T(s) = s/L;
 //   3. splat: every sample writes t = T(s) as a sprite of radius δ,
-//      w = clamp(1 − d/δ, 0, 1), additive, into an RGBA32F buffer read back for frame f + 1 — §4.1
+//      w = clamp(1 − d/δ, 0, 1), additive, into a float buffer kept for frame f + 1 — §4.1
 //      (the extra channels, Σ w·(c − pixel), place each vote where its average was taken).
+// Steps 2 and 3 run on the device (a compute dispatch; an RGBA32F render target read back)
+// or, on CPU devices, on the host (fit_paths_reference, splat_reference's loop): ComputeSite.
 // The two comparison policies of the issue: arclength (tiling, T = s·κ / Lmax) and stretch
 // (T = s/L, one texture stretched over the path, no level folding).
 #pragma once
@@ -96,7 +98,9 @@ public:
     // splats them for the next frame. Visible paths shorter than min_stroke_length_px are
     // removed, closed loops may be rotated to start at the seam they
     // inherited, and paths that merged pieces of different earlier paths split (see
-    // coherence.cpp), so `paths` may change; the result has one entry per path after. `votes_out` (optional) receives the votes used.
+    // coherence.cpp), so `paths` may change; the result has one entry per path after.
+    // `votes_out` (optional) receives the votes used. `timer` (optional) gets "ransac" and
+    // "splat" on the device site; on the host site, and for an empty splat, it is not used.
     [[nodiscard]] std::vector<PathParam> update(std::vector<ScreenPath>& paths, const CameraMatrices& camera,
                                                 const SurfaceFrame& surface, const CoherenceParams& params,
                                                 GpuTimer* timer = nullptr, VoteSet* votes_out = nullptr);
@@ -115,7 +119,8 @@ public:
         std::vector<glm::vec3> sprites;  // x, y in pixels; T
     };
     [[nodiscard]] State state() const { return {has_previous_, previous_camera_, last_radius_, last_sprites_}; }
-    // Splats the state's sprites again (the same buffer, bit for bit, on the same device).
+    // Splats the state's sprites again (the same buffer, bit for bit, on the same device and
+    // compute site).
     void restore(const State& state, const SurfaceFrame& surface);
 
     // The last splat, whole frame (rows it did not reach are zero); for tests.
@@ -124,7 +129,7 @@ public:
 private:
     // Where a long run of a path's votes disagrees with its fit, the path merged pieces that
     // were separate paths a frame earlier (the popping §4.2 notes): split it there, keep the
-    // fit on the agreeing pieces and fit the others on their own (GPU RANSAC again).
+    // fit on the agreeing pieces and fit the others on their own (RANSAC again).
     void split_merged_paths(std::vector<ScreenPath>& paths, VoteSet& votes, std::vector<PathFit>& fits,
                             const RansacParams& ransac) const;
     [[nodiscard]] VoteSet gather_votes(const std::vector<ScreenPath>& paths, const SurfaceFrame& surface) const;

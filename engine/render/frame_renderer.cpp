@@ -28,7 +28,7 @@ void FrameRenderer::set_mesh(const TriangleMesh& mesh, bool with_lines, float cr
     line_mesh_.reset();
     if (with_lines) {
         line_mesh_ = build_line_mesh(mesh, crease_angle_deg);
-        extractor_.set_mesh(*line_mesh_);
+        if (!extraction_on_host_) extractor_.set_mesh(*line_mesh_);
     }
 }
 
@@ -37,7 +37,7 @@ void FrameRenderer::deform(const TriangleMesh& posed) {
     if (!line_mesh_) return;
     update_positions(line_mesh_->mesh, posed);
     line_mesh_->curvature = compute_curvature(line_mesh_->mesh);
-    extractor_.set_mesh(*line_mesh_);
+    if (!extraction_on_host_) extractor_.set_mesh(*line_mesh_);
 }
 
 void FrameRenderer::set_slam(LineType type, const Slam& slam) {

@@ -184,7 +184,8 @@ int run_lines(const BenchOptions& b) {
         }
         segments = f.segments.size();
         paths = f.paths.size();
-        if (reference.size() != segments) throw lw::Error("GPU and CPU extraction disagree on the segment count");
+        if (reference.size() != gpu_segments.size())
+            throw lw::Error("GPU and CPU extraction disagree on the segment count");
     }
     std::printf("line frame %dx%d (%s%s), %d frames, %zu segments, %zu paths:\n", s.width, s.height,
                 b.shaded ? "over toon shading" : "over the background: depth-only pass",
@@ -193,7 +194,7 @@ int run_lines(const BenchOptions& b) {
     surface_gpu.print(b.shaded ? "GPU surface + depth" : "GPU depth pass");
     extract_gpu.print("GPU extraction");
     extract_host.print("host extraction");
-    extract_wall.print("  same, wall (submit+wait+readback)");
+    extract_wall.print("GPU extraction alone, wall (submit+wait+readback)");
     chain.print("CPU chaining");
     visibility.print("CPU visibility");
     draw_gpu.print("GPU line drawing");

@@ -73,8 +73,9 @@ int run_slam(const SlamOptions& o) {
     std::printf("analysis %.0f ms, synthesis %.0f ms\n", s.analysis_ms, s.synthesis_ms);
 
     const synth::SlamConditions c = synth::measure_slam_conditions(s);
-    std::printf("top level periodic: left half vs right half differ by at most %.3g\n", c.top_periodicity);
-    std::printf("self-similarity error (A_1.0 vs [A_0.5 A_0.5]): %.3g\n", c.self_similarity);
+    std::printf("top level periodic: left half vs right half differ by at most %.3g (A_1.0 is A_0.5 twice)\n",
+                c.top_periodicity);
+    std::printf("self-similarity error (A_1.0 vs [A_0.5 A_0.5], as stored): %.3g\n", c.self_similarity);
     std::printf("mean |A_l - A_l+| between adjacent levels: %.4f\n", c.mean_level_step);
     std::printf("tiling: wrap-around column step %.4f; interior mean %.4f, largest %.4f (the wrap ranks above %.0f %% of them)\n",
                 c.wrap_difference, c.interior_difference, c.interior_max, 100.0 * c.wrap_rank);
