@@ -145,6 +145,22 @@ TEST_F(RenderTest, DeviceAndHostExtractionGiveTheSameFrame) {
     EXPECT_TRUE(messages.empty()) << messages.front();
 }
 
+// The viewer renders into its swapchain's format (B8G8R8A8) to copy rather than blit; the
+// frame must be the same, and the colour read back RGBA all the same.
+TEST_F(RenderTest, BgraTargetGivesTheSameFrame) {
+    SceneDesc desc = scene_for_model(test::data_dir() / "models/spot/spot.glb");
+    const LoadedScene scene = load_scene(desc);
+    const CameraMatrices camera = camera_matrices(scene.camera, 4.0f / 3.0f, scene.bounds);
+    std::vector<ImageRGBA8> images;
+    for (VkFormat format : {VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_B8G8R8A8_UNORM}) {
+        FrameRenderer renderer(ctx(), 320, 240, format);
+        renderer.set_mesh(scene.mesh, true, desc.lines.params.crease_angle_deg);
+        images.push_back(renderer.render(camera, scene.camera.eye, desc.style, desc.lines).image.color);
+    }
+    const ImageDiff diff = compare_images(images[0], images[1]);
+    EXPECT_EQ(diff.max_abs_error, 0) << diff.psnr_db;
+}
+
 // Golden images: regenerate with
 //   LINEWORK_UPDATE_GOLDENS=1 ctest --test-dir build -R Golden
 // Tolerance: PSNR ≥ 40 dB and at most 0.5 % of pixels off by more than 16 levels — room for

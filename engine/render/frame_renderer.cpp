@@ -1,6 +1,7 @@
 #include "render/frame_renderer.h"
 
 #include <cstring>
+#include <utility>
 
 #include "core/error.h"
 #include "core/timer.h"
@@ -10,11 +11,11 @@
 
 namespace lw {
 
-FrameRenderer::FrameRenderer(const Context& ctx, uint32_t width, uint32_t height)
+FrameRenderer::FrameRenderer(const Context& ctx, uint32_t width, uint32_t height, VkFormat color_format)
     : ctx_(&ctx),
-      target_(ctx, width, height),
-      surface_pass_(ctx),
-      line_pass_(ctx),
+      target_(ctx, width, height, color_format),
+      surface_pass_(ctx, color_format),
+      line_pass_(ctx, color_format),
       extractor_(ctx),
       extraction_on_host_(ctx.preferred_compute_site() == ComputeSite::Host),
       timer_(ctx),
@@ -42,13 +43,13 @@ void FrameRenderer::deform(const TriangleMesh& posed) {
 
 void FrameRenderer::set_slam(LineType type, const Slam& slam) {
     slams_[size_t(type)] = std::make_unique<SlamTexture>(*ctx_, slam);
-    if (!stroke_pass_) stroke_pass_ = std::make_unique<StrokePass>(*ctx_);
+    if (!stroke_pass_) stroke_pass_ = std::make_unique<StrokePass>(*ctx_, target_.color.format());
 }
 
 void FrameRenderer::resize(uint32_t width, uint32_t height) {
     if (width == target_.width && height == target_.height) return;
     vkDeviceWaitIdle(ctx_->device());  // nothing in flight may still use the old target
-    target_ = RenderTarget(*ctx_, width, height);
+    target_ = RenderTarget(*ctx_, width, height, target_.color.format());
     depth_readback_ = Buffer(*ctx_, {.size = VkDeviceSize(width) * height * 4, .usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                                      .purpose = MemoryPurpose::Readback, .name = "depth readback"});
     color_readback_ = Buffer(*ctx_, {.size = VkDeviceSize(width) * height * 4, .usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT,
@@ -60,7 +61,7 @@ void FrameRenderer::resize(uint32_t width, uint32_t height) {
 void FrameRenderer::set_layers(std::vector<LayerStyle> styles) {
     layer_styles_ = styles;
     layers_ = std::make_unique<LayerPass>(*ctx_, target_.width, target_.height, std::move(styles));
-    if (!stroke_pass_) stroke_pass_ = std::make_unique<StrokePass>(*ctx_);
+    if (!stroke_pass_) stroke_pass_ = std::make_unique<StrokePass>(*ctx_, target_.color.format());
 }
 
 FrameRenderer::CoherenceSnapshot FrameRenderer::coherence_snapshot() const {
@@ -196,6 +197,9 @@ Frame FrameRenderer::render(const CameraMatrices& camera, const glm::vec3& eye, 
         color_readback.invalidate(*ctx_);
         frame.image.color = ImageRGBA8{int(target_.width), int(target_.height), std::vector<uint8_t>(pixels * 4)};
         std::memcpy(frame.image.color.pixels.data(), color_readback.mapped(), pixels * 4);
+        if (target_.color.format() == VK_FORMAT_B8G8R8A8_UNORM)
+            for (size_t i = 0; i < frame.image.color.pixels.size(); i += 4)
+                std::swap(frame.image.color.pixels[i], frame.image.color.pixels[i + 2]);
     }
     frame.timings.total_ms = total.elapsed_ms();
     return frame;

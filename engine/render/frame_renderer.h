@@ -63,7 +63,8 @@ struct Frame {
 
 class FrameRenderer {
 public:
-    FrameRenderer(const Context& ctx, uint32_t width, uint32_t height);
+    // `color_format`: the target's (RenderTarget); colour read back is RGBA whatever it is.
+    FrameRenderer(const Context& ctx, uint32_t width, uint32_t height, VkFormat color_format = VK_FORMAT_R8G8B8A8_UNORM);
 
     // Uploads the mesh for shading and, when lines are wanted, builds and uploads its
     // line mesh (weld, curvature, feature edges) with `crease_angle_deg`.

@@ -89,7 +89,7 @@ std::vector<LineVertex> build_quads(const std::vector<ScreenPath>& paths, const 
 
 }  // namespace
 
-LinePass::LinePass(const Context& ctx)
+LinePass::LinePass(const Context& ctx, VkFormat color_format)
     : pipeline_(ctx, {.vertex_spirv = LW_SPIRV(lines_draw_vert_spv),
                       .fragment_spirv = LW_SPIRV(lines_draw_frag_spv),
                       .vertex_stride = sizeof(LineVertex),
@@ -98,6 +98,7 @@ LinePass::LinePass(const Context& ctx)
                                       .offset = offsetof(LineVertex, color)},
                                      {.location = 2, .format = VK_FORMAT_R32G32_SFLOAT,
                                       .offset = offsetof(LineVertex, arc)}},
+                      .color_format = color_format,
                       .depth_format = VK_FORMAT_UNDEFINED,
                       .depth_test = false,
                       .depth_write = false,

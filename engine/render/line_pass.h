@@ -24,7 +24,7 @@ namespace lw {
 
 class LinePass {
 public:
-    explicit LinePass(const Context& ctx);
+    explicit LinePass(const Context& ctx, VkFormat color_format = VK_FORMAT_R8G8B8A8_UNORM);
 
     // Builds the quads of `paths` and records their drawing; the returned buffer must live
     // until the command buffer has completed.

@@ -2,10 +2,10 @@
 
 namespace lw {
 
-RenderTarget::RenderTarget(const Context& ctx, uint32_t w, uint32_t h)
+RenderTarget::RenderTarget(const Context& ctx, uint32_t w, uint32_t h, VkFormat color_format)
     : width(w),
       height(h),
-      color(ctx, {.width = w, .height = h, .format = VK_FORMAT_R8G8B8A8_UNORM,
+      color(ctx, {.width = w, .height = h, .format = color_format,
                   .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
                            VK_IMAGE_USAGE_TRANSFER_DST_BIT,  // cleared by transfer when lines-only
                   .name = "color target"}),

@@ -13,9 +13,11 @@
 namespace lw {
 
 struct RenderTarget {
-    RenderTarget(const Context& ctx, uint32_t width, uint32_t height);
+    // `color_format`: R8G8B8A8_UNORM (what PNGs get), or B8G8R8A8_UNORM for a viewer whose
+    // swapchain has that format (the frame then reaches it by a copy instead of a blit).
+    RenderTarget(const Context& ctx, uint32_t width, uint32_t height, VkFormat color_format = VK_FORMAT_R8G8B8A8_UNORM);
     uint32_t width, height;
-    Image color;  // R8G8B8A8_UNORM
+    Image color;  // color_format
     Image depth;  // D32_SFLOAT, cleared to 1
 
     // Colour from `from` (UNDEFINED discards, TRANSFER_SRC keeps) to COLOR_ATTACHMENT_OPTIMAL.

@@ -36,7 +36,7 @@ GpuMesh upload_mesh(const Context& ctx, const TriangleMesh& mesh) {
         .index_count = static_cast<uint32_t>(mesh.indices.size())};
 }
 
-SurfacePass::SurfacePass(const Context& ctx)
+SurfacePass::SurfacePass(const Context& ctx, VkFormat color_format)
     : pipeline_(ctx, {.vertex_spirv = LW_SPIRV(surface_vert_spv),
                       .fragment_spirv = LW_SPIRV(surface_frag_spv),
                       .vertex_stride = sizeof(Vertex),
@@ -44,6 +44,7 @@ SurfacePass::SurfacePass(const Context& ctx)
                                      {.location = 1, .format = VK_FORMAT_R32G32B32_SFLOAT,
                                       .offset = offsetof(Vertex, normal)}},
                       .cull_mode = VK_CULL_MODE_NONE,  // glTF parts may be single-sided or open
+                      .color_format = color_format,
                       .push_constant_size = sizeof(SurfacePush),
                       .name = "surface"}),
       depth_only_(ctx, {.vertex_spirv = LW_SPIRV(surface_vert_spv),

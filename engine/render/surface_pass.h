@@ -37,7 +37,7 @@ struct GpuMesh {
 
 class SurfacePass {
 public:
-    explicit SurfacePass(const Context& ctx);
+    explicit SurfacePass(const Context& ctx, VkFormat color_format = VK_FORMAT_R8G8B8A8_UNORM);
 
     // Records the pass: clears, draws, and leaves both images in TRANSFER_SRC_OPTIMAL. With
     // `style.draw_surface` off, the colour is only cleared and the mesh drawn depth-only.

@@ -15,7 +15,7 @@ struct StrokePush {  // mirrors shaders/stroke.vert
 };
 }  // namespace
 
-StrokePass::StrokePass(const Context& ctx)
+StrokePass::StrokePass(const Context& ctx, VkFormat color_format)
     : pipeline_(ctx, {.vertex_spirv = LW_SPIRV(stroke_vert_spv),
                       .fragment_spirv = LW_SPIRV(stroke_frag_spv),
                       .vertex_stride = sizeof(StrokeVertex),
@@ -24,6 +24,7 @@ StrokePass::StrokePass(const Context& ctx)
                                       .offset = offsetof(StrokeVertex, tex)},
                                      {.location = 2, .format = VK_FORMAT_R32G32B32A32_SFLOAT,
                                       .offset = offsetof(StrokeVertex, color)}},
+                      .color_format = color_format,
                       .depth_format = VK_FORMAT_UNDEFINED,
                       .depth_test = false,
                       .depth_write = false,

@@ -17,7 +17,7 @@ namespace lw {
 
 class StrokePass {
 public:
-    explicit StrokePass(const Context& ctx);
+    explicit StrokePass(const Context& ctx, VkFormat color_format = VK_FORMAT_R8G8B8A8_UNORM);
 
     // Records the draw; the returned vertex buffer must live until the submission completed.
     [[nodiscard]] Buffer record(const Context& ctx, VkCommandBuffer cmd, const RenderTarget& target,

@@ -164,7 +164,8 @@ int run_view(const ViewOptions& o) {
         glfwSetScrollCallback(window.get(), &on_scroll);
         UiOverlay ui(ctx, window, swapchain.render_pass(), swapchain.min_image_count(), swapchain.image_count());
 
-        FrameRenderer renderer(ctx, swapchain.extent().width, swapchain.extent().height);
+        // The frame in the swapchain's format: it reaches the window by a copy, not a blit.
+        FrameRenderer renderer(ctx, swapchain.extent().width, swapchain.extent().height, swapchain.format());
         TriangleMesh posed = s.animated ? pose_scene(scene, 0.0f) : scene.mesh;
         renderer.set_mesh(posed, desc.lines.enabled, desc.lines.params.crease_angle_deg);
         if (!layers.descs.empty()) renderer.set_layers(layers.styles);
