@@ -4,7 +4,8 @@
 //         the `Window`, and per frame a `PresentDesc`: the finished frame (an Image in
 //         TRANSFER_SRC_OPTIMAL, e.g. FrameRenderer::target().color), an overlay recorded in
 //         `render_pass()` (the UI), and optionally where to put a screenshot.
-// Output: the frame blitted to the acquired image (scaled when the sizes differ, converted
+// Output: the frame copied to the acquired image when it has the swapchain's size and format
+//         (a viewer renders in format()), else blitted (scaled when the sizes differ, converted
 //         to the swapchain's format), the overlay drawn over it, presented.
 //
 // One frame in flight: present() waits for the previous frame's fence before recording, so
@@ -53,7 +54,7 @@ public:
     // keeps what it had, when the size or the surface's current extent is zero.
     [[nodiscard]] bool recreate(VkExtent2D size);
 
-    // Acquires, records (blit, overlay, screenshot copy), submits and presents. Returns
+    // Acquires, records (copy or blit, overlay, screenshot copy), submits and presents. Returns
     // false when the swapchain is out of date or suboptimal: recreate before the next frame
     // (an out-of-date acquire presents nothing).
     [[nodiscard]] bool present(const PresentDesc& desc);
