@@ -1,7 +1,8 @@
-#include <algorithm>
 #include "gpu/resources.h"
 
+#include <algorithm>
 #include <cstring>
+#include <utility>
 #include <string>
 
 #include "core/error.h"
@@ -97,6 +98,15 @@ Buffer upload_buffer(const Context& ctx, std::span<const std::byte> bytes, VkBuf
         vkCmdCopyBuffer(cmd, staging.get(), buffer.get(), 1, &region);
     });
     return buffer;
+}
+
+ImageRGBA8 read_rgba8(const Context& ctx, const Buffer& readback, uint32_t width, uint32_t height, VkFormat format) {
+    readback.invalidate(ctx);
+    ImageRGBA8 image{int(width), int(height), std::vector<uint8_t>(size_t(width) * height * 4)};
+    std::memcpy(image.pixels.data(), readback.mapped(), image.pixels.size());
+    if (format == VK_FORMAT_B8G8R8A8_UNORM || format == VK_FORMAT_B8G8R8A8_SRGB)
+        for (size_t i = 0; i < image.pixels.size(); i += 4) std::swap(image.pixels[i], image.pixels[i + 2]);
+    return image;
 }
 
 std::vector<std::byte> read_buffer(const Context& ctx, const Buffer& buffer) {
@@ -234,6 +244,10 @@ void record_image_rows_to_buffer(VkCommandBuffer cmd, const Image& image, const 
 }
 
 void record_image_barrier(VkCommandBuffer cmd, const Image& image, const ImageBarrier& b) {
+    record_image_barrier(cmd, image.get(), image.aspect(), b);
+}
+
+void record_image_barrier(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, const ImageBarrier& b) {
     VkImageMemoryBarrier2 barrier{.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2,
                                   .srcStageMask = b.src_stage,
                                   .srcAccessMask = b.src_access,
@@ -243,8 +257,8 @@ void record_image_barrier(VkCommandBuffer cmd, const Image& image, const ImageBa
                                   .newLayout = b.new_layout,
                                   .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
                                   .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
-                                  .image = image.get(),
-                                  .subresourceRange = {image.aspect(), 0, 1, 0, 1}};
+                                  .image = image,
+                                  .subresourceRange = {aspect, 0, 1, 0, 1}};
     VkDependencyInfo dep{.sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO, .imageMemoryBarrierCount = 1,
                          .pImageMemoryBarriers = &barrier};
     vkCmdPipelineBarrier2(cmd, &dep);

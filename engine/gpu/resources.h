@@ -15,6 +15,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include "core/image.h"
 #include "gpu/context.h"
 #include "gpu/handle.h"
 
@@ -62,6 +63,11 @@ template <typename T>
                                    const char* name) {
     return upload_buffer(ctx, std::as_bytes(std::span(data)), usage, name);
 }
+
+// The pixels of a width × height 8-bit RGBA or BGRA image copied into a Readback buffer
+// (invalidated here), as RGBA: B8G8R8A8 formats have red and blue swapped back.
+[[nodiscard]] ImageRGBA8 read_rgba8(const Context& ctx, const Buffer& readback, uint32_t width, uint32_t height,
+                                    VkFormat format);
 
 // Copies a Device buffer back to the host (waits for the copy).
 [[nodiscard]] std::vector<std::byte> read_buffer(const Context& ctx, const Buffer& buffer);
@@ -138,6 +144,8 @@ struct ImageBarrier {
     VkAccessFlags2 dst_access = VK_ACCESS_2_NONE;
 };
 void record_image_barrier(VkCommandBuffer cmd, const Image& image, const ImageBarrier& barrier);
+// The same for an image this module does not own (a swapchain's), mip 0, layer 0.
+void record_image_barrier(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, const ImageBarrier& barrier);
 
 // A global memory barrier (e.g. compute writes -> transfer reads).
 void record_memory_barrier(VkCommandBuffer cmd, VkPipelineStageFlags2 src_stage, VkAccessFlags2 src_access,

@@ -11,26 +11,6 @@ namespace lw {
 
 namespace {
 
-void image_barrier(VkCommandBuffer cmd, VkImage image, VkImageLayout from, VkImageLayout to,
-                   VkPipelineStageFlags2 src_stage, VkAccessFlags2 src_access, VkPipelineStageFlags2 dst_stage,
-                   VkAccessFlags2 dst_access) {
-    VkImageMemoryBarrier2 barrier{.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2,
-                                  .srcStageMask = src_stage,
-                                  .srcAccessMask = src_access,
-                                  .dstStageMask = dst_stage,
-                                  .dstAccessMask = dst_access,
-                                  .oldLayout = from,
-                                  .newLayout = to,
-                                  .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
-                                  .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
-                                  .image = image,
-                                  .subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1}};
-    VkDependencyInfo dependency{.sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO,
-                                .imageMemoryBarrierCount = 1,
-                                .pImageMemoryBarriers = &barrier};
-    vkCmdPipelineBarrier2(cmd, &dependency);
-}
-
 VkSurfaceFormatKHR choose_format(VkPhysicalDevice device, VkSurfaceKHR surface) {
     uint32_t count = 0;
     LW_VK(vkGetPhysicalDeviceSurfaceFormatsKHR(device, surface, &count, nullptr));
@@ -231,9 +211,13 @@ bool Swapchain::recreate(VkExtent2D size) {
 void Swapchain::record(VkCommandBuffer cmd, uint32_t index, const PresentDesc& desc, const Buffer* readback) const {
     const VkImage image = images_[index];
     // Copy, blit and clear all count as transfer stages.
-    image_barrier(cmd, image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                  VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
-                  VK_ACCESS_2_TRANSFER_WRITE_BIT);
+    record_image_barrier(cmd, image, VK_IMAGE_ASPECT_COLOR_BIT,
+                         {.old_layout = VK_IMAGE_LAYOUT_UNDEFINED,
+                          .new_layout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                          .src_stage = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                          .src_access = VK_ACCESS_2_NONE,
+                          .dst_stage = VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+                          .dst_access = VK_ACCESS_2_TRANSFER_WRITE_BIT});
     if (desc.frame) {
         // The renderer's last writes (attachment, then its own transfer) before the copy reads.
         record_memory_barrier(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_WRITE_BIT,
@@ -261,10 +245,13 @@ void Swapchain::record(VkCommandBuffer cmd, uint32_t index, const PresentDesc& d
         VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
         vkCmdClearColorImage(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &black, 1, &range);
     }
-    image_barrier(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                  VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                  VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                  VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
+    record_image_barrier(cmd, image, VK_IMAGE_ASPECT_COLOR_BIT,
+                         {.old_layout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                          .new_layout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                          .src_stage = VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+                          .src_access = VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                          .dst_stage = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                          .dst_access = VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT});
 
     VkRenderPassBeginInfo begin{.sType = VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO,
                                 .renderPass = render_pass_,
@@ -275,15 +262,23 @@ void Swapchain::record(VkCommandBuffer cmd, uint32_t index, const PresentDesc& d
     vkCmdEndRenderPass(cmd);  // now PRESENT_SRC_KHR
 
     if (readback) {
-        image_barrier(cmd, image, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                      VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
-                      VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+        record_image_barrier(cmd, image, VK_IMAGE_ASPECT_COLOR_BIT,
+                             {.old_layout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR,
+                              .new_layout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                              .src_stage = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                              .src_access = VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
+                              .dst_stage = VK_PIPELINE_STAGE_2_COPY_BIT,
+                              .dst_access = VK_ACCESS_2_TRANSFER_READ_BIT});
         VkBufferImageCopy region{.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
                                  .imageExtent = {extent_.width, extent_.height, 1}};
         vkCmdCopyImageToBuffer(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback->get(), 1, &region);
-        image_barrier(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR,
-                      VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
-                      VK_ACCESS_2_NONE);
+        record_image_barrier(cmd, image, VK_IMAGE_ASPECT_COLOR_BIT,
+                             {.old_layout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                              .new_layout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR,
+                              .src_stage = VK_PIPELINE_STAGE_2_COPY_BIT,
+                              .src_access = VK_ACCESS_2_NONE,
+                              .dst_stage = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                              .dst_access = VK_ACCESS_2_NONE});
         record_memory_barrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                               VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
     }
@@ -347,14 +342,8 @@ bool Swapchain::present(const PresentDesc& desc) {
         LW_VK(vkWaitForFences(device, 1, &fence, VK_TRUE, UINT64_MAX));
         ImageRGBA8& shot = *desc.screenshot;
         if (from_swapchain) {
-            readback.invalidate(*ctx_);
-            shot = ImageRGBA8{int(extent_.width), int(extent_.height), std::vector<uint8_t>(size_t(extent_.width) * extent_.height * 4)};
-            std::memcpy(shot.pixels.data(), readback.mapped(), shot.pixels.size());
-            const bool bgra = format_ == VK_FORMAT_B8G8R8A8_UNORM || format_ == VK_FORMAT_B8G8R8A8_SRGB;
-            for (size_t i = 0; i < shot.pixels.size(); i += 4) {
-                if (bgra) std::swap(shot.pixels[i], shot.pixels[i + 2]);
-                shot.pixels[i + 3] = 255;  // the window is opaque
-            }
+            shot = read_rgba8(*ctx_, readback, extent_.width, extent_.height, format_);
+            for (size_t i = 3; i < shot.pixels.size(); i += 4) shot.pixels[i] = 255;  // the window is opaque
         } else if (desc.frame) {  // the frame alone, without the overlay
             const VkExtent2D e = desc.frame->extent();
             Buffer buffer(*ctx_, {.size = VkDeviceSize(e.width) * e.height * 4, .usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT,
@@ -364,11 +353,7 @@ bool Swapchain::present(const PresentDesc& desc) {
                 record_memory_barrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                                       VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
             });
-            buffer.invalidate(*ctx_);
-            shot = ImageRGBA8{int(e.width), int(e.height), std::vector<uint8_t>(size_t(e.width) * e.height * 4)};
-            std::memcpy(shot.pixels.data(), buffer.mapped(), shot.pixels.size());
-            if (desc.frame->format() == VK_FORMAT_B8G8R8A8_UNORM)
-                for (size_t i = 0; i < shot.pixels.size(); i += 4) std::swap(shot.pixels[i], shot.pixels[i + 2]);
+            shot = read_rgba8(*ctx_, buffer, e.width, e.height, desc.frame->format());
         }
     }
     return acquired == VK_SUCCESS && presented == VK_SUCCESS;

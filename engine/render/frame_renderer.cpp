@@ -1,7 +1,5 @@
 #include "render/frame_renderer.h"
 
-#include <cstring>
-#include <utility>
 
 #include "core/error.h"
 #include "core/timer.h"
@@ -194,12 +192,7 @@ Frame FrameRenderer::render(const CameraMatrices& camera, const glm::vec3& eye, 
     });
     for (const PassTime& t : timer_.results()) frame.timings.gpu.push_back(t);
     if (outputs.color) {
-        color_readback.invalidate(*ctx_);
-        frame.image.color = ImageRGBA8{int(target_.width), int(target_.height), std::vector<uint8_t>(pixels * 4)};
-        std::memcpy(frame.image.color.pixels.data(), color_readback.mapped(), pixels * 4);
-        if (target_.color.format() == VK_FORMAT_B8G8R8A8_UNORM)
-            for (size_t i = 0; i < frame.image.color.pixels.size(); i += 4)
-                std::swap(frame.image.color.pixels[i], frame.image.color.pixels[i + 2]);
+        frame.image.color = read_rgba8(*ctx_, color_readback, target_.width, target_.height, target_.color.format());
     }
     frame.timings.total_ms = total.elapsed_ms();
     return frame;
