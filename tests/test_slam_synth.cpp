@@ -255,6 +255,45 @@ TEST_F(SlamSynthSlam, MeetsTheSlamConditions) {
     EXPECT_LT(c5.wrap_rank, 1.0);
 }
 
+// Smooth variation rests on PTS being continuous in its seed (§3.2: "small changes in the
+// seed result in small changes in the output"). At one length, where only α of Eq. 2 moves,
+// the output difference must shrink in proportion to the level step: over three halvings of
+// δ it falls to about 1/8 (measured 0.138; a √δ response would give 0.35). Adjacent SLAM
+// levels also differ in length and fall by about 0.6 per halving (docs/BENCHMARKS.md).
+// Averaged over three seeds, since one small texture's steps are noisy.
+TEST_F(SlamSynthSlam, SeedInterpolationAloneChangesTheOutputInProportion) {
+    constexpr int kRows = 8, kCols = 256, kIterations = 8;
+    const SlamModel m = slam_model(kRows, "dots");
+    const Plane exemplar = dots_exemplar(kRows, 128);
+    const TextureStatistics target =
+        analyze_texture(pad_exemplar(exemplar, m, 128), make_pyramid_geometry(m.padded_rows, 128, m.scales, 4));
+    const PyramidGeometry g = make_pyramid_geometry(m.padded_rows, kCols, m.scales, 4);
+    double coarse = 0.0, fine = 0.0;
+    for (uint32_t seed : {1u, 2u, 3u}) {
+        const Plane half = half_seed(m.padded_rows, 2 * kCols, seed);
+        auto level = [&](double l) {
+            Plane out = synthesize_texture(target, seed_level(half, l, kCols), g, {.iterations = kIterations});
+            for (float& v : out.v) v = std::clamp(v, 0.0f, 1.0f);
+            return out;
+        };
+        const Plane base = level(0.75);
+        auto step = [&](double delta) {
+            const Plane other = level(0.75 + delta);
+            double sum = 0.0;
+            for (size_t i = 0; i < base.size(); ++i) sum += std::abs(other.v[i] - base.v[i]);
+            return sum / double(base.size());
+        };
+        coarse += step(1.0 / 8);
+        fine += step(1.0 / 64);
+    }
+    const double ratio = fine / coarse;
+    std::printf("  mean |A(l + δ) − A(l)| at one length: δ = 1/8 %.4f, δ = 1/64 %.4f, ratio %.3f (1/8 = 0.125)\n",
+                coarse / 3, fine / 3, ratio);
+    EXPECT_GT(coarse / 3, 0.01);  // the seeds differ enough to move the output at all
+    EXPECT_GT(ratio, 0.06);
+    EXPECT_LT(ratio, 0.25);
+}
+
 // The builder takes A_1.0 = [A_0.5 A_0.5] instead of synthesizing it: that holds only because
 // the synthesis commutes with the half-length shift. Synthesizing level 1.0 in full from its
 // seed must give the tiled level 0.5 up to amplified float rounding, and a periodic result.
