@@ -25,6 +25,7 @@
 #include <CLI/CLI.hpp>
 
 #include "core/error.h"
+#include "core/memory.h"
 #include "core/timer.h"
 #include "geometry/subdivide.h"
 #include "gpu/context.h"
@@ -221,6 +222,7 @@ void add_options(CLI::App* cmd, BenchOptions& o) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    lw::keep_freed_memory();  // as `linework` does, so the figures are the same program's
     CLI::App app{"linework-bench — timings of Linework passes (median of N frames; GPU time from timestamp queries)."};
     app.require_subcommand(1);
     BenchOptions surface, lines;

@@ -9,8 +9,10 @@
 
 #include "commands.h"
 #include "core/error.h"
+#include "core/memory.h"
 
 int main(int argc, char** argv) {
+    lw::keep_freed_memory();  // before any thread: lavapipe reallocates megabytes every frame
     CLI::App app{"linework — real-time line stylization on Vulkan.\n"
                  "Renders glTF models and scene files headlessly (Mesa lavapipe or a GPU), or in a window (view)."};
     app.require_subcommand(1);
