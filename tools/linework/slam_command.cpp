@@ -109,7 +109,9 @@ Runner add_slam_command(CLI::App& app) {
     cmd->add_option("--levels", o->levels,
                     "Levels from 0.5 to 1.0. Each is synthesized at l·Lmax rounded to the pyramid's unit "
                     "(2^(scales+1) texels: 32 for a 32-row exemplar), so past Lmax/(2·unit) + 1 levels (17 for "
-                    "32 rows at 1024) adjacent levels share lengths; the authors step by at least the stroke's width")->check(CLI::Range(2, 256))->capture_default_str();
+                    "32 rows at 1024) adjacent levels share lengths; the authors step by at least the stroke's width")
+        ->check(CLI::Range(2, 256))
+        ->capture_default_str();
     cmd->add_option("--length", o->length, "Lmax: texels of level 1.0 (and of every stored level)")
         ->check(CLI::Range(16, 16384))
         ->capture_default_str();
