@@ -1,6 +1,8 @@
 #include "core/memory.h"
 
-#include <cstddef>
+// A C library header first: glibc defines __GLIBC__ in it, and the #if below needs it (without
+// one the settings were silently skipped).
+#include <cstdlib>
 
 #if defined(__GLIBC__)
 #include <malloc.h>
