@@ -15,7 +15,7 @@
 #include "scene/camera_path.h"
 #include "scene/scene.h"
 #include "stroke/slam.h"
-#include "stroke/slam_level.h"
+#include "types/slam_level.h"
 #include "test_support.h"
 
 namespace lw {
@@ -201,14 +201,16 @@ TEST_F(CoherenceGpu, AStillViewKeepsItsParameterization) {
     const CoherenceParams coherence;
     const Frame first = renderer.render(camera, view.eye, SurfaceStyle{}, lines, {.color = false}, &coherence);
     const Frame second = renderer.render(camera, view.eye, SurfaceStyle{}, lines, {.color = false}, &coherence);
-    ASSERT_EQ(first.params.size(), 1u);  // the silhouette loop
-    ASSERT_EQ(second.params.size(), 1u);
-    EXPECT_EQ(first.params[0].votes, 0u);
-    EXPECT_GT(second.params[0].votes, 100u);
-    EXPECT_TRUE(second.params[0].fitted);
-    EXPECT_NEAR(second.params[0].rho, first.params[0].rho, 0.01f * first.params[0].rho);
+    ASSERT_FALSE(first.sets.empty());
+    ASSERT_EQ(first.sets[0].name, "silhouette");
+    ASSERT_EQ(first.sets[0].params.size(), 1u);  // the silhouette loop
+    ASSERT_EQ(second.sets[0].params.size(), 1u);
+    EXPECT_EQ(first.sets[0].params[0].votes, 0u);
+    EXPECT_GT(second.sets[0].params[0].votes, 100u);
+    EXPECT_TRUE(second.sets[0].params[0].fitted);
+    EXPECT_NEAR(second.sets[0].params[0].rho, first.sets[0].params[0].rho, 0.01f * first.sets[0].params[0].rho);
     // Same texture phase along the loop: T differs by less than a pixel's worth.
-    EXPECT_NEAR(second.params[0].phi, first.params[0].phi, first.params[0].rho * 1.0f);
+    EXPECT_NEAR(second.sets[0].params[0].phi, first.sets[0].params[0].phi, first.sets[0].params[0].rho * 1.0f);
 }
 
 // The coherence measures over an orbit, per policy (the full 120-frame 360° figure at
@@ -220,12 +222,14 @@ TEST_F(CoherenceGpu, OrbitMeasuresPerPolicy) {
     const LoadedScene scene = load_scene(desc);
     const Slam slam = make_procedural_slam(SlamPattern::Dots, 9, 256, 16, 1);
     LinesDesc lines;
-    for (LineType t : {LineType::Silhouette, LineType::Suggestive}) lines.styles[size_t(t)].width = 4.0f;
+    // Creases carry the SLAM too: each line set is parameterized with its own SLAM's length.
+    for (LineType t : {LineType::Silhouette, LineType::Suggestive, LineType::Crease}) lines.styles[size_t(t)].width = 4.0f;
     auto run = [&](ParamPolicy policy) {
         FrameRenderer renderer(ctx(), 320, 240);
         renderer.set_mesh(scene.mesh, true, 45.0f);
-        renderer.set_slam(LineType::Silhouette, slam);
-        renderer.set_slam(LineType::Suggestive, slam);
+        renderer.set_slam(size_t(LineType::Silhouette), slam);
+        renderer.set_slam(size_t(LineType::Suggestive), slam);
+        renderer.set_slam(size_t(LineType::Crease), slam);
         const CoherenceParams coherence{.policy = policy, .length_scale = 4.0f, .slam_length_px = 256.0f};
         const CameraPath orbit{.kind = CameraPath::Kind::Orbit, .orbit = {.degrees = 60.0f}};
         std::vector<PathDump> dumps;
@@ -233,7 +237,9 @@ TEST_F(CoherenceGpu, OrbitMeasuresPerPolicy) {
             const ViewCamera view = camera_at(orbit, scene.camera, frame_time(f, {0, 29}, 24.0f));
             const CameraMatrices camera = camera_matrices(view, 320.0f / 240.0f, scene.bounds);
             const Frame frame = renderer.render(camera, view.eye, desc.style, lines, {.color = false}, &coherence);
-            dumps.push_back(parse_path_dump(path_dump_json(f, 320, 240, frame.screen_paths, frame.params), "frame"));
+            std::vector<DumpGroup> groups;
+            for (const LineSetFrame& set : frame.sets) groups.push_back({set.name, &set.paths, &set.params});
+            dumps.push_back(parse_path_dump(path_dump_json(f, 320, 240, groups), "frame"));
         }
         return std::make_pair(measure_sliding(dumps), measure_stretch(dumps));
     };

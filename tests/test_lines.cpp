@@ -148,7 +148,7 @@ TEST_F(LinesTest, SvgIsValidAndLinesUpWithThePng) {
     renderer.set_mesh(scene.mesh, true, desc.lines.params.crease_angle_deg);
     const Frame frame = renderer.render(camera, scene.camera.eye, desc.style, desc.lines);
 
-    const std::string svg = lines_svg(width, height, frame.screen_paths, desc.lines.styles);
+    const std::string svg = lines_svg(width, height, line_set_svg_groups(desc.lines, frame));
     std::string why;
     EXPECT_TRUE(well_formed_xml(svg, &why)) << why;
     EXPECT_NE(svg.find("viewBox=\"0 0 320 240\""), std::string::npos);

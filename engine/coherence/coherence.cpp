@@ -519,8 +519,8 @@ std::vector<PathParam> CoherenceTracker::update(std::vector<ScreenPath>& paths, 
                         phase += votes.votes[k].t - typical_rho * votes.votes[k].s;
                     param.phi = float(phase / param.votes);
                 } else {
-                    // Fewer than two votes: T(s) = s/L (§4.2).
-                    param.rho = stretch_rho;
+                    // Fewer than two votes: T(s) = s/L (§4.2), or the tiling scale.
+                    param.rho = params.fresh_paths_tile ? params.length_scale / params.slam_length_px : stretch_rho;
                     param.phi = 0.0f;
                 }
                 keep_in_home_octave(param, params.length_scale / params.slam_length_px);

@@ -27,11 +27,10 @@
 #include "gpu/timestamps.h"
 #include "lines/visibility.h"
 #include "scene/camera.h"
-#include "stroke/slam_level.h"
+#include "types/slam_level.h"
+#include "types/line_set.h"  // ParamPolicy
 
 namespace lw {
-
-enum class ParamPolicy { Coherent, Arclength, Stretch };
 
 struct CoherenceParams {
     ParamPolicy policy = ParamPolicy::Coherent;
@@ -45,6 +44,10 @@ struct CoherenceParams {
     // A path whose votes span fewer pixels than this keeps the tiling scale and fits only its
     // phase (a slope from votes a few pixels apart is noise).
     float min_slope_span_px = 16.0f;
+    // A path without votes starts at T(s) = s·κ/Lmax (the tiling scale) instead of the
+    // paper's T(s) = s/L. For styles with no coarser level to fold into (dashes, plain
+    // displacement): their on-screen lengths are then exact where nothing moved.
+    bool fresh_paths_tile = false;
     RansacParams ransac;
 };
 

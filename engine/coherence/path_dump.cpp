@@ -15,7 +15,7 @@ namespace lw {
 namespace {
 
 void append_paths(nlohmann::json& out, const std::vector<ScreenPath>& paths, const std::vector<PathParam>& params,
-                  const char* type_override) {
+                  const char* type_override, const std::string& line_set) {
     using nlohmann::json;
     for (size_t p = 0; p < paths.size(); ++p) {
         const ScreenPath& path = paths[p];
@@ -29,19 +29,23 @@ void append_paths(nlohmann::json& out, const std::vector<ScreenPath>& paths, con
             samples.push_back({{"x", s.pixel.x}, {"y", s.pixel.y}, {"s", arclength}, {"t", t},
                                {"u", param.fold.scale * t}, {"p", {s.position.x, s.position.y, s.position.z}}});
         }
-        out["paths"].push_back({{"type", type_override ? type_override : line_type_name(path.type)},
-                                {"closed", path.closed}, {"rho", param.rho}, {"phi", param.phi},
+        json entry = {{"type", type_override ? type_override : line_type_name(path.type)}};
+        if (!line_set.empty()) entry["line_set"] = line_set;
+        entry.update(json{{"closed", path.closed}, {"rho", param.rho}, {"phi", param.phi},
                                 {"level", param.fold.level}, {"votes", param.votes}, {"samples", std::move(samples)}});
+        out["paths"].push_back(std::move(entry));
     }
 }
 
 }  // namespace
 
-std::string path_dump_json(int frame, int width, int height, const std::vector<ScreenPath>& paths,
-                           const std::vector<PathParam>& params, const std::vector<ParameterizedPaths>& layers) {
+std::string path_dump_json(int frame, int width, int height, const std::vector<DumpGroup>& sets,
+                           const std::vector<ParameterizedPaths>& layers) {
     nlohmann::json out = {{"frame", frame}, {"width", width}, {"height", height}, {"paths", nlohmann::json::array()}};
-    append_paths(out, paths, params, nullptr);
-    for (const ParameterizedPaths& layer : layers) append_paths(out, layer.paths, layer.params, "layer");
+    static const std::vector<PathParam> none;
+    for (const DumpGroup& set : sets)
+        if (set.paths) append_paths(out, *set.paths, set.params ? *set.params : none, nullptr, set.line_set);
+    for (const ParameterizedPaths& layer : layers) append_paths(out, layer.paths, layer.params, "layer", "");
     return out.dump();
 }
 
@@ -59,7 +63,7 @@ PathDump parse_path_dump(const std::string& text, const std::string& name) {
         const nlohmann::json j = nlohmann::json::parse(text);
         dump.frame = j.at("frame").get<int>();
         for (const auto& p : j.at("paths")) {
-            DumpPath path{p.at("type").get<std::string>(), p.at("rho").get<float>(), {}};
+            DumpPath path{p.at("type").get<std::string>(), p.value("line_set", std::string()), p.at("rho").get<float>(), {}};
             for (const auto& s : p.at("samples"))
                 path.samples.push_back({{s.at("x").get<float>(), s.at("y").get<float>()}, s.at("s").get<float>(),
                                         s.at("t").get<float>(), s.at("u").get<float>()});
@@ -152,6 +156,25 @@ StretchMeasure measure_stretch(const std::vector<PathDump>& frames) {
     }
     m.share_in_band = double(best) / double(ds_du.size());
     return m;
+}
+
+std::vector<PathDump> paths_of_line_set(const std::vector<PathDump>& frames, const std::string& line_set) {
+    std::vector<PathDump> out;
+    for (const PathDump& frame : frames) {
+        PathDump subset{.frame = frame.frame};
+        for (const DumpPath& path : frame.paths)
+            if (path.line_set == line_set) subset.paths.push_back(path);
+        out.push_back(std::move(subset));
+    }
+    return out;
+}
+
+std::vector<std::string> line_sets_in(const std::vector<PathDump>& frames) {
+    std::vector<std::string> names;
+    for (const PathDump& frame : frames)
+        for (const DumpPath& path : frame.paths)
+            if (std::find(names.begin(), names.end(), path.line_set) == names.end()) names.push_back(path.line_set);
+    return names;
 }
 
 }  // namespace lw

@@ -2,7 +2,7 @@
 //
 // Dump contract (`linework render --dump-paths DIR`, one DIR/frame_NNNN.json per frame):
 //   {"frame": f, "width": W, "height": H, "paths": [{"type": "silhouette|suggestive|crease|border|layer",
-//    "closed": bool, "rho": ρ, "phi": φ, "level": l, "votes": n, "samples": [{"x": px, "y": px,
+//    "line_set": the name of the line set that drew it (absent for layers), "closed": bool, "rho": ρ, "phi": φ, "level": l, "votes": n, "samples": [{"x": px, "y": px,
 //    "s": arclength px, "t": T(s) = ρs + φ, "u": the coordinate along the SLAM level actually
 //    sampled, in periods of that level's texture, "p": [x, y, z] surface position}]}]}
 // Only visible paths are dumped.
@@ -27,8 +27,13 @@ namespace lw {
 
 // Paths of vector layers follow the 3D paths with "type": "layer" (their "p" is the drawing
 // point, z = 0).
-[[nodiscard]] std::string path_dump_json(int frame, int width, int height, const std::vector<ScreenPath>& paths,
-                                         const std::vector<PathParam>& params,
+// One line set's paths of a frame (a path in several sets is dumped once per set).
+struct DumpGroup {
+    std::string line_set;
+    const std::vector<ScreenPath>* paths = nullptr;
+    const std::vector<PathParam>* params = nullptr;  // per path; null or short: default parameters
+};
+[[nodiscard]] std::string path_dump_json(int frame, int width, int height, const std::vector<DumpGroup>& sets,
                                          const std::vector<ParameterizedPaths>& layers = {});
 
 struct DumpSample {
@@ -37,6 +42,7 @@ struct DumpSample {
 };
 struct DumpPath {
     std::string type;
+    std::string line_set;  // "" for layers
     float rho = 0.0f;
     std::vector<DumpSample> samples;
 };
@@ -62,5 +68,10 @@ struct StretchMeasure {
     size_t samples = 0;
 };
 [[nodiscard]] StretchMeasure measure_stretch(const std::vector<PathDump>& frames);
+
+// The frames with only the paths of one line set ("" : the layers), so that each set is
+// measured on its own; and the line-set names found, in order of first appearance.
+[[nodiscard]] std::vector<PathDump> paths_of_line_set(const std::vector<PathDump>& frames, const std::string& line_set);
+[[nodiscard]] std::vector<std::string> line_sets_in(const std::vector<PathDump>& frames);
 
 }  // namespace lw

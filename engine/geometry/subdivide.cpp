@@ -29,6 +29,7 @@ TriangleMesh subdivide_once(const TriangleMesh& in) {
         const uint32_t ab = midpoint(a, b), bc = midpoint(b, c), ca = midpoint(c, a);
         // Four triangles with the parent's winding.
         for (uint32_t i : {a, ab, ca, ab, b, bc, ca, bc, c, ab, bc, ca}) out.indices.push_back(i);
+        if (t / 3 < in.face_material.size()) out.face_material.insert(out.face_material.end(), 4, in.face_material[t / 3]);
     }
     return out;
 }

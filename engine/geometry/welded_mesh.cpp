@@ -76,6 +76,7 @@ WeldedMesh weld(const TriangleMesh& mesh) {
                               out.welded_index[mesh.indices[t + 2]]);
         if (face[0] == face[1] || face[1] == face[2] || face[2] == face[0]) continue;
         out.faces.push_back(face);
+        out.source_face.push_back(static_cast<uint32_t>(t / 3));
     }
 
     // Edges in order of first appearance (faces in order, corners 0..2), each with the first

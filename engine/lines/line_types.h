@@ -12,7 +12,7 @@
 
 #include <glm/glm.hpp>
 
-#include "scene/style.h"  // LineType, LineParams
+#include "types/line_type.h"
 
 namespace lw {
 

@@ -26,18 +26,16 @@ std::string number(float v) {
 
 }  // namespace
 
-std::string lines_svg(int width, int height, const std::vector<ScreenPath>& paths,
-                      const std::array<LineStyle, kLineTypeCount>& styles) {
+std::string lines_svg(int width, int height, const std::vector<SvgGroup>& groups) {
     std::string svg = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
     svg += "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + std::to_string(width) + "\" height=\"" +
            std::to_string(height) + "\" viewBox=\"0 0 " + std::to_string(width) + " " + std::to_string(height) + "\">\n";
-    for (int t = 0; t < kLineTypeCount; ++t) {
-        const LineType type = static_cast<LineType>(t);
-        svg += "  <g id=\"" + std::string(line_type_name(type)) + "\" fill=\"none\" stroke=\"" +
-               hex_color(styles[t].color) + "\" stroke-width=\"" + number(styles[t].width) +
-               "\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";
-        for (const ScreenPath& path : paths) {
-            if (path.type != type || !path.visible || path.samples.size() < 2) continue;
+    static const std::vector<ScreenPath> none;
+    for (const SvgGroup& group : groups) {
+        svg += "  <g id=\"" + group.id + "\" fill=\"none\" stroke=\"" + hex_color(group.color) + "\" stroke-width=\"" +
+               number(group.width) + "\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";
+        for (const ScreenPath& path : group.paths ? *group.paths : none) {
+            if (!path.visible || path.samples.size() < 2) continue;
             svg += "    <polyline points=\"";
             for (const ScreenSample& s : path.samples) svg += number(s.pixel.x) + "," + number(s.pixel.y) + " ";
             if (path.closed) svg += number(path.samples.front().pixel.x) + "," + number(path.samples.front().pixel.y);
@@ -50,11 +48,10 @@ std::string lines_svg(int width, int height, const std::vector<ScreenPath>& path
     return svg;
 }
 
-void write_lines_svg(const std::filesystem::path& path, int width, int height, const std::vector<ScreenPath>& paths,
-                     const std::array<LineStyle, kLineTypeCount>& styles) {
+void write_lines_svg(const std::filesystem::path& path, int width, int height, const std::vector<SvgGroup>& groups) {
     std::ofstream out(path, std::ios::binary);
     if (!out) throw Error(path.string() + ": cannot open for writing");
-    out << lines_svg(width, height, paths, styles);
+    out << lines_svg(width, height, groups);
     if (!out.flush()) throw Error(path.string() + ": write failed");
 }
 

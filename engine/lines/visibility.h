@@ -18,6 +18,7 @@
 
 #include "lines/line_types.h"
 #include "scene/camera.h"
+#include "types/screen_path.h"
 
 namespace lw {
 
@@ -34,25 +35,6 @@ struct DepthImage {
     std::span<const float> depth;  // window depth in [0, 1], row-major; 1 = background (not owned)
     float znear = 0.0f;
     float zfar = 0.0f;
-};
-
-struct ScreenSample {
-    glm::vec2 pixel;     // x right, y down
-    float depth;         // eye depth (distance along the view axis)
-    float s;             // screen arc length from the path's start, pixels
-    glm::vec3 position;  // world
-    uint32_t face;       // of the nearest path vertex
-    glm::vec3 bary;
-    float alpha;
-    float width = 1.0f;  // stroke width multiplier: the per-point widths of vector strokes
-};
-
-struct ScreenPath {
-    LineType type = LineType::Silhouette;
-    bool closed = false;   // a whole loop, entirely visible
-    bool visible = true;
-    size_t source = 0;     // index of the LinePath it came from
-    std::vector<ScreenSample> samples;
 };
 
 [[nodiscard]] std::vector<ScreenPath> compute_visibility(const std::vector<LinePath>& paths,

@@ -6,8 +6,17 @@
 #include "geometry/welded_mesh.h"
 #include "lines/chaining.h"
 #include "lines/extract_reference.h"
+#include "stroke/modifiers.h"
 
 namespace lw {
+
+std::vector<SvgGroup> line_set_svg_groups(const LinesDesc& lines, const Frame& frame) {
+    std::vector<SvgGroup> groups;
+    for (const LineSetDesc& set : effective_line_sets(lines))
+        groups.push_back({.id = set.name, .color = set.style.color, .width = set.style.width});
+    for (const LineSetFrame& set : frame.sets) groups[set.set].paths = &set.paths;
+    return groups;
+}
 
 FrameRenderer::FrameRenderer(const Context& ctx, uint32_t width, uint32_t height, VkFormat color_format)
     : ctx_(&ctx),
@@ -39,9 +48,21 @@ void FrameRenderer::deform(const TriangleMesh& posed) {
     if (!extraction_on_host_) extractor_.set_mesh(*line_mesh_);
 }
 
-void FrameRenderer::set_slam(LineType type, const Slam& slam) {
-    slams_[size_t(type)] = std::make_unique<SlamTexture>(*ctx_, slam);
-    if (!stroke_pass_) stroke_pass_ = std::make_unique<StrokePass>(*ctx_, target_.color.format());
+FrameRenderer::SetState& FrameRenderer::set_state(size_t set) {
+    if (sets_.size() <= set) sets_.resize(set + 1);
+    return sets_[set];
+}
+
+void FrameRenderer::set_slam(size_t set, const Slam& slam) {
+    SetState& state = set_state(set);
+    state.slam = slam;
+    state.texture = std::make_unique<SlamTexture>(*ctx_, slam);
+}
+
+void FrameRenderer::clear_slam(size_t set) {
+    if (set >= sets_.size()) return;
+    sets_[set].slam.reset();
+    sets_[set].texture.reset();
 }
 
 void FrameRenderer::resize(uint32_t width, uint32_t height) {
@@ -52,28 +73,34 @@ void FrameRenderer::resize(uint32_t width, uint32_t height) {
                                      .purpose = MemoryPurpose::Readback, .name = "depth readback"});
     color_readback_ = Buffer(*ctx_, {.size = VkDeviceSize(width) * height * 4, .usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                                      .purpose = MemoryPurpose::Readback, .name = "color readback"});
-    tracker_.reset();
+    for (SetState& state : sets_) state.tracker.reset();
     if (layers_) layers_ = std::make_unique<LayerPass>(*ctx_, width, height, layer_styles_);
 }
 
 void FrameRenderer::set_layers(std::vector<LayerStyle> styles) {
     layer_styles_ = styles;
     layers_ = std::make_unique<LayerPass>(*ctx_, target_.width, target_.height, std::move(styles));
-    if (!stroke_pass_) stroke_pass_ = std::make_unique<StrokePass>(*ctx_, target_.color.format());
 }
 
 FrameRenderer::CoherenceSnapshot FrameRenderer::coherence_snapshot() const {
     CoherenceSnapshot snapshot;
-    if (tracker_) snapshot.lines = tracker_->state();
+    for (const SetState& state : sets_)
+        snapshot.sets.push_back(state.tracker ? std::optional(state.tracker->state()) : std::nullopt);
     if (layers_) snapshot.layers = layers_->states();
     return snapshot;
 }
 
 void FrameRenderer::restore_coherence(const CoherenceSnapshot& snapshot) {
-    if (snapshot.lines) {
-        if (!tracker_) tracker_ = std::make_unique<CoherenceTracker>(*ctx_, target_.width, target_.height);
-        tracker_->restore(*snapshot.lines, line_mesh_ ? SurfaceFrame{&line_mesh_->mesh.positions, &line_mesh_->mesh.faces}
-                                                      : SurfaceFrame{});
+    const SurfaceFrame surface =
+        line_mesh_ ? SurfaceFrame{&line_mesh_->mesh.positions, &line_mesh_->mesh.faces} : SurfaceFrame{};
+    for (size_t i = 0; i < snapshot.sets.size(); ++i) {
+        SetState& state = set_state(i);
+        if (!snapshot.sets[i]) {
+            state.tracker.reset();
+            continue;
+        }
+        if (!state.tracker) state.tracker = std::make_unique<CoherenceTracker>(*ctx_, target_.width, target_.height);
+        state.tracker->restore(*snapshot.sets[i], surface);
     }
     if (layers_) layers_->restore(snapshot.layers);
 }
@@ -83,6 +110,8 @@ Frame FrameRenderer::render(const CameraMatrices& camera, const glm::vec3& eye, 
                             std::vector<LayerFrame>* layers) {
     if (!mesh_ && !layers_) throw Error("FrameRenderer: no mesh and no layers set");
     const bool draw_lines = lines.enabled && line_mesh_.has_value();
+    const std::vector<LineSetDesc> sets = effective_line_sets(lines);
+    const LineParams extraction = extraction_params(lines, sets);
     Timer total;
     Frame frame;
     const VkDeviceSize pixels = VkDeviceSize(target_.width) * target_.height;
@@ -102,14 +131,14 @@ Frame FrameRenderer::render(const CameraMatrices& camera, const glm::vec3& eye, 
             else
                 surface_pass_.record_clear(cmd, target_, surface);
             timer_.end(cmd);
-            if (draw_lines && !host_extraction) extractor_.record(cmd, eye, lines.params, &timer_);
+            if (draw_lines && !host_extraction) extractor_.record(cmd, eye, extraction, &timer_);
             if (draw_lines || outputs.depth) record_image_to_buffer(cmd, target_.depth, depth_readback);
             record_memory_barrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                                   VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
         });
         if (host_extraction) {
             Timer extract;
-            frame.segments = extract_lines_reference(*line_mesh_, eye, lines.params);
+            frame.segments = extract_lines_reference(*line_mesh_, eye, extraction);
             frame.timings.extract_ms = extract.elapsed_ms();
         }
         surface_work.wait();
@@ -121,7 +150,8 @@ Frame FrameRenderer::render(const CameraMatrices& camera, const glm::vec3& eye, 
     const std::span<const float> depth_pixels(static_cast<const float*>(depth_readback.mapped()), pixels);
     if (outputs.depth) frame.image.depth.assign(depth_pixels.begin(), depth_pixels.end());
 
-    // Chaining and visibility on the CPU.
+    // Chaining and visibility on the CPU; then each line set's selection and parameterization.
+    std::vector<std::vector<StrokeVertex>> strokes(sets.size());
     if (draw_lines) {
         Timer chain;
         frame.paths = chain_segments(frame.segments);
@@ -130,19 +160,7 @@ Frame FrameRenderer::render(const CameraMatrices& camera, const glm::vec3& eye, 
         const DepthImage depth{int(target_.width), int(target_.height), depth_pixels, camera.znear, camera.zfar};
         frame.screen_paths = compute_visibility(frame.paths, camera, depth, {.sample_spacing_px = lines.sample_spacing_px});
         frame.timings.visibility_ms = visibility.elapsed_ms();
-    }
-
-    // Coherent parameterization of the visible paths (§4), for strokes and dumps.
-    if (draw_lines && coherence) {
-        if (!tracker_) tracker_ = std::make_unique<CoherenceTracker>(*ctx_, target_.width, target_.height);
-        Timer param_timer;
-        frame.params = tracker_->update(frame.screen_paths, camera,
-                                        {&line_mesh_->mesh.positions, &line_mesh_->mesh.faces}, *coherence);
-        // Strokes and dumps use samples at fixed texture phases (see resample_at_phase).
-        for (size_t p = 0; p < frame.screen_paths.size(); ++p)
-            if (frame.screen_paths[p].visible)
-                frame.screen_paths[p] = resample_at_phase(frame.screen_paths[p], frame.params[p], lines.sample_spacing_px);
-        frame.timings.coherence_ms = param_timer.elapsed_ms();
+        prepare_sets(frame, sets, lines, camera, depth, coherence, strokes);
     }
 
     // Vector layers: their own trackers and stroke geometry.
@@ -151,40 +169,17 @@ Frame FrameRenderer::render(const CameraMatrices& camera, const glm::vec3& eye, 
         frame.layers = layers_->prepare(*layers, coherence != nullptr, lines.sample_spacing_px);
         frame.timings.coherence_ms += layer_timer.elapsed_ms();
     }
+    if (!stroke_pass_ && (layers_ || !strokes.empty())) stroke_pass_ = std::make_unique<StrokePass>(*ctx_, target_.color.format());
 
-    // Stroke geometry per SLAM-styled type; the other types stay plain lines.
-    LinesDesc plain = lines;
-    std::array<std::vector<StrokeVertex>, kLineTypeCount> strokes;
-    if (draw_lines && !frame.params.empty())
-        for (size_t p = 0; p < frame.screen_paths.size(); ++p) {
-            const ScreenPath& path = frame.screen_paths[p];
-            const auto t = size_t(path.type);
-            if (!slams_[t] || !path.visible || !line_type_enabled(lines.params, path.type)) continue;
-            const LineStyle& style = lines.styles[t];
-            append_stroke(path,
-                          StrokeParams{.rho = frame.params[p].rho, .phi = frame.params[p].phi,
-                                       .fold = frame.params[p].fold, .width = style.width, .color = style.color,
-                                       .taper_px = style.taper_px},
-                          strokes[t]);
-        }
-    for (int t = 0; t < kLineTypeCount; ++t) {
-        if (slams_[size_t(t)] && !frame.params.empty()) disable_line_type(plain.params, LineType(t));
-        // Ribbon styles are synthesized over the finished frame (ribbon/ribbon_strokes.h).
-        if (!lines.styles[size_t(t)].ribbon.empty()) disable_line_type(plain.params, LineType(t));
-    }
-
-    // (2) Lines and strokes over the surface, colour read back. Vertex buffers must outlive
-    // the submission.
-    Buffer quads;
-    std::array<Buffer, kLineTypeCount> stroke_buffers;
-    std::vector<Buffer> layer_buffers;
+    // (2) Line sets in order, then layers, over the surface; colour read back. Vertex
+    // buffers must outlive the submission.
+    std::vector<Buffer> buffers;
     ctx_->submit_and_wait([&](VkCommandBuffer cmd) {
         timer_.reset(cmd);
         timer_.begin(cmd, "lines draw");
-        if (draw_lines) quads = line_pass_.record(*ctx_, cmd, target_, frame.screen_paths, plain);
-        for (size_t t = 0; t < strokes.size(); ++t)
-            if (!strokes[t].empty()) stroke_buffers[t] = stroke_pass_->record(*ctx_, cmd, target_, strokes[t], *slams_[t]);
-        if (layers_ && layers) layer_buffers = layers_->record(*ctx_, cmd, target_, *stroke_pass_);
+        if (draw_lines) record_sets(cmd, frame, sets, lines, strokes, buffers);
+        if (layers_ && layers)
+            for (Buffer& b : layers_->record(*ctx_, cmd, target_, *stroke_pass_)) buffers.push_back(std::move(b));
         timer_.end(cmd);
         if (outputs.color) record_image_to_buffer(cmd, target_.color, color_readback);
         record_memory_barrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
@@ -196,6 +191,73 @@ Frame FrameRenderer::render(const CameraMatrices& camera, const glm::vec3& eye, 
     }
     frame.timings.total_ms = total.elapsed_ms();
     return frame;
+}
+
+void FrameRenderer::prepare_sets(Frame& frame, const std::vector<LineSetDesc>& sets, const LinesDesc& lines,
+                                 const CameraMatrices& camera, const DepthImage& depth,
+                                 const CoherenceParams* coherence, std::vector<std::vector<StrokeVertex>>& strokes) {
+    Timer param_timer;
+    const SurfaceFrame surface{&line_mesh_->mesh.positions, &line_mesh_->mesh.faces};
+    const FaceGroups* groups = groups_.face_group.empty() ? nullptr : &groups_;
+    for (size_t i = 0; i < sets.size(); ++i) {
+        const LineSetDesc& set = sets[i];
+        if (!set.enabled) continue;
+        SetState& state = set_state(i);
+        LineSetFrame out{.name = set.name, .set = i};
+        out.coherence = line_set_coherence(coherence ? *coherence : CoherenceParams{}, set,
+                                           state.slam ? &*state.slam : nullptr, lines.sample_spacing_px);
+        // A set with its own spacing samples the paths at that spacing.
+        const float spacing = set.coherence.sample_spacing_px > 0.0f ? set.coherence.sample_spacing_px
+                                                                     : lines.sample_spacing_px;
+        out.paths = spacing == lines.sample_spacing_px
+                        ? select_line_set(frame.screen_paths, set, groups)
+                        : select_line_set(compute_visibility(frame.paths, camera, depth, {.sample_spacing_px = spacing}),
+                                          set, groups);
+        const bool textured = state.texture != nullptr || needs_parameterization(set.style);
+        if (coherence) {
+            if (!state.tracker) state.tracker = std::make_unique<CoherenceTracker>(*ctx_, target_.width, target_.height);
+            out.params = state.tracker->update(out.paths, camera, surface, out.coherence);
+            // Strokes and dumps use samples at fixed texture phases (see resample_at_phase).
+            for (size_t p = 0; p < out.paths.size(); ++p)
+                if (out.paths[p].visible) out.paths[p] = resample_at_phase(out.paths[p], out.params[p], spacing);
+        }
+        if (!set.style.ribbon.empty() || (is_plain_line_set(set.style) && !state.texture)) {
+            frame.sets.push_back(std::move(out));
+            continue;  // ribbons are synthesized over the read-back frame; plain sets by the line pass
+        }
+        const std::vector<PathParam> tiled = tiling_params(out.paths, out.coherence);
+        for (size_t p = 0; p < out.paths.size(); ++p) {
+            // Hidden runs have no fit: they tile.
+            const PathParam& param = !out.params.empty() && out.paths[p].visible ? out.params[p] : tiled[p];
+            const StrokeParams stroke{.rho = param.rho, .phi = param.phi, .fold = textured ? param.fold : SlamFold{},
+                                      .width = set.style.width, .color = set.style.color};
+            append_styled_stroke(out.paths[p], stroke, set.style, period_px(out.coherence), strokes[i]);
+        }
+        frame.sets.push_back(std::move(out));
+    }
+    frame.timings.coherence_ms = param_timer.elapsed_ms();
+}
+
+void FrameRenderer::record_sets(VkCommandBuffer cmd, const Frame& frame, const std::vector<LineSetDesc>& sets,
+                                const LinesDesc& lines, const std::vector<std::vector<StrokeVertex>>& strokes,
+                                std::vector<Buffer>& keep_alive) {
+    for (const LineSetFrame& out : frame.sets) {
+        const LineSetDesc& set = sets[out.set];
+        const SetState& state = sets_[out.set];
+        if (!set.style.ribbon.empty()) continue;
+        if (!strokes[out.set].empty()) {
+            if (!solid_) solid_ = std::make_unique<SlamTexture>(*ctx_, solid_slam());
+            keep_alive.push_back(stroke_pass_->record(*ctx_, cmd, target_, strokes[out.set],
+                                                      state.texture ? *state.texture : *solid_));
+        } else if (is_plain_line_set(set.style) && !state.texture) {
+            // The shorthand keeps the scene's look of hidden runs; sets that select hidden
+            // lines style them themselves.
+            const LineDrawStyle style{.color = set.style.color, .alpha = set.style.alpha, .width = set.style.width,
+                                      .fade = set.style.fade,
+                                      .hidden = lines.sets.empty() ? lines.hidden : HiddenLines::None};
+            keep_alive.push_back(line_pass_.record(*ctx_, cmd, target_, out.paths, style));
+        }
+    }
 }
 
 }  // namespace lw

@@ -1,9 +1,14 @@
 // engine/render/frame_renderer.h — one stylized 3D frame, all stages in order.
 //
 // Input:  a world-space mesh (set once, or again after a deformation), camera matrices and
-//         the eye, the surface style and the scene's `LinesDesc`.
+//         the eye, the surface style and the scene's `LinesDesc` with its line sets.
 // Output: `Frame` — the final image (surface + lines) and depth read back, the visible and
-//         hidden screen paths (for SVG and dumps), and timings per stage.
+//         hidden screen paths, per line set the paths it drew with their parameterization
+//         (for SVG, dumps and ribbons), and timings per stage.
+//
+// Line sets (render/line_sets.h) are drawn in order; each selects its own copy of the runs
+// and, when the frame is parameterized, fits it with its own tracker and coherence
+// parameters (its SLAM's length, its κ) — one set's texture never sets another's period.
 //
 // A frame is two submissions: (1) surface pass + line extraction compute pass, depth and
 // segments read back (on a CPU device the host runs the reference extraction while the
@@ -20,9 +25,11 @@
 #include "gpu/timestamps.h"
 #include "lines/extract_gpu.h"
 #include "lines/line_mesh.h"
+#include "lines/svg_export.h"
 #include "lines/visibility.h"
 #include "render/layer_pass.h"
 #include "render/line_pass.h"
+#include "render/line_sets.h"
 #include "render/surface_pass.h"
 #include "scene/style.h"
 #include "stroke/slam.h"
@@ -51,15 +58,30 @@ struct FrameOutputs {
     bool depth = false;  // the depth buffer (EXR output)
 };
 
+// One line set's share of a frame.
+struct LineSetFrame {
+    std::string name;
+    size_t set = 0;                 // index in effective_line_sets(lines)
+    std::vector<ScreenPath> paths;  // the runs it selected, after its chaining options and its
+                                    // tracker (fragments dropped, merged paths split) and, when
+                                    // parameterized, resampled at fixed texture phases
+    std::vector<PathParam> params;  // per path when the frame was parameterized, else empty
+    CoherenceParams coherence;      // what the set was parameterized with
+};
+
 struct Frame {
     FrameReadback image;
     std::vector<LineSegment> segments;
     std::vector<LinePath> paths;
-    std::vector<ScreenPath> screen_paths;
-    std::vector<PathParam> params;  // per screen path, when strokes are parameterized
+    std::vector<ScreenPath> screen_paths;  // every visible and hidden run, scene spacing
+    std::vector<LineSetFrame> sets;        // per enabled line set, in drawing order
     std::vector<LayerResult> layers;  // per vector layer, when the frame had layers
     FrameTimings timings;
 };
+
+// The frame's lines as SVG groups: one per line set of `lines` (effective_line_sets), in
+// drawing order, with its colour and width; sets that drew nothing are empty groups.
+[[nodiscard]] std::vector<SvgGroup> line_set_svg_groups(const LinesDesc& lines, const Frame& frame);
 
 class FrameRenderer {
 public:
@@ -77,10 +99,14 @@ public:
 
     const LineMesh* line_mesh() const { return line_mesh_ ? &*line_mesh_ : nullptr; }
 
-    // Lines of `type` are drawn as strokes textured with `slam` (others stay plain lines).
-    void set_slam(LineType type, const Slam& slam);
-    // Lines of `type` are drawn plain again (the viewer's per-type style switch).
-    void clear_slam(LineType type) { slams_[size_t(type)].reset(); }
+    // Line set `set` (an index of effective_line_sets) is drawn as strokes textured with
+    // `slam`; for the per-type shorthand the index is the line type's.
+    void set_slam(size_t set, const Slam& slam);
+    // The set is drawn without a texture again (the viewer's style switch).
+    void clear_slam(size_t set);
+
+    // What each welded face belongs to, for line sets that select models or materials.
+    void set_face_groups(FaceGroups groups) { groups_ = std::move(groups); }
 
     // A new image size (a resized window): the target and the readback buffers are made
     // again; the coherence tracker starts afresh (its splat buffer has the old size).
@@ -97,15 +123,16 @@ public:
     // layer), to save beside an offline render and restore when it resumes. Restoring
     // takes the line mesh as it is now: pose it at the saved frame first.
     struct CoherenceSnapshot {
-        std::optional<CoherenceTracker::State> lines;
+        std::vector<std::optional<CoherenceTracker::State>> sets;  // per line set
         std::vector<std::optional<CoherenceTracker::State>> layers;
     };
     [[nodiscard]] CoherenceSnapshot coherence_snapshot() const;
     void restore_coherence(const CoherenceSnapshot& snapshot);
 
-    // One frame. With `coherence`, every visible path is parameterized (§4: votes from the
-    // previous frame, RANSAC, splat for the next one) — call it for consecutive frames in
-    // order — and stroked where a SLAM is set; without, lines are drawn plain. `layers`:
+    // One frame. With `coherence` (the base parameters: policy, splat radius, RANSAC), every
+    // set's visible paths are parameterized (§4: votes from the previous frame, RANSAC,
+    // splat for the next one) — call it for consecutive frames in order; without, sets that
+    // need a parameter (SLAM, dashes, displacement) tile at T = s·κ/Lmax. `layers`:
     // this frame of each layer given to set_layers. Without a mesh (a scene of layers
     // alone) the frame is the background and the layers.
     [[nodiscard]] Frame render(const CameraMatrices& camera, const glm::vec3& eye, const SurfaceStyle& surface,
@@ -123,9 +150,23 @@ private:
     Buffer depth_readback_, color_readback_;  // reused every frame
     std::optional<GpuMesh> mesh_;
     std::optional<LineMesh> line_mesh_;
-    std::unique_ptr<CoherenceTracker> tracker_;  // made on first use: it holds a float target
+    struct SetState {
+        std::unique_ptr<CoherenceTracker> tracker;  // made on first use: it holds a float target
+        std::optional<Slam> slam;                   // its length and height set κ and Lmax
+        std::unique_ptr<SlamTexture> texture;
+    };
+    SetState& set_state(size_t set);
+    // Per set: select, parameterize, build stroke geometry (StrokeVertex) for non-plain sets.
+    void prepare_sets(Frame& frame, const std::vector<LineSetDesc>& sets, const LinesDesc& lines,
+                      const CameraMatrices& camera, const DepthImage& depth, const CoherenceParams* coherence,
+                      std::vector<std::vector<StrokeVertex>>& strokes);
+    void record_sets(VkCommandBuffer cmd, const Frame& frame, const std::vector<LineSetDesc>& sets,
+                     const LinesDesc& lines, const std::vector<std::vector<StrokeVertex>>& strokes,
+                     std::vector<Buffer>& keep_alive);
+    std::vector<SetState> sets_;
+    FaceGroups groups_;
     std::unique_ptr<StrokePass> stroke_pass_;
-    std::array<std::unique_ptr<SlamTexture>, kLineTypeCount> slams_;
+    std::unique_ptr<SlamTexture> solid_;  // styled sets without a SLAM
     std::unique_ptr<LayerPass> layers_;
     std::vector<LayerStyle> layer_styles_;  // to make layers_ again on resize
 };

@@ -4,17 +4,6 @@
 
 namespace lw {
 
-namespace {
-
-// Two levels of full ink: a SLAM that draws every fragment at the stroke's colour.
-Slam solid_slam() {
-    Slam slam{.levels = 2, .length = 4, .height = 2, .exemplar = "procedural:solid"};
-    slam.ink.assign(size_t(slam.levels) * slam.length * slam.height, 1.0f);
-    return slam;
-}
-
-}  // namespace
-
 LayerPass::LayerPass(const Context& ctx, uint32_t width, uint32_t height, std::vector<LayerStyle> styles)
     : solid_(std::make_unique<SlamTexture>(ctx, solid_slam())) {
     for (LayerStyle& style : styles) {

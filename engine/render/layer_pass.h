@@ -17,7 +17,7 @@
 
 #include "coherence/coherence.h"
 #include "gpu/context.h"
-#include "render/render_target.h"
+#include "gpu/render_target.h"
 #include "stroke/slam.h"
 #include "stroke/slam_texture.h"
 #include "stroke/stroke_pass.h"

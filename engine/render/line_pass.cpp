@@ -50,16 +50,13 @@ std::vector<size_t> simplify(const ScreenPath& path, float tolerance = 0.25f) {
 
 // Two triangles per segment of each run, extended by half the width at both ends (square
 // caps) so that neighbouring quads cover the joint.
-std::vector<LineVertex> build_quads(const std::vector<ScreenPath>& paths, const LinesDesc& style) {
+std::vector<LineVertex> build_quads(const std::vector<ScreenPath>& paths, const LineDrawStyle& style) {
     std::vector<LineVertex> vertices;
     for (const ScreenPath& path : paths) {
-        const auto t = static_cast<size_t>(path.type);
-        if (!line_type_enabled(style.params, path.type)) continue;
-        if (!path.visible && style.hidden == HiddenLines::None) continue;
-        const LineStyle& ls = style.styles[t];
         const float faint = path.visible || style.hidden != HiddenLines::Faint ? 1.0f : 0.25f;
         const float dashed = !path.visible && style.hidden == HiddenLines::Dashed ? 1.0f : 0.0f;
-        const float width = path.visible ? ls.width : std::max(1.0f, 0.6f * ls.width);
+        const float width = path.visible || style.hidden == HiddenLines::None ? style.width
+                                                                              : std::max(1.0f, 0.6f * style.width);
         // Draw through the samples that matter: a sample is skipped while the polyline from
         // the last kept one stays within 0.25 px of a straight line and the alpha barely
         // changes. Visibility samples every δ px are far denser than straight runs need,
@@ -76,7 +73,9 @@ std::vector<LineVertex> build_quads(const std::vector<ScreenPath>& paths, const 
             dir /= length;
             const glm::vec2 side = glm::vec2(-dir.y, dir.x) * (0.5f * width);
             const glm::vec2 cap = dir * (0.5f * width);
-            const glm::vec4 ca(ls.color, a.alpha * faint), cb(ls.color, b.alpha * faint);
+            const float alpha_a = style.alpha * (style.fade ? a.alpha : 1.0f) * faint;
+            const float alpha_b = style.alpha * (style.fade ? b.alpha : 1.0f) * faint;
+            const glm::vec4 ca(style.color, alpha_a), cb(style.color, alpha_b);
             const LineVertex v0{a.pixel - cap + side, ca, {a.s, dashed}};
             const LineVertex v1{a.pixel - cap - side, ca, {a.s, dashed}};
             const LineVertex v2{b.pixel + cap + side, cb, {a.s + length, dashed}};
@@ -107,7 +106,7 @@ LinePass::LinePass(const Context& ctx, VkFormat color_format)
                       .name = "lines draw"}) {}
 
 Buffer LinePass::record(const Context& ctx, VkCommandBuffer cmd, RenderTarget& target,
-                        const std::vector<ScreenPath>& paths, const LinesDesc& style) const {
+                        const std::vector<ScreenPath>& paths, const LineDrawStyle& style) const {
     const std::vector<LineVertex> vertices = build_quads(paths, style);
     if (vertices.empty()) return Buffer();
     Buffer buffer = upload_vertices(ctx, std::as_bytes(std::span(vertices)), "line quads");

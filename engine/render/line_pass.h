@@ -1,7 +1,8 @@
 // engine/render/line_pass.h — draws screen-space paths as flat quads over the colour target.
 //
-// Input:  `ScreenPath`s from the visibility stage and the scene's `LinesDesc`: a style per
-//         line type, which types are on, what to do with hidden runs (skip, dashed, faint).
+// Input:  the `ScreenPath`s of one plain line set (render/line_sets.h) and its draw style:
+//         colour, alpha, width, whether the fade alpha applies, and the look of hidden runs
+//         (dashed or faint, the scene's "hidden"; plain for sets that select hidden lines).
 // Output: the paths composited (alpha blended, fade alpha per sample) into the render
 //         target's colour image, which is left in TRANSFER_SRC_OPTIMAL as the surface pass
 //         leaves it.
@@ -22,6 +23,14 @@
 
 namespace lw {
 
+struct LineDrawStyle {
+    glm::vec3 color{0.0f};
+    float alpha = 1.0f;
+    float width = 2.5f;
+    bool fade = true;                         // multiply by each sample's fade alpha
+    HiddenLines hidden = HiddenLines::None;   // hidden runs: None draws them as visible ones
+};
+
 class LinePass {
 public:
     explicit LinePass(const Context& ctx, VkFormat color_format = VK_FORMAT_R8G8B8A8_UNORM);
@@ -29,7 +38,7 @@ public:
     // Builds the quads of `paths` and records their drawing; the returned buffer must live
     // until the command buffer has completed.
     [[nodiscard]] Buffer record(const Context& ctx, VkCommandBuffer cmd, RenderTarget& target,
-                                const std::vector<ScreenPath>& paths, const LinesDesc& style) const;
+                                const std::vector<ScreenPath>& paths, const LineDrawStyle& style) const;
 
 private:
     GraphicsPipeline pipeline_;

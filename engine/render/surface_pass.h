@@ -20,7 +20,7 @@
 #include "gpu/pipeline.h"
 #include "gpu/resources.h"
 #include "gpu/timestamps.h"
-#include "render/render_target.h"
+#include "gpu/render_target.h"
 #include "scene/camera.h"
 #include "scene/style.h"
 #include "scene/triangle_mesh.h"

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "core/error.h"
-#include "render/render_target.h"
+#include "gpu/render_target.h"
 #include "ribbon_avoid_frag.h"
 #include "ribbon_draw_frag.h"
 #include "ribbon_draw_vert.h"

@@ -371,6 +371,7 @@ Model load_gltf(const std::filesystem::path& path) {
     model.roots = gltf_detail::scene_roots(source);
 
     for (size_t s = 0; s < doc.skins.size(); ++s) model.skins.push_back(gltf_detail::convert_skin(source, s));
+    for (const tinygltf::Material& material : doc.materials) model.material_names.push_back(material.name);
     check_joint_indices(source, model);
     for (size_t a = 0; a < doc.animations.size(); ++a)
         model.animations.push_back(gltf_detail::convert_animation(source, a));

@@ -101,6 +101,7 @@ struct Model {
     std::vector<Camera> cameras;
     std::vector<Animation> animations;
     std::vector<Skin> skins;
+    std::vector<std::string> material_names;  // per glTF material ("" when unnamed)
 };
 
 // Loads and validates a .gltf or .glb file. Throws lw::Error naming the file and the problem.

@@ -12,6 +12,7 @@ void append_mesh(TriangleMesh& mesh, const TriangleMesh& part) {
     mesh.normals.insert(mesh.normals.end(), part.normals.begin(), part.normals.end());
     mesh.indices.reserve(mesh.indices.size() + part.indices.size());
     for (uint32_t i : part.indices) mesh.indices.push_back(i + offset);
+    mesh.face_material.insert(mesh.face_material.end(), part.face_material.begin(), part.face_material.end());
 }
 
 LoadedScene load_scene(const SceneDesc& desc) {
@@ -22,7 +23,9 @@ LoadedScene load_scene(const SceneDesc& desc) {
         const Model& model = scene.models.back();
         // The rest pose, skinned: a skinned mesh's node transform does not place it (glTF 2.0
         // §3.7.3), its joints do — RobotExpressive's hands sit at its wrists only so.
+        const size_t before = scene.mesh.triangle_count();
         append_mesh(scene.mesh, flatten_posed(model, rest_pose(model)));
+        scene.model_triangles.push_back(scene.mesh.triangle_count() - before);
     }
     if (scene.mesh.indices.empty()) throw Error(desc.models.front().string() + ": no triangles to draw");
     scene.bounds = compute_bounds(scene.mesh.positions);

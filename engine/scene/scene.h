@@ -20,6 +20,7 @@ struct LoadedScene {
     SceneDesc desc;
     std::vector<Model> models;
     TriangleMesh mesh;
+    std::vector<size_t> model_triangles;  // triangles of each model, in mesh order
     Bounds bounds;
     ViewCamera camera;
 };

@@ -19,7 +19,7 @@
 #include "scene/camera.h"
 #include "scene/camera_path.h"
 #include "scene/style.h"
-#include "vector/layer.h"
+#include "scene/layer_desc.h"
 
 namespace lw {
 

@@ -4,8 +4,12 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include <glm/glm.hpp>
+
+#include "types/line_set.h"
+#include "types/line_type.h"
 
 namespace lw {
 
@@ -40,47 +44,6 @@ enum class HiddenLines { None, Dashed, Faint };
 
 namespace lw {
 
-enum class LineType : uint32_t { Silhouette = 0, Suggestive = 1, Crease = 2, Border = 3 };
-constexpr int kLineTypeCount = 4;
-
-// "silhouette", "suggestive", "crease", "border": SVG group ids and scene-file keys.
-inline const char* line_type_name(LineType type) {
-    constexpr const char* names[kLineTypeCount] = {"silhouette", "suggestive", "crease", "border"};
-    return names[static_cast<uint32_t>(type) % kLineTypeCount];
-}
-
-// Thresholds and switches of the feature-line extraction, as rtsc defines them
-// (DESIGN.md "Line extraction as rtsc does it"; docs/research/rtsc-lines.md).
-struct LineParams {
-    bool silhouettes = true;
-    bool suggestive = true;
-    bool creases = true;
-    bool borders = true;
-    float sug_thresh = 0.01f;        // tanθ·DwKr threshold, scaled by 1 / feature_size²
-    bool fade = true;                // fade suggestive contours in as the test grows
-    float fade_thresh = 0.03f;       // alpha = t / (t + fade_thresh / fs²)
-    float crease_angle_deg = 45.0f;  // creases where face normals turn by more than this
-};
-
-inline bool line_type_enabled(const LineParams& p, LineType type) {
-    switch (type) {
-        case LineType::Silhouette: return p.silhouettes;
-        case LineType::Suggestive: return p.suggestive;
-        case LineType::Crease: return p.creases;
-        case LineType::Border: return p.borders;
-    }
-    return false;
-}
-
-inline void disable_line_type(LineParams& p, LineType type) {
-    switch (type) {
-        case LineType::Silhouette: p.silhouettes = false; break;
-        case LineType::Suggestive: p.suggestive = false; break;
-        case LineType::Crease: p.creases = false; break;
-        case LineType::Border: p.borders = false; break;
-    }
-}
-
 // Everything about lines a scene file sets.
 struct LinesDesc {
     bool enabled = true;  // extract and draw lines at all
@@ -90,6 +53,10 @@ struct LinesDesc {
         LineStyle{1.5f, glm::vec3(0.15f), "", 0.0f}, LineStyle{1.5f, glm::vec3(0.15f), "", 0.0f}};
     HiddenLines hidden = HiddenLines::None;
     float sample_spacing_px = 2.0f;  // δ of the visibility stage
+    // "line_sets" of the scene file, drawn in order. Empty: `styles` and `params` are the
+    // per-type shorthand, one set per type (render/line_sets.h, effective_line_sets).
+    std::vector<LineSetDesc> sets;
+    float length_scale = 0.0f;  // κ of the shorthand's sets (0: square texels)
 };
 
 }  // namespace lw

@@ -24,6 +24,7 @@ struct TriangleMesh {
     std::vector<glm::vec3> positions;
     std::vector<glm::vec3> normals;   // same size as positions, unit length
     std::vector<uint32_t> indices;    // 3 per triangle
+    std::vector<int32_t> face_material;  // per triangle: its primitive's glTF material, -1 for none
 
     size_t triangle_count() const { return indices.size() / 3; }
 };

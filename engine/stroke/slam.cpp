@@ -134,4 +134,10 @@ float slam_max_level_step(const Slam& slam) {
     return worst;
 }
 
+Slam solid_slam() {
+    Slam slam{.levels = 2, .length = 4, .height = 2, .exemplar = "procedural:solid"};
+    slam.ink.assign(size_t(slam.levels) * slam.length * slam.height, 1.0f);
+    return slam;
+}
+
 }  // namespace lw

@@ -47,4 +47,8 @@ enum class SlamPattern { Dots, Dashes, Pencil };
 // Largest |A_l[x] − A_{l+1}[x]| between adjacent levels (smooth variation).
 [[nodiscard]] float slam_max_level_step(const Slam& slam);
 
+// Two levels of full ink: a SLAM that draws every fragment at the stroke's colour (fills,
+// solid layer strokes, styled line sets without a texture).
+[[nodiscard]] Slam solid_slam();
+
 }  // namespace lw

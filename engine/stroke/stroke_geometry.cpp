@@ -1,6 +1,7 @@
 #include "stroke/stroke_geometry.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace lw {
 
@@ -10,6 +11,196 @@ glm::vec2 unit_normal(glm::vec2 a, glm::vec2 b) {
     const glm::vec2 d = b - a;
     const float len = glm::length(d);
     return len > 0.0f ? glm::vec2(-d.y, d.x) / len : glm::vec2(0.0f);
+}
+
+
+// ---- The line-set builder (caps, joins, per-sample attributes) ----
+
+constexpr float kPi = 3.14159265358979f;
+constexpr float kMergePx = 1e-4f;         // closer samples are one node
+constexpr float kDotLengthPx = 1.0f;      // at most this much arc length draws a dot
+constexpr float kStraightCos = 0.99985f;  // cos 1°: straighter turns need no round-join fan
+constexpr int kHalfDiscSegments = 16;
+
+glm::vec2 unit_or_zero(glm::vec2 d) {
+    const float len = glm::length(d);
+    return len > 0.0f ? d / len : glm::vec2(0.0f);
+}
+// The normal convention of unit_normal: (−dy, dx), the v = 0 side.
+glm::vec2 perp(glm::vec2 d) { return {-d.y, d.x}; }
+glm::vec2 rotate(glm::vec2 v, float angle) {
+    const float c = std::cos(angle), s = std::sin(angle);
+    return {c * v.x - s * v.y, s * v.x + c * v.y};
+}
+float cross(glm::vec2 a, glm::vec2 b) { return a.x * b.y - a.y * b.x; }
+
+// One sample after coincident samples are merged.
+struct Node {
+    glm::vec2 p;
+    float s;
+    float half;  // half width, pixels
+    glm::vec4 color;
+    glm::vec2 d_in{0.0f}, d_out{0.0f};  // unit directions of the adjacent segments; 0 at open ends
+};
+
+std::vector<Node> make_nodes(const ScreenPath& path, const StrokeAttributes& attributes) {
+    std::vector<Node> nodes;
+    for (size_t i = 0; i < path.samples.size(); ++i) {
+        const ScreenSample& q = path.samples[i];
+        if (!nodes.empty() && glm::length(q.pixel - nodes.back().p) <= kMergePx) continue;
+        nodes.push_back({q.pixel, q.s, 0.5f * std::max(attributes.width[i], 0.0f),
+                         glm::vec4(attributes.color[i], attributes.alpha[i])});
+    }
+    if (path.closed)
+        while (nodes.size() > 1 && glm::length(nodes.back().p - nodes.front().p) <= kMergePx) nodes.pop_back();
+    const size_t n = nodes.size();
+    const size_t segments = n < 2 ? 0 : path.closed ? n : n - 1;
+    for (size_t i = 0; i < segments; ++i) {
+        const size_t j = (i + 1) % n;
+        nodes[i].d_out = nodes[j].d_in = unit_or_zero(nodes[j].p - nodes[i].p);
+    }
+    return nodes;
+}
+
+float polyline_length(const std::vector<Node>& nodes, bool closed) {
+    float length = 0.0f;
+    for (size_t i = 1; i < nodes.size(); ++i) length += glm::length(nodes[i].p - nodes[i - 1].p);
+    if (closed && nodes.size() > 1) length += glm::length(nodes.front().p - nodes.back().p);
+    return length;
+}
+
+struct Emitter {
+    const StrokeParams& params;
+    std::vector<StrokeVertex>& out;
+
+    StrokeVertex at(glm::vec2 pixel, float s, float v, glm::vec4 color) const {
+        const float u = params.fold.scale * (params.rho * s + params.phi);
+        return {pixel, glm::vec3(u, v, params.fold.w), color};
+    }
+    // Off an end along tangent t: s continues along t, v follows the offset across (0.5 at
+    // the centre, 0 at +half·perp(t), 1 at −half·perp(t)).
+    StrokeVertex off_end(const Node& nd, glm::vec2 t, glm::vec2 offset) const {
+        const float across = nd.half > 0.0f ? glm::dot(offset, perp(t)) / nd.half : 0.0f;
+        return at(nd.p + offset, nd.s + glm::dot(offset, t), std::clamp(0.5f - 0.5f * across, 0.0f, 1.0f), nd.color);
+    }
+    void triangle(const StrokeVertex& a, const StrokeVertex& b, const StrokeVertex& c) {
+        out.insert(out.end(), {a, b, c});
+    }
+    // Triangles around `centre` whose rim turns from offset `from` by `sweep` radians and ends
+    // exactly at `to` (so that it meets the neighbouring quads' vertices bit for bit).
+    template <class Rim>
+    void fan(const StrokeVertex& centre, glm::vec2 from, glm::vec2 to, float sweep, int segments, Rim&& rim) {
+        StrokeVertex prev = rim(from);
+        for (int k = 1; k <= segments; ++k) {
+            const StrokeVertex next = k == segments ? rim(to) : rim(rotate(from, sweep * float(k) / float(segments)));
+            triangle(centre, prev, next);
+            prev = next;
+        }
+    }
+};
+
+// Where a node's incoming and outgoing quads end, as offsets from its centre. Mitre joins
+// (and the inner side of round joins) share one clamped mitre point; a round join's outer
+// side ends each quad square to its own segment and a fan fills the wedge between.
+struct JoinEnds {
+    glm::vec2 in_plus, in_minus, out_plus, out_minus;
+    int outer = 0;  // +1: a round-join fan on the v = 0 side, −1: on the v = 1 side, 0: none
+};
+
+// Today's mitre (append_stroke above), except that a full reversal keeps the half width.
+glm::vec2 mitre_offset(const Node& nd, float limit) {
+    const glm::vec2 n_in = perp(nd.d_in), n_out = perp(nd.d_out);
+    const glm::vec2 reference = glm::length(n_out) > 0.0f ? n_out : n_in;
+    glm::vec2 mitre = n_in + n_out;
+    const float len = glm::length(mitre);
+    if (len <= 1e-6f) return reference * nd.half;
+    mitre /= len;
+    const float cos_half = std::max(glm::dot(mitre, reference), 1e-3f);
+    return mitre * std::min(nd.half / cos_half, limit * nd.half);
+}
+
+JoinEnds join_ends(const Node& nd, Join join, float mitre_limit) {
+    const glm::vec2 m = mitre_offset(nd, mitre_limit);
+    JoinEnds e{m, -m, m, -m, 0};
+    const bool interior = glm::length(nd.d_in) > 0.0f && glm::length(nd.d_out) > 0.0f;
+    if (join != Join::Round || !interior || glm::dot(nd.d_in, nd.d_out) > kStraightCos) return e;
+    // The path turns towards perp(d) when cross(d_in, d_out) > 0: the outer side is the other.
+    e.outer = cross(nd.d_in, nd.d_out) > 0.0f ? -1 : 1;
+    const float o = float(e.outer) * nd.half;
+    (e.outer > 0 ? e.in_plus : e.in_minus) = perp(nd.d_in) * o;
+    (e.outer > 0 ? e.out_plus : e.out_minus) = perp(nd.d_out) * o;
+    return e;
+}
+
+void append_round_join(Emitter& em, const Node& nd, const JoinEnds& e) {
+    const bool plus = e.outer > 0;
+    const float v_outer = plus ? 0.0f : 1.0f;
+    const glm::vec2 from = plus ? e.in_plus : e.in_minus, to = plus ? e.out_plus : e.out_minus;
+    const glm::vec2 inner = plus ? e.in_minus : e.in_plus;
+    auto rim = [&](glm::vec2 offset) { return em.at(nd.p + offset, nd.s, v_outer, nd.color); };
+    const StrokeVertex centre = em.at(nd.p, nd.s, 0.5f, nd.color);
+    const StrokeVertex in = em.at(nd.p + inner, nd.s, 1.0f - v_outer, nd.color);
+    // The centre lies inside (inner, from, to): two triangles close the gap to the fan.
+    em.triangle(in, rim(from), centre);
+    em.triangle(in, centre, rim(to));
+    float sweep = std::atan2(cross(from, to), glm::dot(from, to));
+    // A U-turn has no shorter side: go round ahead of the incoming direction.
+    if (std::abs(sweep) > kPi - 1e-4f) sweep = plus ? -kPi : kPi;
+    const int segments = std::max(1, int(std::ceil(std::abs(sweep) / kPi * float(kHalfDiscSegments))));
+    em.fan(centre, from, to, sweep, segments, rim);
+}
+
+// The cap at an open end: t is the path's forward direction there, ahead = −1 at the start
+// (the cap lies behind it) and +1 at the end.
+void append_cap(Emitter& em, const Node& nd, glm::vec2 t, float ahead, Cap cap) {
+    const glm::vec2 side = perp(t) * nd.half, out = t * (ahead * nd.half);
+    auto rim = [&](glm::vec2 offset) { return em.off_end(nd, t, offset); };
+    if (cap == Cap::Square) {
+        const StrokeVertex a = rim(side), b = rim(-side), c = rim(side + out), d = rim(-side + out);
+        em.triangle(a, b, c);
+        em.triangle(c, b, d);
+    } else if (cap == Cap::Round) {
+        // perp(t) turned by +90° is −t: +π sweeps behind the start, −π ahead of the end.
+        em.fan(rim(glm::vec2(0.0f)), side, -side, ahead < 0.0f ? kPi : -kPi, kHalfDiscSegments, rim);
+    }
+}
+
+// A path with no length to speak of: a disc or square of the widest sample's width at the
+// midpoint of its ends, oriented along its chord (x when it has none).
+void append_dot(Emitter& em, const std::vector<Node>& nodes, Cap cap) {
+    Node centre = nodes[nodes.size() / 2];
+    centre.p = 0.5f * (nodes.front().p + nodes.back().p);
+    centre.s = 0.5f * (nodes.front().s + nodes.back().s);
+    for (const Node& nd : nodes) centre.half = std::max(centre.half, nd.half);
+    const glm::vec2 chord = unit_or_zero(nodes.back().p - nodes.front().p);
+    const glm::vec2 t = glm::length(chord) > 0.0f ? chord : glm::vec2(1.0f, 0.0f);
+    const glm::vec2 side = perp(t) * centre.half;
+    auto rim = [&](glm::vec2 offset) { return em.off_end(centre, t, offset); };
+    if (cap == Cap::Round) {
+        em.fan(rim(glm::vec2(0.0f)), side, side, 2.0f * kPi, 2 * kHalfDiscSegments, rim);
+    } else if (cap == Cap::Square) {
+        const glm::vec2 out = t * centre.half;
+        const StrokeVertex a = rim(side - out), b = rim(-side - out), c = rim(side + out), d = rim(-side + out);
+        em.triangle(a, b, c);
+        em.triangle(c, b, d);
+    }
+}
+
+void append_body(Emitter& em, const std::vector<Node>& nodes, const std::vector<JoinEnds>& ends, bool closed) {
+    const size_t n = nodes.size();
+    const size_t segments = closed ? n : n - 1;
+    for (size_t i = 0; i < segments; ++i) {
+        const size_t j = (i + 1) % n;
+        const Node &a = nodes[i], &b = nodes[j];
+        // The closing segment continues the arclength past the last sample (as above).
+        const float sb = j == 0 ? a.s + glm::length(b.p - a.p) : b.s;
+        const StrokeVertex a_plus = em.at(a.p + ends[i].out_plus, a.s, 0.0f, a.color);
+        const StrokeVertex a_minus = em.at(a.p + ends[i].out_minus, a.s, 1.0f, a.color);
+        const StrokeVertex b_plus = em.at(b.p + ends[j].in_plus, sb, 0.0f, b.color);
+        const StrokeVertex b_minus = em.at(b.p + ends[j].in_minus, sb, 1.0f, b.color);
+        em.triangle(a_plus, a_minus, b_plus);
+        em.triangle(b_plus, a_minus, b_minus);
+    }
 }
 
 }  // namespace
@@ -60,6 +251,31 @@ void append_stroke(const ScreenPath& path, const StrokeParams& params, std::vect
         const StrokeVertex c = vertex(j, true, uj), d = vertex(j, false, uj);
         out.insert(out.end(), {a, b, c, c, b, d});
     }
+}
+
+
+void append_stroke(const ScreenPath& path, const StrokeParams& params, const StrokeAttributes& attributes,
+                   Cap cap, Join join, std::vector<StrokeVertex>& out) {
+    const size_t count = path.samples.size();
+    if (count == 0 || attributes.width.size() != count || attributes.alpha.size() != count ||
+        attributes.color.size() != count)
+        return;
+    const std::vector<Node> nodes = make_nodes(path, attributes);
+    Emitter em{params, out};
+    if (nodes.size() < 2 || polyline_length(nodes, path.closed) <= kDotLengthPx) {
+        // Round caps make a 1-px stroke a disc of its width; butt caps keep their sliver.
+        if (cap != Cap::Butt) return append_dot(em, nodes, cap);
+        if (nodes.size() < 2) return;
+    }
+    std::vector<JoinEnds> ends;
+    ends.reserve(nodes.size());
+    for (const Node& nd : nodes) ends.push_back(join_ends(nd, join, params.mitre_limit));
+    append_body(em, nodes, ends, path.closed);
+    for (size_t i = 0; i < nodes.size(); ++i)
+        if (ends[i].outer != 0) append_round_join(em, nodes[i], ends[i]);
+    if (path.closed) return;
+    append_cap(em, nodes.front(), nodes.front().d_out, -1.0f, cap);
+    append_cap(em, nodes.back(), nodes.back().d_in, 1.0f, cap);
 }
 
 }  // namespace lw

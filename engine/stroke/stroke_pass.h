@@ -9,7 +9,7 @@
 
 #include "gpu/context.h"
 #include "gpu/pipeline.h"
-#include "render/render_target.h"
+#include "gpu/render_target.h"
 #include "stroke/slam_texture.h"
 #include "stroke/stroke_geometry.h"
 

@@ -134,7 +134,7 @@ int run_lines(const BenchOptions& b) {
         // `linework render --slam scenes/slams/dots.exr` draws it.
         const lw::Slam slam = lw::make_procedural_slam(lw::SlamPattern::Dots);
         for (lw::LineType t : {lw::LineType::Silhouette, lw::LineType::Suggestive}) {
-            renderer.set_slam(t, slam);
+            renderer.set_slam(size_t(t), slam);
             lines.styles[size_t(t)].width = 6.0f;
             lines.styles[size_t(t)].taper_px = 12.0f;
         }

@@ -17,6 +17,16 @@ namespace lw::cli {
 
 namespace {
 
+void print_measures(const std::string& what, const std::vector<PathDump>& frames) {
+    const SlidingMeasure sliding = measure_sliding(frames);
+    const StretchMeasure stretch = measure_stretch(frames);
+    std::printf("  %s:\n", what.c_str());
+    std::printf("    sliding: median |dt| %.5f periods over %zu matched sample pairs\n", sliding.median_dt, sliding.pairs);
+    std::printf("    stretch: %.2f %% of %zu samples within [%.1f, %.1f) px per period; median %.1f px\n",
+                100.0 * stretch.share_in_band, stretch.samples, stretch.band_low, 2.0 * stretch.band_low,
+                stretch.median_ds_du);
+}
+
 int run_report(const std::vector<std::string>& folders) {
     for (const std::string& folder : folders) {
         if (!std::filesystem::is_directory(folder)) throw Error(folder + ": no such dump folder");
@@ -28,14 +38,13 @@ int run_report(const std::vector<std::string>& folders) {
         std::sort(files.begin(), files.end());
         std::vector<PathDump> frames;
         for (const auto& file : files) frames.push_back(read_path_dump(file));
-        const SlidingMeasure sliding = measure_sliding(frames);
-        const StretchMeasure stretch = measure_stretch(frames);
         std::printf("%s: %zu frames\n", folder.c_str(), frames.size());
-        std::printf("  sliding: median |dt| %.5f periods over %zu matched sample pairs\n", sliding.median_dt,
-                    sliding.pairs);
-        std::printf("  stretch: %.2f %% of %zu samples within [%.1f, %.1f) px per period; median %.1f px\n",
-                    100.0 * stretch.share_in_band, stretch.samples, stretch.band_low, 2.0 * stretch.band_low,
-                    stretch.median_ds_du);
+        print_measures("all paths", frames);
+        // Per line set: each has its own texture and tracker, so its own period band.
+        const std::vector<std::string> sets = line_sets_in(frames);
+        if (sets.size() > 1)
+            for (const std::string& set : sets)
+                print_measures(set.empty() ? "layers" : "line set " + set, paths_of_line_set(frames, set));
     }
     return 0;
 }

@@ -40,8 +40,9 @@ glm::vec3 parse_vec3(const std::string& text, const std::string& option);
 glm::ivec2 parse_size(const std::string& text, const std::string& option);
 // True when LINEWORK_VALIDATION is set to something other than 0 or empty.
 bool validation_from_environment();
-// --slam FILE --stroke-width W: silhouettes and suggestive contours as SLAM strokes of width
-// W, tapered over 2W (replacing any ribbon style).
+// --slam FILE --stroke-width W: silhouettes and suggestive contours (the shorthand's types,
+// or every line set selecting either) as SLAM strokes of width W, tapered over 2W
+// (replacing any ribbon style).
 void use_slam_strokes(LinesDesc& lines, const std::string& slam, float width);
 // 1 (after one line on stderr) when validation was on and reported anything, else 0.
 int exit_code_after_validation(const Context& ctx, bool validation);

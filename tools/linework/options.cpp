@@ -56,6 +56,15 @@ bool validation_from_environment() {
 }
 
 void use_slam_strokes(LinesDesc& lines, const std::string& slam, float width) {
+    // Line sets: every set that draws silhouettes or suggestive contours.
+    for (LineSetDesc& set : lines.sets)
+        if (set.select.has_type(LineType::Silhouette) || set.select.has_type(LineType::Suggestive)) {
+            set.style.slam = slam;
+            set.style.ribbon.clear();
+            set.style.width = width;
+            set.style.taper_in_px = set.style.taper_out_px = 2.0f * width;
+            set.style.cap = Cap::Butt;
+        }
     for (LineType type : {LineType::Silhouette, LineType::Suggestive}) {
         LineStyle& style = lines.styles[size_t(type)];
         style.slam = slam;

@@ -11,7 +11,7 @@ namespace lw::cli {
 
 namespace {
 
-constexpr char kMagic[8] = {'L', 'W', 'S', 'T', 'A', 'T', 'E', '1'};
+constexpr char kMagic[8] = {'L', 'W', 'S', 'T', 'A', 'T', 'E', '2'}; // 2: one tracker per line set;
 
 class Writer {
 public:
@@ -87,7 +87,8 @@ void write_render_state(const std::filesystem::path& path, const RenderState& st
     w.put(uint32_t(state.signature.size()));
     w.put_bytes(state.signature.data(), state.signature.size());
     w.put(int32_t(state.frame));
-    put_state(w, state.snapshot.lines);
+    w.put(uint32_t(state.snapshot.sets.size()));
+    for (const auto& set : state.snapshot.sets) put_state(w, set);
     w.put(uint32_t(state.snapshot.layers.size()));
     for (const auto& layer : state.snapshot.layers) put_state(w, layer);
     write_atomically(path, [&](const std::filesystem::path& file) {
@@ -109,7 +110,8 @@ RenderState read_render_state(const std::filesystem::path& path) {
     state.signature.resize(r.count(1));
     r.get_bytes(state.signature.data(), state.signature.size());
     state.frame = r.get<int32_t>();
-    state.snapshot.lines = get_state(r);
+    const uint32_t sets = r.count(1);
+    for (uint32_t i = 0; i < sets; ++i) state.snapshot.sets.push_back(get_state(r));
     const uint32_t layers = r.count(1);
     for (uint32_t i = 0; i < layers; ++i) state.snapshot.layers.push_back(get_state(r));
     return state;

@@ -70,13 +70,51 @@ void toggle_type(LineParams& p, LineType type) {
     }
 }
 
-void toggle_strokes(ViewerState& s, int type) {
-    if (!s.slams[size_t(type)]) {
-        s.message = std::string("no SLAM for ") + line_type_name(LineType(type)) + " (--slam or the scene's \"slam\")";
+void toggle_strokes(ViewerState& s, size_t set) {
+    if (set >= s.has_slam.size() || !s.has_slam[set]) {
+        s.message = set < s.set_names.size() ? "no SLAM for " + s.set_names[set] + " (--slam or the scene's \"slam\")"
+                                             : "no line set " + std::to_string(set + 1);
         return;
     }
-    s.strokes[size_t(type)] = !s.strokes[size_t(type)];
+    s.strokes[set] = !s.strokes[set];
     s.slams_changed = true;
+}
+
+// A line set's switch: the shorthand's is its type's, an explicit set's its "enabled".
+bool* set_switch(LinesDesc& lines, size_t set) {
+    if (!lines.sets.empty()) return &lines.sets[set].enabled;
+    switch (LineType(set)) {
+        case LineType::Silhouette: return &lines.params.silhouettes;
+        case LineType::Suggestive: return &lines.params.suggestive;
+        case LineType::Crease: return &lines.params.creases;
+        case LineType::Border: return &lines.params.borders;
+    }
+    return nullptr;
+}
+
+void line_set_controls(ViewerState& s, size_t i) {
+    LinesDesc& lines = s.desc.lines;
+    const bool shorthand = lines.sets.empty();
+    float* width = shorthand ? &lines.styles[i].width : &lines.sets[i].style.width;
+    float* color = shorthand ? &lines.styles[i].color.x : &lines.sets[i].style.color.x;
+    ImGui::PushID(int(i));
+    ImGui::Checkbox(s.set_names[i].c_str(), set_switch(lines, i));
+    if (s.ribbon[i]) {
+        ImGui::SameLine();
+        ImGui::TextDisabled("ribbon: offline speed");
+    }
+    ImGui::SliderFloat("width", width, 0.5f, 16.0f, "%.1f px");
+    ImGui::ColorEdit3("colour", color, ImGuiColorEditFlags_NoInputs);
+    if (s.has_slam[i]) {
+        ImGui::SameLine();
+        bool on = s.strokes[i];
+        if (ImGui::Checkbox("SLAM strokes", &on)) {
+            s.strokes[i] = on;
+            s.slams_changed = true;
+        }
+        if (shorthand) ImGui::SliderFloat("taper", &lines.styles[i].taper_px, 0.0f, 64.0f, "%.0f px");
+    }
+    ImGui::PopID();
 }
 
 void step_time(ViewerState& s, float frames) {
@@ -95,7 +133,7 @@ bool apply_key(ViewerState& s, int key) {
         case GLFW_KEY_S: toggle_type(p, LineType::Suggestive); break;
         case GLFW_KEY_C: toggle_type(p, LineType::Crease); break;
         case GLFW_KEY_B: toggle_type(p, LineType::Border); break;
-        case GLFW_KEY_1: case GLFW_KEY_2: case GLFW_KEY_3: case GLFW_KEY_4: toggle_strokes(s, key - GLFW_KEY_1); break;
+        case GLFW_KEY_1: case GLFW_KEY_2: case GLFW_KEY_3: case GLFW_KEY_4: toggle_strokes(s, size_t(key - GLFW_KEY_1)); break;
         case GLFW_KEY_P:
             s.coherence.policy = ParamPolicy((int(s.coherence.policy) + 1) % 3);
             s.message = std::string("parameterization: ") + policy_name(s.coherence.policy);
@@ -185,24 +223,8 @@ void draw_panel(ViewerState& s) {
         if (ImGui::Combo("policy (p)", &policy, "coherent\0arclength\0stretch\0")) s.coherence.policy = ParamPolicy(policy);
         ImGui::SliderFloat("splat radius", &s.coherence.splat_radius_px, 0.5f, 32.0f, "%.1f px");
     }
-    if (ImGui::CollapsingHeader("Style per line type")) {
-        for (int t = 0; t < kLineTypeCount; ++t) {
-            LineStyle& st = lines.styles[size_t(t)];
-            ImGui::PushID(t);
-            ImGui::TextUnformatted(line_type_name(LineType(t)));
-            ImGui::SliderFloat("width", &st.width, 0.5f, 16.0f, "%.1f px");
-            ImGui::ColorEdit3("colour", &st.color.x, ImGuiColorEditFlags_NoInputs);
-            if (s.slams[size_t(t)]) {
-                ImGui::SameLine();
-                bool on = s.strokes[size_t(t)];
-                if (ImGui::Checkbox("SLAM strokes", &on)) {
-                    s.strokes[size_t(t)] = on;
-                    s.slams_changed = true;
-                }
-                ImGui::SliderFloat("taper", &st.taper_px, 0.0f, 64.0f, "%.0f px");
-            }
-            ImGui::PopID();
-        }
+    if (ImGui::CollapsingHeader("Line sets (drawn in order)", ImGuiTreeNodeFlags_DefaultOpen)) {
+        for (size_t i = 0; i < s.set_names.size(); ++i) line_set_controls(s, i);
     }
     if (ImGui::CollapsingHeader("Surface")) {
         int shading = s.desc.style.draw_surface ? int(s.desc.style.shading) : 3;

@@ -17,7 +17,6 @@
 #include "coherence/coherence.h"
 #include "gpu/timestamps.h"
 #include "scene/scene.h"
-#include "stroke/slam.h"
 
 namespace lw::cli {
 
@@ -43,8 +42,11 @@ struct ViewerState {
     SceneDesc desc;                       // lines, styles and surface as edited
     OrbitCamera camera, home;             // home: `r` goes back to it
     CoherenceParams coherence;
-    std::array<std::optional<Slam>, kLineTypeCount> slams;  // loaded SLAM per type
-    std::array<bool, kLineTypeCount> strokes{};             // draw that type with its SLAM
+    // Per line set (render/line_sets.h, effective_line_sets: for the per-type shorthand,
+    // set i is line type i): its name, whether it has a SLAM, draws it, or is a ribbon
+    // (synthesized on the host after readback: an offline-speed style).
+    std::vector<std::string> set_names;
+    std::vector<bool> has_slam, strokes, ribbon;
     bool slams_changed = true;
     bool crease_changed = false;          // rebuild the line mesh
     bool panel = true;

@@ -1,4 +1,9 @@
-#include "render/render_target.h"
+#include "gpu/render_target.h"
+
+#include <cstring>
+#include <utility>
+
+#include "core/error.h"
 
 namespace lw {
 
@@ -60,6 +65,35 @@ void RenderTarget::begin_overlay(VkCommandBuffer cmd) const {
 void RenderTarget::end_overlay(VkCommandBuffer cmd) const {
     vkCmdEndRendering(cmd);
     color_to_transfer_src(cmd);
+}
+
+void RenderTarget::write_color(const Context& ctx, std::span<const uint8_t> rgba) const {
+    if (rgba.size() != size_t(width) * height * 4) throw Error("RenderTarget::write_color: the image is not the target's size");
+    Buffer staging(ctx, {.size = rgba.size(), .usage = VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                         .purpose = MemoryPurpose::Upload, .name = "color upload"});
+    auto* bytes = static_cast<uint8_t*>(staging.mapped());
+    std::memcpy(bytes, rgba.data(), rgba.size());
+    if (color.format() == VK_FORMAT_B8G8R8A8_UNORM || color.format() == VK_FORMAT_B8G8R8A8_SRGB)
+        for (size_t i = 0; i < rgba.size(); i += 4) std::swap(bytes[i], bytes[i + 2]);
+    ctx.submit_and_wait([&](VkCommandBuffer cmd) {
+        record_image_barrier(cmd, color,
+                             {.old_layout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                              .new_layout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                              .src_stage = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                              .src_access = VK_ACCESS_2_MEMORY_READ_BIT,
+                              .dst_stage = VK_PIPELINE_STAGE_2_COPY_BIT,
+                              .dst_access = VK_ACCESS_2_TRANSFER_WRITE_BIT});
+        VkBufferImageCopy region{.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
+                                 .imageExtent = {width, height, 1}};
+        vkCmdCopyBufferToImage(cmd, staging.get(), color.get(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+        record_image_barrier(cmd, color,
+                             {.old_layout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                              .new_layout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                              .src_stage = VK_PIPELINE_STAGE_2_COPY_BIT,
+                              .src_access = VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                              .dst_stage = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                              .dst_access = VK_ACCESS_2_MEMORY_READ_BIT});
+    });
 }
 
 }  // namespace lw

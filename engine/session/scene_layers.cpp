@@ -1,4 +1,4 @@
-#include "render_layers.h"
+#include "session/scene_layers.h"
 
 #include <algorithm>
 
@@ -8,7 +8,7 @@
 #include "vector/fill.h"
 #include "vector/stroke_io.h"
 
-namespace lw::cli {
+namespace lw {
 
 SceneLayers load_scene_layers(const SceneDesc& desc) {
     SceneLayers layers;
@@ -74,4 +74,4 @@ double draw_layer_ribbons(const Context& ctx, const SceneLayers& layers, const s
     return ms;
 }
 
-}  // namespace lw::cli
+}  // namespace lw

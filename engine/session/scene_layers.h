@@ -1,4 +1,4 @@
-// tools/linework/render_layers.h — the vector-art layers of a scene, for `linework render`.
+// engine/session/scene_layers.h — the vector-art layers of a scene, loaded for a session.
 //
 // Reads every layer's files once (the drawing, its SLAM or ribbon exemplar; errors name the
 // file), triangulates its fill, and per frame places the drawing with the layer's keyframed
@@ -15,7 +15,7 @@
 #include "scene/scene_file.h"
 #include "vector/stroke.h"
 
-namespace lw::cli {
+namespace lw {
 
 struct SceneLayers {
     std::vector<VectorLayerDesc> descs;
@@ -35,4 +35,4 @@ struct SceneLayers {
 double draw_layer_ribbons(const Context& ctx, const SceneLayers& layers, const std::vector<LayerResult>& results,
                           uint64_t seed, ImageRGBA8& image);
 
-}  // namespace lw::cli
+}  // namespace lw

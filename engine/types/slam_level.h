@@ -1,4 +1,4 @@
-// engine/stroke/slam_level.h — which SLAM level a path uses, from its parameterization.
+// engine/types/slam_level.h — which SLAM level a path uses, from its parameterization.
 //
 // A path's parameterization T(s) = ρ·s + φ counts texture periods along its screen
 // arclength s (pixels), so one period spans 1/|ρ| pixels. Drawing the whole texture over a

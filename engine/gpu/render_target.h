@@ -1,4 +1,4 @@
-// engine/render/render_target.h — the colour and depth images a frame renders into.
+// engine/gpu/render_target.h — the colour and depth images a frame renders into.
 //
 // Passes hand the images to each other in TRANSFER_SRC_OPTIMAL (ready to be read back);
 // the helpers here move the colour image into and out of attachment use and set the
@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 
 #include "gpu/context.h"
 #include "gpu/resources.h"
@@ -31,6 +32,11 @@ struct RenderTarget {
     // attachment use, starts rendering with LOAD and sets the viewport; end moves it back.
     void begin_overlay(VkCommandBuffer cmd) const;
     void end_overlay(VkCommandBuffer cmd) const;
+
+    // Replaces the colour (in TRANSFER_SRC_OPTIMAL, left so) by `rgba` (width × height × 4
+    // bytes, RGBA; swizzled for a BGRA target): a frame finished on the host (ribbons)
+    // goes back to the target a viewer presents. Waits for the copy.
+    void write_color(const Context& ctx, std::span<const uint8_t> rgba) const;
 };
 
 }  // namespace lw

@@ -1,0 +1,253 @@
+// The "line_sets" key of scene files (README "Line sets"): Freestyle's line sets — a
+// selection, a style with modifiers, coherence settings — read into `LineSetDesc`.
+#include "scene/line_set_file.h"
+
+#include <regex>
+
+#include "scene/object_reader.h"
+
+namespace lw {
+
+using scene_detail::json;
+using scene_detail::ObjectReader;
+
+namespace {
+
+std::string resolve_file(ObjectReader& r, const std::string& key, const std::filesystem::path& file) {
+    const std::filesystem::path p(r.string_of(key));
+    if (p.empty()) r.fail_key(key, "expected a file name");
+    return (p.is_absolute() ? p : file.parent_path() / p).string();
+}
+
+std::vector<std::string> strings(ObjectReader& r, const std::string& key) {
+    const json& v = r.at(key);
+    if (!v.is_array()) r.fail_key(key, "expected an array of strings");
+    std::vector<std::string> out;
+    for (const json& item : v) {
+        if (!item.is_string()) r.fail_key(key, "expected an array of strings");
+        out.push_back(item.get<std::string>());
+    }
+    return out;
+}
+
+std::pair<float, float> range(ObjectReader& r) {
+    if (!r.has("range")) return {0.0f, 1.0f};
+    const json& v = r.at("range");
+    if (!v.is_array() || v.size() != 2 || !v[0].is_number() || !v[1].is_number() ||
+        !(v[1].get<double>() > v[0].get<double>()))
+        r.fail_key("range", "expected [min, max] with max > min");
+    return {v[0].get<float>(), v[1].get<float>()};
+}
+
+ModifierInput input(ObjectReader& r) {
+    if (!r.has("input")) r.fail_key("input", "required: along, distance or curvature");
+    const std::string s = r.string_of("input", {"along", "distance", "curvature"});
+    return s == "along" ? ModifierInput::Along : s == "distance" ? ModifierInput::Distance : ModifierInput::Curvature;
+}
+
+// "ramp": [[x, y], ...] with x increasing in [0, 1].
+Ramp scalar_ramp(ObjectReader& r) {
+    Ramp ramp;
+    const json& v = r.at("ramp");
+    if (!v.is_array() || v.empty()) r.fail_key("ramp", "expected [[x, value], ...]");
+    for (const json& p : v) {
+        if (!p.is_array() || p.size() != 2 || !p[0].is_number() || !p[1].is_number())
+            r.fail_key("ramp", "expected [[x, value], ...] with numbers");
+        const float x = p[0].get<float>();
+        if (!(x >= 0.0f && x <= 1.0f) || (!ramp.points.empty() && !(x >= ramp.points.back().x)))
+            r.fail_key("ramp", "x must increase within [0, 1]");
+        ramp.points.push_back({x, p[1].get<float>()});
+    }
+    return ramp;
+}
+
+std::vector<ScalarModifier> scalar_modifiers(ObjectReader& style, const std::string& key,
+                                             const std::filesystem::path& file) {
+    const json& list = style.at(key);
+    if (!list.is_array()) style.fail_key(key, "expected an array of modifiers");
+    std::vector<ScalarModifier> out;
+    for (size_t i = 0; i < list.size(); ++i) {
+        ObjectReader r(list[i], style.path(key) + "[" + std::to_string(i) + "]", file);
+        ScalarModifier m{.input = input(r)};
+        std::tie(m.range_min, m.range_max) = range(r);
+        if (!r.has("ramp")) r.fail_key("ramp", "required: [[x, value], ...]");
+        m.ramp = scalar_ramp(r);
+        if (r.has("blend")) {
+            const std::string b = r.string_of("blend", {"multiply", "replace", "add"});
+            m.blend = b == "multiply" ? ModifierBlend::Multiply : b == "replace" ? ModifierBlend::Replace : ModifierBlend::Add;
+        }
+        r.reject_unknown();
+        out.push_back(std::move(m));
+    }
+    return out;
+}
+
+std::vector<ColorModifier> color_modifiers(ObjectReader& style, const std::filesystem::path& file) {
+    const json& list = style.at("color_modifiers");
+    if (!list.is_array()) style.fail_key("color_modifiers", "expected an array of modifiers");
+    std::vector<ColorModifier> out;
+    for (size_t i = 0; i < list.size(); ++i) {
+        ObjectReader r(list[i], style.path("color_modifiers") + "[" + std::to_string(i) + "]", file);
+        ColorModifier m{.input = input(r)};
+        std::tie(m.range_min, m.range_max) = range(r);
+        if (!r.has("ramp")) r.fail_key("ramp", "required: [[x, [r, g, b]], ...]");
+        for (const json& p : r.at("ramp")) {
+            if (!p.is_array() || p.size() != 2 || !p[0].is_number() || !p[1].is_array() || p[1].size() != 3)
+                r.fail_key("ramp", "expected [[x, [r, g, b]], ...]");
+            glm::vec3 c;
+            for (int k = 0; k < 3; ++k) {
+                if (!p[1][k].is_number()) r.fail_key("ramp", "colours are three numbers in [0, 1]");
+                c[k] = p[1][k].get<float>();
+            }
+            m.ramp.points.push_back({p[0].get<float>(), c});
+        }
+        if (m.ramp.points.empty()) r.fail_key("ramp", "expected at least one point");
+        if (r.has("influence")) m.influence = float(r.number("influence", 0.0, 1.0));
+        r.reject_unknown();
+        out.push_back(std::move(m));
+    }
+    return out;
+}
+
+std::vector<GeometryModifier> geometry_modifiers(ObjectReader& style, const std::filesystem::path& file) {
+    const json& list = style.at("geometry");
+    if (!list.is_array()) style.fail_key("geometry", "expected an array of modifiers");
+    std::vector<GeometryModifier> out;
+    using Kind = GeometryModifier::Kind;
+    for (size_t i = 0; i < list.size(); ++i) {
+        ObjectReader r(list[i], style.path("geometry") + "[" + std::to_string(i) + "]", file);
+        if (!r.has("kind")) r.fail_key("kind", "required");
+        const std::string k =
+            r.string_of("kind", {"sinus", "noise", "backbone_stretch", "tip_remove", "simplify"});
+        GeometryModifier m{.kind = k == "sinus" ? Kind::Sinus : k == "noise" ? Kind::Noise
+                                   : k == "backbone_stretch"             ? Kind::BackboneStretch
+                                   : k == "tip_remove"                   ? Kind::TipRemove
+                                                                         : Kind::Simplify};
+        if (r.has("wavelength")) m.wavelength_px = float(r.number("wavelength", 0.5, 1e5));
+        if (r.has("amplitude")) m.amplitude_px = float(r.number("amplitude", 0.0, 1e4));
+        if (r.has("phase")) m.phase = float(r.number("phase", -1e4, 1e4));
+        if (r.has("seed")) m.seed = uint64_t(r.number("seed", 0, 4294967295.0));
+        if (r.has("length")) m.length_px = float(r.number("length", 0.0, 1e5));
+        if (r.has("tolerance")) m.tolerance_px = float(r.number("tolerance", 0.0, 1e4));
+        r.reject_unknown();
+        out.push_back(m);
+    }
+    return out;
+}
+
+LineSelection read_selection(ObjectReader& set, const std::filesystem::path& file) {
+    LineSelection select;
+    if (!set.has("select")) return select;
+    ObjectReader r(set.at("select"), set.path("select"), file);
+    if (r.has("types")) {
+        select.types = 0;
+        for (const std::string& name : strings(r, "types")) {
+            const std::optional<LineType> type = line_type_from_name(name);
+            if (!type) r.fail_key("types", "unknown line type \"" + name + "\" (silhouette, suggestive, crease, border)");
+            select.types |= 1u << uint32_t(*type);
+        }
+        if (select.types == 0) r.fail_key("types", "selects no line type");
+    }
+    if (r.has("visibility")) {
+        const std::string v = r.string_of("visibility", {"visible", "hidden", "any"});
+        select.visibility = v == "visible" ? Visibility::Visible : v == "hidden" ? Visibility::Hidden : Visibility::Any;
+    }
+    if (r.has("models")) select.models = strings(r, "models");
+    if (r.has("materials")) select.materials = strings(r, "materials");
+    r.reject_unknown();
+    return select;
+}
+
+void read_shape(ObjectReader& r, LineSetStyle& style) {
+    if (r.has("cap")) {
+        const std::string c = r.string_of("cap", {"butt", "round", "square"});
+        style.cap = c == "butt" ? Cap::Butt : c == "round" ? Cap::Round : Cap::Square;
+    }
+    if (r.has("join")) style.join = r.string_of("join", {"mitre", "round"}) == "round" ? Join::Round : Join::Mitre;
+    if (r.has("taper")) style.taper_in_px = style.taper_out_px = float(r.number("taper", 0.0, 4096.0));
+    if (r.has("taper_in")) style.taper_in_px = float(r.number("taper_in", 0.0, 4096.0));
+    if (r.has("taper_out")) style.taper_out_px = float(r.number("taper_out", 0.0, 4096.0));
+    if (r.has("dashes")) {
+        const json& d = r.at("dashes");
+        if (!d.is_array() || d.empty()) r.fail_key("dashes", "expected [dash, gap, ...] in pixels");
+        float total = 0.0f;
+        for (const json& v : d) {
+            if (!v.is_number() || !(v.get<double>() >= 0.0 && v.get<double>() <= 1e5))
+                r.fail_key("dashes", "lengths are pixels, 0 to 100000");
+            style.dashes.push_back(v.get<float>());
+            total += style.dashes.back();
+        }
+        if (!(total > 0.0f)) r.fail_key("dashes", "the pattern has no length");
+    }
+}
+
+LineSetStyle read_style(ObjectReader& set, const std::filesystem::path& file) {
+    LineSetStyle style;
+    if (!set.has("style")) return style;
+    ObjectReader r(set.at("style"), set.path("style"), file);
+    if (r.has("color")) style.color = r.vec3("color", 0.0, 1.0);
+    if (r.has("alpha")) style.alpha = float(r.number("alpha", 0.0, 1.0));
+    if (r.has("width")) style.width = float(r.number("width", 0.1, 256.0));
+    if (r.has("fade")) style.fade = r.boolean("fade");
+    if (r.has("slam")) style.slam = resolve_file(r, "slam", file);
+    if (r.has("ribbon")) style.ribbon = resolve_file(r, "ribbon", file);
+    if (!style.slam.empty() && !style.ribbon.empty()) r.fail_key("ribbon", "a set is drawn with a SLAM or a ribbon, not both");
+    if (r.has("ribbon_scale")) style.ribbon_scale = float(r.number("ribbon_scale", 1.0, 4096.0));
+    read_shape(r, style);
+    if (!style.slam.empty()) style.cap = r.has("cap") ? style.cap : Cap::Butt;  // SLAM strokes end at their ends
+    if (r.has("width_modifiers")) style.width_modifiers = scalar_modifiers(r, "width_modifiers", file);
+    if (r.has("alpha_modifiers")) style.alpha_modifiers = scalar_modifiers(r, "alpha_modifiers", file);
+    if (r.has("color_modifiers")) style.color_modifiers = color_modifiers(r, file);
+    if (r.has("geometry")) style.geometry = geometry_modifiers(r, file);
+    if (r.has("chaining")) {
+        ObjectReader c(r.at("chaining"), r.path("chaining"), file);
+        if (c.has("split_angle")) style.chaining.split_angle_deg = float(c.number("split_angle", 0.0, 180.0));
+        if (c.has("min_length")) style.chaining.min_length_px = float(c.number("min_length", 0.0, 1e6));
+        if (c.has("max_length")) style.chaining.max_length_px = float(c.number("max_length", 1.0, 1e6));
+        c.reject_unknown();
+    }
+    r.reject_unknown();
+    return style;
+}
+
+LineSetCoherence read_coherence(ObjectReader& set, const std::filesystem::path& file) {
+    LineSetCoherence coherence;
+    if (!set.has("coherence")) return coherence;
+    ObjectReader r(set.at("coherence"), set.path("coherence"), file);
+    if (r.has("policy")) {
+        const std::string p = r.string_of("policy", {"coherent", "arclength", "stretch"});
+        coherence.policy = p == "coherent" ? ParamPolicy::Coherent : p == "arclength" ? ParamPolicy::Arclength
+                                                                                       : ParamPolicy::Stretch;
+    }
+    if (r.has("length_scale")) coherence.length_scale = float(r.number("length_scale", 1e-3, 1e4));
+    if (r.has("sample_spacing")) coherence.sample_spacing_px = float(r.number("sample_spacing", 0.25, 64.0));
+    r.reject_unknown();
+    return coherence;
+}
+
+}  // namespace
+
+std::vector<LineSetDesc> read_line_sets(scene_detail::ObjectReader& scene, const std::filesystem::path& file) {
+    const json& list = scene.at("line_sets");
+    if (!list.is_array() || list.empty()) scene.fail_key("line_sets", "expected a non-empty array of line sets");
+    static const std::regex kName("[A-Za-z_][A-Za-z0-9_-]*");  // an SVG group id
+    std::vector<LineSetDesc> sets;
+    for (size_t i = 0; i < list.size(); ++i) {
+        ObjectReader r(list[i], "line_sets[" + std::to_string(i) + "]", file);
+        LineSetDesc set;
+        if (!r.has("name")) r.fail_key("name", "required (it names the set's SVG group and dump entries)");
+        set.name = r.string_of("name");
+        if (!std::regex_match(set.name, kName)) r.fail_key("name", "letters, digits, _ and - (an SVG id), got \"" + set.name + "\"");
+        for (const LineSetDesc& other : sets)
+            if (other.name == set.name) r.fail_key("name", "\"" + set.name + "\" is used by an earlier set");
+        if (r.has("enabled")) set.enabled = r.boolean("enabled");
+        set.select = read_selection(r, file);
+        set.style = read_style(r, file);
+        set.coherence = read_coherence(r, file);
+        r.reject_unknown();
+        sets.push_back(std::move(set));
+    }
+    return sets;
+}
+
+}  // namespace lw

@@ -1,0 +1,224 @@
+#include "session/scene_session.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.h"
+#include "geometry/subdivide.h"
+#include "io/image_io.h"
+#include "io/slam_io.h"
+#include "render/line_sets.h"
+#include "ribbon/ribbon_strokes.h"
+
+namespace lw {
+
+namespace {
+
+// What each welded face belongs to: its model (by the triangle ranges of the merged mesh)
+// and its glTF material.
+FaceGroups face_groups(const LoadedScene& scene, const TriangleMesh& mesh, const LineMesh& lines, int subdivide) {
+    FaceGroups groups;
+    if (mesh.face_material.size() != mesh.triangle_count()) return groups;
+    std::vector<size_t> model_of(mesh.triangle_count(), 0);
+    size_t first = 0;
+    for (size_t m = 0; m < scene.model_triangles.size(); ++m) {
+        const size_t count = scene.model_triangles[m] << (2 * subdivide);  // each subdivision ×4
+        std::fill(model_of.begin() + std::ptrdiff_t(std::min(first, model_of.size())),
+                  model_of.begin() + std::ptrdiff_t(std::min(first + count, model_of.size())), m);
+        first += count;
+    }
+    std::vector<std::pair<size_t, int32_t>> keys;  // (model, material) of each group
+    for (uint32_t source : lines.mesh.source_face) {
+        const std::pair key{model_of[source], mesh.face_material[source]};
+        auto it = std::find(keys.begin(), keys.end(), key);
+        if (it == keys.end()) {
+            keys.push_back(key);
+            it = keys.end() - 1;
+            const Model& model = scene.models[key.first];
+            groups.model_names.push_back(model.path.filename().string());
+            groups.material_names.push_back(key.second >= 0 && size_t(key.second) < model.material_names.size()
+                                                ? model.material_names[size_t(key.second)]
+                                                : "");
+        }
+        groups.face_group.push_back(uint32_t(it - keys.begin()));
+    }
+    return groups;
+}
+
+}  // namespace
+
+SceneSession::SceneSession(const Context& ctx, SceneDesc desc, const SessionOptions& options)
+    : ctx_(&ctx),
+      desc_(std::move(desc)),
+      options_(options),
+      scene_(has_model() ? load_scene(desc_) : LoadedScene{.desc = desc_}),
+      sets_(effective_line_sets(desc_.lines)),
+      layers_(load_scene_layers(desc_)),
+      renderer_(ctx, uint32_t(desc_.width), uint32_t(desc_.height), options.color_format) {
+    if (options.subdivide > 0) scene_.mesh = subdivide_midpoint(scene_.mesh, options.subdivide);
+    if (options.camera.eye) scene_.camera.eye = *options.camera.eye;
+    if (options.camera.target) scene_.camera.target = *options.camera.target;
+    if (options.camera.up) scene_.camera.up = *options.camera.up;
+    if (scene_.camera.eye == scene_.camera.target) throw Error("camera: the eye and the target coincide");
+    // Every file a style names, read before any rendering so that a bad one fails first; a
+    // SLAM shared by several sets is read once.
+    for (size_t i = 0; i < sets_.size(); ++i) {
+        const LineSetStyle& style = sets_[i].style;
+        std::optional<Slam> slam;
+        for (size_t j = 0; j < i && !style.slam.empty() && !slam; ++j)
+            if (sets_[j].style.slam == style.slam) slam = slams_[j];
+        if (!style.slam.empty() && !slam) slam = read_slam(style.slam);
+        if (slam) renderer_.set_slam(i, *slam);
+        slams_.push_back(std::move(slam));
+        textured_.push_back(true);
+        ribbons_.push_back(style.ribbon.empty() ? std::nullopt
+                                                : std::optional(make_exemplar(read_image_rgba8(style.ribbon), style.ribbon)));
+    }
+    if (options.length_scale > 0.0f) {
+        desc_.lines.length_scale = options.length_scale;
+        for (LineSetDesc& set : desc_.lines.sets) set.coherence.length_scale = options.length_scale;
+        sets_ = effective_line_sets(desc_.lines);
+    }
+    for (LayerStyle& style : layers_.styles) {  // the same policy and tracker settings for layers
+        if (options.length_scale > 0.0f) style.coherence.length_scale = options.length_scale;
+        style.coherence.policy = options.coherence.policy;
+        style.coherence.splat_radius_px = options.coherence.splat_radius_px;
+        style.coherence.ransac = options.coherence.ransac;
+        style.coherence.min_stroke_length_px = options.coherence.min_stroke_length_px;
+    }
+    if (!layers_.descs.empty()) renderer_.set_layers(layers_.styles);
+    animated_ = has_model() && desc_.animation.play && animation_duration(scene_) > 0.0f;
+    if (has_model()) {
+        // The line mesh is welded (and its feature size taken) in the pose of the first frame.
+        const float start = options.start_seconds;
+        renderer_.set_mesh(animated_ ? pose_scene(scene_, start) : scene_.mesh, desc_.lines.enabled,
+                           desc_.lines.params.crease_angle_deg);
+        if (animated_) posed_at_ = start;
+        if (const LineMesh* lines = renderer_.line_mesh())
+            renderer_.set_face_groups(face_groups(scene_, scene_.mesh, *lines, options.subdivide));
+    }
+}
+
+float SceneSession::duration_s() const { return has_model() ? animation_duration(scene_) : 0.0f; }
+
+FrameRange SceneSession::default_frames() const {
+    if (desc_.animation.frames) return *desc_.animation.frames;
+    FrameRange range{0, 0};
+    if (desc_.animation.play) range.last = std::max(0, int(std::ceil(duration_s() * desc_.animation.fps)) - 1);
+    return range;
+}
+
+bool SceneSession::has_ribbons() const {
+    const bool layer_ribbons = std::any_of(layers_.ribbons.begin(), layers_.ribbons.end(),
+                                           [](const auto& r) { return r.has_value(); });
+    for (size_t i = 0; i < sets_.size(); ++i)
+        if (ribbons_[i] && sets_[i].enabled) return true;
+    return layer_ribbons;
+}
+
+void SceneSession::set_line_set_enabled(size_t set, bool on) {
+    if (set >= sets_.size()) throw Error("line set " + std::to_string(set) + ": no such set");
+    sets_[set].enabled = on;
+    // The shorthand's switch is its type's.
+    if (desc_.lines.sets.empty()) set_line_type_enabled(desc_.lines.params, LineType(set), on);
+    else desc_.lines.sets[set].enabled = on;
+}
+
+void SceneSession::set_line_set_textured(size_t set, bool on) {
+    if (set >= sets_.size() || !slams_[set]) return;
+    textured_[set] = on;
+    if (on) renderer_.set_slam(set, *slams_[set]);
+    else renderer_.clear_slam(set);
+}
+
+bool SceneSession::line_set_textured(size_t set) const { return set < textured_.size() && slams_[set] && textured_[set]; }
+
+void SceneSession::rebuild_lines() {
+    if (!has_model()) return;
+    renderer_.set_mesh(animated_ ? pose_scene(scene_, posed_at_.value_or(0.0f)) : scene_.mesh, desc_.lines.enabled,
+                       desc_.lines.params.crease_angle_deg);
+    if (const LineMesh* lines = renderer_.line_mesh())
+        renderer_.set_face_groups(face_groups(scene_, scene_.mesh, *lines, options_.subdivide));
+}
+
+void SceneSession::pose(float seconds) {
+    if (!animated_ || posed_at_ == seconds) return;
+    TriangleMesh posed = pose_scene(scene_, seconds);
+    if (options_.subdivide > 0) posed = subdivide_midpoint(posed, options_.subdivide);
+    renderer_.deform(posed);
+    posed_at_ = seconds;
+}
+
+ViewCamera SceneSession::camera_at(const PathTime& when) const {
+    return lw::camera_at(desc_.camera_path, scene_.camera, when);
+}
+
+bool SceneSession::parameterized() const {
+    const bool layer_slams = std::any_of(layers_.styles.begin(), layers_.styles.end(),
+                                         [](const LayerStyle& s) { return s.slam.has_value(); });
+    if (layer_slams) return true;
+    if (!desc_.lines.enabled || !has_model()) return false;
+    if (options_.coherent) return true;
+    for (size_t i = 0; i < sets_.size(); ++i)
+        if (sets_[i].enabled && (line_set_textured(i) || needs_parameterization(sets_[i].style))) return true;
+    return false;
+}
+
+Frame SceneSession::frame(const FrameRequest& request) {
+    sets_ = effective_line_sets(desc_.lines);  // the panel may have changed styles
+    pose(request.when.seconds);
+    const ViewCamera view = request.camera ? *request.camera : camera_at(request.when);
+    const uint32_t width = renderer_.target().width, height = renderer_.target().height;
+    const CameraMatrices camera =
+        has_model() ? camera_matrices(view, float(width) / float(height), scene_.bounds) : CameraMatrices{};
+    std::vector<LayerFrame> layer_frames = scene_layer_frames(layers_, request.when.seconds, glm::vec2(width, height),
+                                                              desc_.lines.sample_spacing_px);
+    // Ribbons are synthesized on the host over the read-back colour.
+    const bool ribbons = has_ribbons() && (request.outputs.color || request.ribbons_to_target);
+    FrameOutputs outputs = request.outputs;
+    outputs.color = outputs.color || ribbons;
+    Frame frame = renderer_.render(camera, view.eye, desc_.style, desc_.lines, outputs,
+                                   parameterized() ? &options_.coherence : nullptr,
+                                   layers_.descs.empty() ? nullptr : &layer_frames);
+    if (ribbons) {
+        frame.timings.total_ms += draw_ribbons(frame, request.seed);
+        if (request.ribbons_to_target) renderer_.target().write_color(*ctx_, frame.image.color.pixels);
+        if (!request.outputs.color) frame.image.color = {};
+    }
+    last_seconds_ = request.when.seconds;
+    return frame;
+}
+
+double SceneSession::draw_ribbons(Frame& frame, uint64_t seed) {
+    double ms = 0.0;
+    ribbon_reports_.clear();
+    for (const LineSetFrame& set : frame.sets) {
+        if (!ribbons_[set.set]) continue;
+        const LineSetStyle& style = sets_[set.set].style;
+        const RibbonStrokeStats stats =
+            draw_ribbon_strokes(*ctx_, set.paths, std::nullopt, *ribbons_[set.set],
+                                {.width = style.width, .scale = style.ribbon_scale, .seed = seed}, frame.image.color);
+        ms += stats.ms;
+        ribbon_reports_.push_back({set.name, stats});
+    }
+    // Layers lie over the 3D lines, their ribbons too.
+    return ms + draw_layer_ribbons(*ctx_, layers_, frame.layers, seed, frame.image.color);
+}
+
+void SceneSession::resize(uint32_t width, uint32_t height) { renderer_.resize(width, height); }
+
+void SceneSession::restore(const Snapshot& snapshot) {
+    pose(snapshot.seconds);
+    renderer_.restore_coherence(snapshot.coherence);
+    last_seconds_ = snapshot.seconds;
+}
+
+std::vector<SvgGroup> SceneSession::svg_groups(const Frame& frame) const { return line_set_svg_groups(desc_.lines, frame); }
+
+std::vector<DumpGroup> SceneSession::dump_groups(const Frame& frame) const {
+    std::vector<DumpGroup> groups;
+    for (const LineSetFrame& set : frame.sets) groups.push_back({set.name, &set.paths, &set.params});
+    return groups;
+}
+
+}  // namespace lw

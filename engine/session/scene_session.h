@@ -1,0 +1,139 @@
+// engine/session/scene_session.h — a scene made live: what `linework render`, `linework view`
+// (and a farm task, or a Python session) drive frame by frame.
+//
+// Input:  a `SceneDesc` (scene file or bare model, with the caller's overrides applied),
+//         a Vulkan context and `SessionOptions` (target format, the base coherence
+//         parameters, whether frames are parameterized without strokes).
+// Output: per `frame(request)` the finished `Frame`: the scene posed at the request's time,
+//         seen from its camera (the scene's, its camera path's, or the request's), every
+//         line set drawn in order, ribbons synthesized over the read-back colour, layers
+//         composited, with depth, paths per set and per-stage times. `snapshot()` and
+//         `restore()` carry the whole temporal state (every line set's and layer's tracker)
+//         so that a resumed or distributed render continues exactly.
+//
+// Everything is loaded once at construction (models, SLAMs, ribbon exemplars, layers), so a
+// bad file fails before any frame is drawn; errors name the file or the scene key.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "coherence/coherence.h"
+#include "gpu/context.h"
+#include "lines/svg_export.h"
+#include "coherence/path_dump.h"
+#include "render/frame_renderer.h"
+#include "ribbon/exemplar.h"
+#include "ribbon/ribbon_strokes.h"
+#include "scene/camera_path.h"
+#include "scene/scene.h"
+#include "session/scene_layers.h"
+#include "stroke/slam.h"
+
+namespace lw {
+
+// A partial camera from the command line: each part given replaces the scene's (or the
+// framing camera's), so that a user can move the eye alone.
+struct CameraOverride {
+    std::optional<glm::vec3> eye, target, up;
+};
+
+struct SessionOptions {
+    VkFormat color_format = VK_FORMAT_R8G8B8A8_UNORM;  // B8G8R8A8 for a viewer's swapchain
+    int subdivide = 0;          // midpoint subdivisions of the merged mesh (benchmarks)
+    float start_seconds = 0.0f; // the first frame's time: the line mesh is built in that pose
+    // Parameterize every line set even where no style needs it (path dumps, a policy the
+    // user chose); sets with a SLAM, dashes or displacement are parameterized anyway.
+    bool coherent = false;
+    CoherenceParams coherence;  // base of every set's and layer's: policy, splat radius, RANSAC
+    float length_scale = 0.0f;  // κ for every set and layer (0: each its own, square texels)
+    CameraOverride camera;
+};
+
+struct FrameRequest {
+    PathTime when;                      // animation clock and progress over the range
+    std::optional<ViewCamera> camera;   // a viewer's camera; absent: the scene's at `when`
+    FrameOutputs outputs;               // colour and depth readback
+    uint64_t seed = 1;                  // ribbon synthesis
+    // A viewer presents the target: ribbons drawn on the host are written back into it.
+    bool ribbons_to_target = false;
+};
+
+class SceneSession {
+public:
+    SceneSession(const Context& ctx, SceneDesc desc, const SessionOptions& options = {});
+
+    const SceneDesc& desc() const { return desc_; }
+    const LoadedScene& scene() const { return scene_; }
+    bool has_model() const { return !desc_.models.empty(); }
+    bool animated() const { return animated_; }
+    float duration_s() const;
+    // The frames a render draws without a --frames: the scene's, else the clips' length.
+    FrameRange default_frames() const;
+    const std::vector<LineSetDesc>& line_sets() const { return sets_; }
+    bool has_ribbons() const;
+
+    // The lines as edited live (the viewer's panel): thresholds, sets on and off, widths
+    // and colours. A set's SLAM or ribbon and a crease angle are fixed at construction (or
+    // after rebuild_lines()).
+    LinesDesc& lines() { return desc_.lines; }
+    SurfaceStyle& surface() { return desc_.style; }
+    CoherenceParams& coherence() { return options_.coherence; }  // the base (viewer: policy, radius)
+    void set_line_set_enabled(size_t set, bool on);
+    // The line mesh again (a new crease angle); temporal state starts afresh.
+    void rebuild_lines();
+    // Whether a set's SLAM is drawn (the viewer's style switch; the SLAM stays loaded).
+    void set_line_set_textured(size_t set, bool on);
+    bool line_set_textured(size_t set) const;
+    bool line_set_has_slam(size_t set) const { return set < slams_.size() && slams_[set].has_value(); }
+
+    // The camera a frame at `when` sees without a request's override.
+    [[nodiscard]] ViewCamera camera_at(const PathTime& when) const;
+
+    [[nodiscard]] Frame frame(const FrameRequest& request);
+    // The last frame's ribbon synthesis per line set that has one.
+    struct RibbonReport {
+        std::string line_set;
+        RibbonStrokeStats stats;
+    };
+    const std::vector<RibbonReport>& ribbon_reports() const { return ribbon_reports_; }
+
+    void resize(uint32_t width, uint32_t height);
+    const RenderTarget& target() const { return renderer_.target(); }
+    const FrameRenderer& renderer() const { return renderer_; }
+
+    // The temporal state after the last frame, and the frame it belongs to.
+    struct Snapshot {
+        float seconds = 0.0f;  // the pose it was taken in
+        FrameRenderer::CoherenceSnapshot coherence;
+    };
+    [[nodiscard]] Snapshot snapshot() const { return {last_seconds_, renderer_.coherence_snapshot()}; }
+    void restore(const Snapshot& snapshot);
+
+    // The frame's lines as SVG groups (one per line set, in order) and dump groups.
+    [[nodiscard]] std::vector<SvgGroup> svg_groups(const Frame& frame) const;
+    [[nodiscard]] std::vector<DumpGroup> dump_groups(const Frame& frame) const;
+
+private:
+    void pose(float seconds);
+    double draw_ribbons(Frame& frame, uint64_t seed);
+    bool parameterized() const;
+
+    const Context* ctx_;
+    SceneDesc desc_;
+    SessionOptions options_;
+    LoadedScene scene_;
+    std::vector<LineSetDesc> sets_;              // effective_line_sets of the scene
+    std::vector<std::optional<Slam>> slams_;     // per set
+    std::vector<bool> textured_;                 // per set: its SLAM is drawn
+    std::vector<std::optional<Exemplar>> ribbons_;  // per set
+    SceneLayers layers_;
+    FrameRenderer renderer_;
+    bool animated_ = false;
+    std::optional<float> posed_at_;              // the pose the renderer has
+    float last_seconds_ = 0.0f;
+    std::vector<RibbonReport> ribbon_reports_;
+};
+
+}  // namespace lw

@@ -1,0 +1,129 @@
+// engine/types/line_set.h — a line set: a selection of lines with its own style, modifiers
+// and coherence settings, drawn in scene order (Blender Freestyle's unit of style).
+//
+// Scene files give them as "line_sets" (README "Line sets"); the older per-type keys of
+// "lines" are shorthand for one set per line type (scene/scene_file.cpp). A path may belong
+// to several sets: each set selects, parameterizes and draws its own copy.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "types/line_type.h"
+
+namespace lw {
+
+// How a set's strokes are parameterized along their length (Bénard et al. 2010 §4):
+// coherent (votes + RANSAC), arclength (tiling, T = s·κ/Lmax) or stretch (T = s/L).
+enum class ParamPolicy { Coherent, Arclength, Stretch };
+
+enum class Visibility { Visible, Hidden, Any };
+
+struct LineSelection {
+    uint32_t types = (1u << kLineTypeCount) - 1;  // bit (1 << LineType): the types selected
+    Visibility visibility = Visibility::Visible;
+    std::vector<std::string> models;     // model file names (as in the scene's "model"); empty: all
+    std::vector<std::string> materials;  // glTF material names; empty: all
+
+    bool has_type(LineType t) const { return (types >> uint32_t(t)) & 1u; }
+};
+
+// Stroke ends (Freestyle's caps): butt stops at the end sample, square extends by half the
+// width, round adds a half disc of the width.
+enum class Cap { Butt, Round, Square };
+// Stroke joins: mitre (clamped to twice the half width) or round.
+enum class Join { Mitre, Round };
+
+// What a modifier reads per sample, mapped to [0, 1] before its ramp:
+//   along     — arc length / path length (0 at the start, 1 at the end);
+//   distance  — eye depth, (depth − near) / (far − near), clamped;
+//   curvature — |2D curvature| in 1/px, (κ − min) / (max − min), clamped.
+enum class ModifierInput { Along, Distance, Curvature };
+
+// How a modifier's value combines with the value before it.
+enum class ModifierBlend { Multiply, Replace, Add };
+
+// A piecewise-linear curve: points (x, y) with x increasing in [0, 1]; flat beyond the ends.
+struct Ramp {
+    std::vector<glm::vec2> points;
+};
+
+struct ColorRamp {
+    std::vector<std::pair<float, glm::vec3>> points;  // x increasing in [0, 1], linear colour
+};
+
+// Width (multiplies or replaces the width in pixels) or alpha (in [0, 1]).
+struct ScalarModifier {
+    ModifierInput input = ModifierInput::Along;
+    float range_min = 0.0f, range_max = 1.0f;  // distance: scene units; curvature: 1/px; along: unused
+    Ramp ramp;
+    ModifierBlend blend = ModifierBlend::Multiply;
+};
+
+struct ColorModifier {
+    ModifierInput input = ModifierInput::Along;
+    float range_min = 0.0f, range_max = 1.0f;
+    ColorRamp ramp;
+    float influence = 1.0f;  // mix(colour before, ramp colour, influence)
+};
+
+// Geometry modifiers (Freestyle's), applied in order to the screen polyline before the
+// stroke is built. Displacements are functions of the coherent parameter, not of the frame,
+// so that they stay on the surface while the view moves.
+struct GeometryModifier {
+    enum class Kind { Sinus, Noise, BackboneStretch, TipRemove, Simplify } kind = Kind::Sinus;
+    float wavelength_px = 32.0f;  // sinus: period along the stroke; noise: feature size
+    float amplitude_px = 2.0f;    // sinus, noise: displacement along the normal
+    float phase = 0.0f;           // sinus: in periods
+    uint64_t seed = 1;            // noise
+    float length_px = 8.0f;       // backbone stretch: added at both ends; tip removal: cut at both ends
+    float tolerance_px = 1.0f;    // simplification: Douglas–Peucker tolerance
+};
+
+// Chaining options applied to each selected run before it is parameterized.
+struct ChainingOptions {
+    float split_angle_deg = 180.0f;  // split where the polyline turns by more than this (180: never)
+    float min_length_px = 0.0f;      // drop runs shorter than this
+    float max_length_px = 0.0f;      // cut runs into pieces no longer than this (0: no limit)
+};
+
+struct LineSetStyle {
+    glm::vec3 color{0.0f};         // linear 0..1
+    float alpha = 1.0f;
+    float width = 2.5f;            // pixels
+    Cap cap = Cap::Square;
+    Join join = Join::Mitre;
+    float taper_in_px = 0.0f;      // the width grows from the start over this length
+    float taper_out_px = 0.0f;     // and shrinks to the end over this one
+    bool fade = true;              // suggestive contours fade in as rtsc's test grows (alpha)
+    std::string slam;              // SLAM file: textured strokes
+    std::string ribbon;            // ribbon exemplar: a structured pattern along each path
+    float ribbon_scale = 0.0f;     // exemplar pixels across the ribbon (0: its default)
+    std::vector<float> dashes;     // [dash, gap, dash, gap, ...] pixels along the parameterization
+    std::vector<ScalarModifier> width_modifiers;
+    std::vector<ScalarModifier> alpha_modifiers;
+    std::vector<ColorModifier> color_modifiers;
+    std::vector<GeometryModifier> geometry;
+    ChainingOptions chaining;
+};
+
+struct LineSetCoherence {
+    std::optional<ParamPolicy> policy;  // absent: the render's (coherent unless --param says)
+    float length_scale = 0.0f;       // κ; 0: square texels (the SLAM's height over the width)
+    float sample_spacing_px = 0.0f;  // δ; 0: the scene's "sample_spacing"
+};
+
+struct LineSetDesc {
+    std::string name;
+    bool enabled = true;
+    LineSelection select;
+    LineSetStyle style;
+    LineSetCoherence coherence;
+};
+
+}  // namespace lw

@@ -1,0 +1,209 @@
+// tests/test_line_sets.cpp — line sets and the scene session: each set keeps its own texture
+// period, dashes follow the parameterization, `render` and the viewer's code path give the
+// same frame, and a bad "line_sets" key is an error naming it.
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "coherence/path_dump.h"
+#include "core/error.h"
+#include "scene/scene_file.h"
+#include "io/image_io.h"
+#include "io/slam_io.h"
+#include "render/line_sets.h"
+#include "session/scene_session.h"
+#include "test_support.h"
+
+namespace lw {
+namespace {
+
+namespace fs = std::filesystem;
+
+void write_file(const fs::path& path, const std::string& text) { std::ofstream(path) << text; }
+
+// A scene over the shared spot with the given "line_sets" JSON, 320×240, an orbit of
+// `degrees` over `frames` frames.
+fs::path spot_scene(const fs::path& dir, const std::string& line_sets, int frames, float degrees) {
+    const fs::path scene = dir / "scene.json";
+    write_file(scene, "{\"model\": \"" + (test::data_dir() / "models/spot/spot.glb").string() +
+                          "\", \"size\": [320, 240], \"camera\": {\"orbit\": " + std::to_string(degrees) +
+                          "}, \"animation\": {\"frames\": [0, " + std::to_string(frames - 1) +
+                          "]}, \"line_sets\": " + line_sets + "}");
+    return scene;
+}
+
+std::vector<PathDump> read_dumps(const fs::path& dir) {
+    std::vector<PathDump> dumps;
+    for (int f = 0;; ++f) {
+        char name[32];
+        std::snprintf(name, sizeof name, "frame_%04d.json", f);
+        if (!fs::exists(dir / name)) break;
+        dumps.push_back(read_path_dump(dir / name));
+    }
+    return dumps;
+}
+
+// Two sets with SLAMs of different lengths (512 and 1024 texels, same height and width, so
+// κ is the same): each set's on-screen period stays in its own factor-of-2 band,
+// (0.5, 1] · Lmax / κ. With one set of coherence parameters for all (the per-type loop that
+// left the last SLAM's length for every type) one of them would sit an octave off.
+TEST(LineSets, EachSetKeepsItsOwnTexturePeriod) {
+    const fs::path dir = test::temp_dir();
+    write_slam(dir / "short.exr", make_procedural_slam(SlamPattern::Dots, 9, 512, 16, 1));
+    write_slam(dir / "long.exr", make_procedural_slam(SlamPattern::Dots, 9, 1024, 16, 2));
+    const fs::path scene = spot_scene(
+        dir,
+        "[{\"name\": \"outline\", \"select\": {\"types\": [\"silhouette\"]}, "
+        "\"style\": {\"width\": 4, \"slam\": \"" + (dir / "short.exr").string() + "\"}},"
+        " {\"name\": \"inner\", \"select\": {\"types\": [\"suggestive\", \"crease\"]}, "
+        "\"style\": {\"width\": 4, \"slam\": \"" + (dir / "long.exr").string() + "\"}}]",
+        24, 72.0f);
+    const test::CommandResult r = test::run_linework("render '" + scene.string() + "' -o '" + (dir / "out").string() +
+                                                     "' --dump-paths '" + (dir / "dump").string() + "' --device cpu");
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const std::vector<PathDump> dumps = read_dumps(dir / "dump");
+    ASSERT_EQ(dumps.size(), 24u);
+    const float kappa = 16.0f / 4.0f;  // square texels: the SLAM's height over the width
+    for (const auto& [set, length] : {std::pair{"outline", 512.0f}, std::pair{"inner", 1024.0f}}) {
+        const StretchMeasure m = measure_stretch(paths_of_line_set(dumps, set));
+        ASSERT_GT(m.samples, 500u) << set;
+        const double period = length / kappa;
+        EXPECT_GE(m.share_in_band, 0.99) << set;
+        EXPECT_GT(m.band_low, 0.45 * period) << set;  // the band is (0.5, 1]·Lmax/κ
+        EXPECT_LT(m.band_low, 0.55 * period) << set;  // the other set's band starts an octave away
+        EXPECT_GT(m.median_ds_du, 0.5 * period) << set;
+        EXPECT_LE(m.median_ds_du, 1.0 * period + 1.0) << set;
+    }
+}
+
+// Dashes are laid along the coherent parameter: over an orbit they slide no more than SLAM
+// strokes on the same lines (the same tracker carries both), and in a still first frame a
+// straight run's dashes have the given lengths (the dash set starts at the tiling scale).
+TEST(LineSets, DashesFollowTheParameterization) {
+    const fs::path dir = test::temp_dir();
+    write_slam(dir / "slam.exr", make_procedural_slam(SlamPattern::Dots, 9, 256, 16, 1));
+    const fs::path scene = spot_scene(
+        dir,
+        "[{\"name\": \"dashed\", \"select\": {\"types\": [\"silhouette\"]}, "
+        "\"style\": {\"width\": 3, \"dashes\": [12, 6], \"cap\": \"butt\"}},"
+        " {\"name\": \"slam\", \"select\": {\"types\": [\"silhouette\"]}, "
+        "\"style\": {\"width\": 4, \"slam\": \"" + (dir / "slam.exr").string() + "\"}}]",
+        24, 72.0f);
+    const test::CommandResult r = test::run_linework("render '" + scene.string() + "' -o '" + (dir / "out").string() +
+                                                     "' --dump-paths '" + (dir / "dump").string() + "' --device cpu");
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const std::vector<PathDump> dumps = read_dumps(dir / "dump");
+    ASSERT_EQ(dumps.size(), 24u);
+    const SlidingMeasure dashed = measure_sliding(paths_of_line_set(dumps, "dashed"));
+    const SlidingMeasure slam = measure_sliding(paths_of_line_set(dumps, "slam"));
+    ASSERT_GT(dashed.pairs, 1000u);
+    // |Δt| in periods of each set's own texture length: compare in pixels along the path.
+    const double dashed_px = dashed.median_dt * 1024.0;      // no SLAM: T counts 1024-px lengths (κ 1)
+    const double slam_px = slam.median_dt * 256.0 / 4.0;      // Lmax / κ
+    EXPECT_LE(dashed_px, 1.25 * slam_px + 0.05) << "dashed " << dashed_px << " px, SLAM " << slam_px << " px";
+    // Frame 0: every dashed path starts at the tiling scale, T = s / 1024.
+    for (const DumpPath& path : paths_of_line_set({dumps.front()}, "dashed").front().paths)
+        EXPECT_NEAR(path.rho, 1.0f / 1024.0f, 1e-7f);
+}
+
+// One frame of a scene through the render command's path (RGBA target, the scene's camera at
+// the frame's time) and through the viewer's (the swapchain's BGRA format, the camera given
+// per frame, ribbons written back to the target) is the same image.
+TEST(LineSets, RenderAndViewerPathsGiveTheSameFrame) {
+    const fs::path dir = test::temp_dir();
+    write_slam(dir / "slam.exr", make_procedural_slam(SlamPattern::Pencil, 9, 256, 16, 3));
+    const fs::path scene = spot_scene(
+        dir,
+        "[{\"name\": \"outline\", \"select\": {\"types\": [\"silhouette\", \"border\"]}, "
+        "\"style\": {\"width\": 5, \"slam\": \"" + (dir / "slam.exr").string() + "\", \"taper\": 8}},"
+        " {\"name\": \"sugg\", \"select\": {\"types\": [\"suggestive\"]}, \"style\": {\"width\": 2, \"cap\": "
+        "\"round\", \"dashes\": [6, 4], \"color\": [0.2, 0.2, 0.6]}},"
+        " {\"name\": \"hidden\", \"select\": {\"visibility\": \"hidden\", \"types\": [\"silhouette\"]}, "
+        "\"style\": {\"width\": 1, \"alpha\": 0.3}}]",
+        1, 0.0f);
+    const test::CommandResult r =
+        test::run_linework("render '" + scene.string() + "' -o '" + (dir / "out").string() + "' --device cpu");
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const ImageRGBA8 rendered = read_image_rgba8(dir / "out/frame_0000.png");
+
+    Context ctx({.device = {DeviceChoice::Kind::Cpu}, .validation = true});
+    {
+        SceneSession session(ctx, load_scene_file(scene), {.color_format = VK_FORMAT_B8G8R8A8_UNORM});
+        const Frame frame = session.frame({.camera = session.scene().camera, .outputs = {.color = true},
+                                           .ribbons_to_target = true});
+        const ImageDiff d = compare_images(frame.image.color, rendered);
+        EXPECT_EQ(d.max_abs_error, 0) << d.psnr_db;
+        ASSERT_EQ(frame.sets.size(), 3u);
+        EXPECT_EQ(frame.sets[2].name, "hidden");
+        for (const ScreenPath& p : frame.sets[2].paths) EXPECT_FALSE(p.visible);
+    }
+    EXPECT_TRUE(ctx.validation_messages().empty());
+}
+
+TEST(LineSets, ShorthandIsOneSetPerType) {
+    LinesDesc lines;
+    lines.params.creases = false;
+    lines.styles[1].slam = "x.exr";
+    const std::vector<LineSetDesc> sets = effective_line_sets(lines);
+    ASSERT_EQ(sets.size(), size_t(kLineTypeCount));
+    for (int t = 0; t < kLineTypeCount; ++t) {
+        EXPECT_EQ(sets[size_t(t)].name, line_type_name(LineType(t)));
+        EXPECT_EQ(sets[size_t(t)].select.types, 1u << t);
+    }
+    EXPECT_FALSE(sets[2].enabled);
+    EXPECT_EQ(sets[1].style.slam, "x.exr");
+    EXPECT_EQ(sets[1].style.cap, Cap::Butt);
+    EXPECT_FALSE(extraction_params(lines, sets).creases);
+}
+
+TEST(LineSets, BadKeysNameThemselves) {
+    const std::pair<const char*, const char*> cases[] = {
+        {R"([{"select": {}}])", "line_sets[0]: name: required"},
+        {R"([{"name": "a b"}])", "line_sets[0]: name: letters, digits"},
+        {R"([{"name": "a"}, {"name": "a"}])", "line_sets[1]: name: \"a\" is used by an earlier set"},
+        {R"([{"name": "a", "select": {"types": ["ridge"]}}])", "line_sets[0].select: types: unknown line type \"ridge\""},
+        {R"([{"name": "a", "style": {"dashes": [0, 0]}}])", "line_sets[0].style: dashes: the pattern has no length"},
+        {R"([{"name": "a", "style": {"cap": "pointy"}}])", "line_sets[0].style: cap: must be one of"},
+        {R"([{"name": "a", "style": {"width_modifiers": [{"input": "along"}]}}])",
+         "line_sets[0].style.width_modifiers[0]: ramp: required"},
+        {R"([{"name": "a", "style": {"geometry": [{"kind": "wobble"}]}}])", "line_sets[0].style.geometry[0]: kind:"},
+        {R"([{"name": "a", "coherence": {"policy": "x"}}])", "line_sets[0].coherence: policy: must be one of"},
+        {R"([{"name": "a", "colour": 1}])", "line_sets[0]: colour: unknown key"},
+    };
+    for (const auto& [json, message] : cases) {
+        try {
+            (void)parse_scene_json(std::string("{\"model\": \"m.glb\", \"line_sets\": ") + json + "}", "s.json");
+            ADD_FAILURE() << json << ": no error";
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find(std::string("s.json: ") + message), std::string::npos)
+                << json << " gave: " << e.what();
+        }
+    }
+}
+
+TEST(LineSets, SelectByMaterialAndModel) {
+    // The milk truck has several materials; a set that selects one sees only its faces.
+    SceneDesc desc = scene_for_model(test::data_dir() / "models/CesiumMilkTruck/CesiumMilkTruck.glb");
+    desc.width = 320;
+    desc.height = 240;
+    const LoadedScene probe = load_scene(desc);
+    ASSERT_GE(probe.models[0].material_names.size(), 2u);
+    const std::string material = probe.models[0].material_names[0];
+    desc.lines.sets = {LineSetDesc{.name = "all"},
+                       LineSetDesc{.name = "one", .select = {.materials = {material}}},
+                       LineSetDesc{.name = "none", .select = {.models = {"other.glb"}}}};
+    Context ctx({.device = {DeviceChoice::Kind::Cpu}, .validation = true});
+    {
+        SceneSession session(ctx, desc);
+        const Frame frame = session.frame({.outputs = {.color = false}});
+        ASSERT_EQ(frame.sets.size(), 3u);
+        EXPECT_GT(frame.sets[0].paths.size(), frame.sets[1].paths.size());
+        EXPECT_GT(frame.sets[1].paths.size(), 0u) << material;
+        EXPECT_TRUE(frame.sets[2].paths.empty());
+    }
+    EXPECT_TRUE(ctx.validation_messages().empty());
+}
+
+}  // namespace
+}  // namespace lw

@@ -1,0 +1,125 @@
+#include "render_output.h"
+
+#include <cstdio>
+#include <fstream>
+
+#include "commands.h"
+#include "io/image_io.h"
+#include "render_state.h"
+
+#include <cstdio>
+
+namespace lw::cli {
+
+FrameRange parse_frames(const std::string& text) {
+    FrameRange range;
+    const auto colon = text.find(':');
+    try {
+        size_t used = 0;
+        if (colon == std::string::npos) {
+            range.first = range.last = std::stoi(text, &used);
+            if (used != text.size()) throw 0;
+        } else {
+            range.first = std::stoi(text.substr(0, colon), &used);
+            if (used != colon) throw 0;
+            range.last = std::stoi(text.substr(colon + 1), &used);
+            if (used != text.size() - colon - 1) throw 0;
+        }
+    } catch (...) {
+        throw usage_error("--frames: expected A:B (inclusive) or N, got \"" + text + "\"");
+    }
+    if (range.last < range.first) throw usage_error("--frames: " + text + " ends before it starts");
+    return range;
+}
+
+std::string frame_name(int frame, const char* extension) {
+    char name[64];
+    std::snprintf(name, sizeof name, "frame_%04d.%s", frame, extension);
+    return name;
+}
+
+namespace {
+
+void write_text(const std::filesystem::path& path, const std::string& text) {
+    std::ofstream out(path, std::ios::binary);
+    if (!out || !(out << text) || !out.flush()) throw Error(path.string() + ": cannot write");
+}
+
+std::filesystem::path svg_path(const FrameFiles& files, int f) {
+    std::filesystem::path svg(files.svg);
+    if (files.sequence) svg = svg.parent_path() / (svg.stem().string() + "_" + frame_name(f, "svg").substr(6));
+    return svg;
+}
+
+}  // namespace
+
+void write_frame_files(const FrameFiles& files, const SceneSession& session, const Frame& frame, int f) {
+    const SceneDesc& desc = session.desc();
+    if (files.exr)
+        write_atomically(files.out_dir / frame_name(f, "exr"), [&](const std::filesystem::path& file) {
+            write_exr(file, frame.image.color, frame.image.depth);
+        });
+    if (!files.svg.empty())
+        write_atomically(svg_path(files, f), [&](const std::filesystem::path& file) {
+            write_lines_svg(file, desc.width, desc.height, session.svg_groups(frame));
+        });
+    if (!files.dump_paths.empty())
+        write_atomically(std::filesystem::path(files.dump_paths) / frame_name(f, "json"),
+                         [&](const std::filesystem::path& file) {
+                             write_text(file, path_dump_json(f, desc.width, desc.height, session.dump_groups(frame),
+                                                             frame.layers));
+                         });
+    write_atomically(files.out_dir / frame_name(f, "png"),
+                     [&](const std::filesystem::path& file) { write_png(file, frame.image.color); });
+}
+
+void print_frame_report(const FrameFiles& files, const SceneSession& session, const Frame& frame, int f) {
+    std::printf("frame %d: %.2f ms", f, frame.timings.total_ms);
+    for (const PassTime& t : frame.timings.gpu)
+        if (t.ms >= 0.0) std::printf(" (GPU %s %.3f ms)", t.name.c_str(), t.ms);
+    std::printf("\n");
+    if (session.desc().lines.enabled && session.has_model()) {
+        size_t visible = 0;
+        for (const auto& p : frame.screen_paths) visible += p.visible;
+        std::printf("lines: %zu segments, %zu paths, %zu visible runs (chain %.2f ms, visibility %.2f ms)\n",
+                    frame.segments.size(), frame.paths.size(), visible, frame.timings.chain_ms,
+                    frame.timings.visibility_ms);
+    }
+    for (const SceneSession::RibbonReport& r : session.ribbon_reports())
+        std::printf("ribbons (%s): %zu paths in %.0f ms, %zu too short\n", r.line_set.c_str(), r.stats.paths, r.stats.ms,
+                    r.stats.skipped);
+    std::printf("wrote %s\n", (files.out_dir / frame_name(f, "png")).string().c_str());
+    if (files.exr) std::printf("wrote %s\n", (files.out_dir / frame_name(f, "exr")).string().c_str());
+    if (!files.svg.empty()) std::printf("wrote %s\n", files.svg.c_str());
+}
+
+int interrupted(int frame, int first) {
+    std::fflush(stdout);
+    if (frame >= first)
+        std::fprintf(stderr, "\nlinework: interrupted after frame %d (written); run the same command with --resume to go on\n",
+                     frame);
+    else
+        std::fprintf(stderr, "\nlinework: interrupted during the warm-up frames; nothing written\n");
+    return 130;
+}
+
+// --resume: the first frame still to render (the state restored), or past the range.
+int resume_point(const std::string& signature, const FrameFiles& files, FrameRange range, SceneSession& session) {
+    int first_missing = range.first;
+    while (first_missing <= range.last && std::filesystem::exists(files.out_dir / frame_name(first_missing, "png")))
+        ++first_missing;
+    if (first_missing > range.last || first_missing == range.first) return first_missing;
+    const std::filesystem::path state_path = files.out_dir / ".linework-state";
+    const RenderState state = read_render_state(state_path);
+    if (state.signature != signature)
+        throw Error(state_path.string() + ": written by a render with other options; rerun that command "
+                                          "with --resume, or remove the file to start over");
+    if (state.frame != first_missing - 1)
+        throw Error(state_path.string() + ": holds the state after frame " + std::to_string(state.frame) +
+                    ", but the first missing frame is " + std::to_string(first_missing));
+    session.restore({frame_time(first_missing - 1, range, session.desc().animation.fps).seconds, state.snapshot});
+    std::printf("resuming at frame %d (frames %d to %d already written)\n", first_missing, range.first, first_missing - 1);
+    return first_missing;
+}
+
+}  // namespace lw::cli

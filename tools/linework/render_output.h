@@ -1,0 +1,43 @@
+// tools/linework/render_output.h — what `linework render` writes per frame, and how a frame
+// range is given: frame file names, --frames, and the write of one finished frame (PNG
+// last, every file through a temporary name; render_state.h).
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "render/frame_renderer.h"
+#include "scene/camera_path.h"
+#include "session/scene_session.h"
+
+namespace lw::cli {
+
+// "A:B" (inclusive) or "N" (one frame); a usage error otherwise.
+[[nodiscard]] FrameRange parse_frames(const std::string& text);
+// frame_0007.png
+[[nodiscard]] std::string frame_name(int frame, const char* extension);
+
+struct FrameFiles {
+    std::filesystem::path out_dir;
+    std::string svg;         // --svg (per frame NAME_NNNN.svg in a sequence)
+    std::string dump_paths;  // --dump-paths folder
+    bool exr = false;
+    bool sequence = false;
+};
+
+// Writes the frame's files: EXR, SVG, dump, then the PNG (a frame whose PNG exists is
+// complete, which --resume relies on).
+void write_frame_files(const FrameFiles& files, const SceneSession& session, const Frame& frame, int f);
+
+// One line per frame of a single-frame render: time, GPU passes, lines, files written.
+void print_frame_report(const FrameFiles& files, const SceneSession& session, const Frame& frame, int f);
+
+// --resume: the first frame still to render, its state restored into `session` (past the
+// range when every frame is there). `signature`: the options that shape the frames.
+[[nodiscard]] int resume_point(const std::string& signature, const FrameFiles& files, FrameRange range,
+                               SceneSession& session);
+
+// After Ctrl-C: says what was written and how to go on; returns 130.
+int interrupted(int frame, int first);
+
+}  // namespace lw::cli

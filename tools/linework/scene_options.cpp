@@ -1,0 +1,73 @@
+#include "scene_options.h"
+
+#include <filesystem>
+
+#include "commands.h"
+
+namespace lw::cli {
+
+void add_scene_options(CLI::App* cmd, SceneOptions& o, bool offline) {
+    cmd->add_option("input", o.input, "Scene file (.json) or model (.gltf/.glb)")->required();
+    cmd->add_option("--device", o.device,
+                    "auto (discrete GPU if present, else lavapipe), cpu, gpu, or an index from `linework devices`")
+        ->capture_default_str();
+    cmd->add_option("--compute", o.compute, kComputeSiteHelp)->capture_default_str();
+    cmd->add_option("--size", o.size, offline ? "Image size WxH (default: the scene's, else 960x720)"
+                                              : "Window size WxH (default: the scene's, else 960x720)");
+    cmd->add_option("--slam", o.slam, "Draw silhouettes and suggestive contours as strokes textured by this SLAM (.exr)");
+    cmd->add_option("--stroke-width", o.stroke_width, "Width of SLAM strokes in pixels (default 6)")
+        ->check(CLI::PositiveNumber);
+    cmd->add_option("--param", o.param,
+                    "Stroke parameterization: coherent (default; Bénard et al. 2010 §4), arclength (tiling) or "
+                    "stretch (one texture per path)")
+        ->check(CLI::IsMember({"coherent", "arclength", "stretch"}));
+    cmd->add_option("--splat-radius", o.splat_radius,
+                    "δ of the parameterization sprites, pixels (default: twice the sample spacing); larger keeps "
+                    "fast lines coherent, smaller keeps nearby lines apart (§4.1)")
+        ->check(CLI::PositiveNumber);
+    cmd->add_flag("--validation", o.validation,
+                  "Enable the Khronos validation layer; any warning or error fails the run (also LINEWORK_VALIDATION=1)");
+    if (!offline) return;
+    cmd->add_option("--length-scale", o.length_scale,
+                    "κ: SLAM periods per native texture length (default: square texels, the SLAM's height over "
+                    "the stroke width)")
+        ->check(CLI::PositiveNumber);
+    cmd->add_option("--inlier-px", o.inlier_px, "RANSAC inlier distance along the path, pixels (§4.2)")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
+    cmd->add_option("--min-stroke-length", o.min_stroke_length,
+                    "Visible paths shorter than this many pixels are not drawn as strokes, splatted or dumped "
+                    "(0 keeps every fragment)")
+        ->check(CLI::NonNegativeNumber)
+        ->capture_default_str();
+}
+
+SceneDesc scene_from_options(const SceneOptions& o) {
+    const std::filesystem::path input(o.input);
+    if (!std::filesystem::exists(input)) throw Error(o.input + ": no such file");
+    SceneDesc desc = is_model_path(input) ? scene_for_model(input) : load_scene_file(input);
+    if (!o.size.empty()) {
+        const glm::ivec2 size = parse_size(o.size, "--size");
+        desc.width = size.x;
+        desc.height = size.y;
+    }
+    if (!o.slam.empty()) use_slam_strokes(desc.lines, o.slam, o.stroke_width);
+    return desc;
+}
+
+SessionOptions session_options(const SceneOptions& o, const SceneDesc& desc) {
+    SessionOptions session;
+    CoherenceParams& c = session.coherence;
+    if (o.param == "arclength") c.policy = ParamPolicy::Arclength;
+    if (o.param == "stretch") c.policy = ParamPolicy::Stretch;
+    c.splat_radius_px = o.splat_radius > 0.0f ? o.splat_radius : desc.lines.sample_spacing_px * 2.0f;
+    c.ransac.inlier_px = o.inlier_px;
+    c.min_stroke_length_px = o.min_stroke_length;
+    session.length_scale = o.length_scale;
+    session.coherent = !o.param.empty();
+    return session;
+}
+
+bool validation_on(const SceneOptions& o) { return o.validation || validation_from_environment(); }
+
+}  // namespace lw::cli

@@ -1,0 +1,41 @@
+// tools/linework/scene_options.h — the command-line options `render` and `view` share, and
+// what they make: the scene description with the overrides applied, the session's options
+// and the Vulkan context's. Flags live here, in tools/; the engine speaks in scene keys.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "gpu/context.h"
+#include "scene/scene_file.h"
+#include "session/scene_session.h"
+
+namespace lw::cli {
+
+struct SceneOptions {
+    std::string input;
+    std::string device = "auto";
+    std::string compute = "auto";
+    std::string size;
+    std::string slam;
+    float stroke_width = 6.0f;
+    std::string param;
+    float splat_radius = 0.0f;  // 0: twice the sample spacing
+    float inlier_px = 1.5f;
+    float min_stroke_length = CoherenceParams{}.min_stroke_length_px;
+    float length_scale = 0.0f;  // 0: square texels (the SLAM's height over the stroke width)
+    bool validation = false;
+};
+
+// Registers the shared options on `cmd` (render: `offline` adds the ones only it has).
+void add_scene_options(CLI::App* cmd, SceneOptions& o, bool offline);
+
+// The scene file or bare model with --size and --slam applied; errors name the file.
+[[nodiscard]] SceneDesc scene_from_options(const SceneOptions& o);
+// Policy, splat radius, RANSAC inlier distance, fragment length and κ.
+[[nodiscard]] SessionOptions session_options(const SceneOptions& o, const SceneDesc& desc);
+[[nodiscard]] bool validation_on(const SceneOptions& o);
+
+}  // namespace lw::cli

@@ -1,0 +1,154 @@
+#include "view_input.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <numeric>
+
+#include <GLFW/glfw3.h>
+
+#include "core/error.h"
+#include "io/image_io.h"
+#include "view_keys.h"
+
+namespace lw::cli {
+
+namespace {
+
+void on_key(GLFWwindow* window, int key, int /*scancode*/, int action, int /*mods*/) {
+    auto* input = static_cast<Input*>(glfwGetWindowUserPointer(window));
+    if (!input || input->ui_keyboard) return;
+    const bool repeatable = key == GLFW_KEY_LEFT || key == GLFW_KEY_RIGHT || key == GLFW_KEY_UP || key == GLFW_KEY_DOWN ||
+                            key == GLFW_KEY_EQUAL || key == GLFW_KEY_MINUS || key == GLFW_KEY_LEFT_BRACKET ||
+                            key == GLFW_KEY_RIGHT_BRACKET;
+    if (action == GLFW_PRESS || (action == GLFW_REPEAT && repeatable)) apply_key(*input->state, key);
+}
+
+void on_scroll(GLFWwindow* window, double /*dx*/, double dy) {
+    if (auto* input = static_cast<Input*>(glfwGetWindowUserPointer(window))) input->scroll += dy;
+}
+
+double median(std::vector<double> v) {
+    if (v.empty()) return 0.0;
+    std::sort(v.begin(), v.end());
+    const size_t n = v.size();
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+std::string numbered(const std::string& dir, const char* stem, int n, const char* ext) {
+    char name[64];
+    std::snprintf(name, sizeof name, "%s_%04d.%s", stem, n, ext);
+    return (std::filesystem::path(dir) / name).string();
+}
+
+}  // namespace
+
+void save_view_file(ViewerState& s, VkExtent2D extent) {
+    const std::string path = s.save_path == "*" ? numbered(s.output_dir, "linework_view", s.saves_done, "json") : s.save_path;
+    SceneDesc saved = s.desc;
+    saved.width = int(extent.width);
+    saved.height = int(extent.height);
+    std::ofstream out(path, std::ios::binary);
+    out << scene_json(saved, s.camera.view(), std::filesystem::path(path).parent_path());
+    if (!out.flush()) throw Error(path + ": cannot write");
+    ++s.saves_done;
+    s.message = "wrote " + path;
+    std::printf("%s\n", s.message.c_str());
+    s.save_path.clear();
+}
+
+void write_screenshot(ViewerState& s, const ImageRGBA8& shot) {
+    const std::string path =
+        s.screenshot_path == "*" ? numbered(s.output_dir, "linework_view", s.screenshots_taken, "png") : s.screenshot_path;
+    write_png(path, shot);
+    ++s.screenshots_taken;
+    s.message = "wrote " + path;
+    std::printf("%s\n", s.message.c_str());
+    s.screenshot_path.clear();
+}
+
+void install_callbacks(Window& window, Input& input) {
+    glfwSetWindowUserPointer(window.get(), &input);
+    glfwSetKeyCallback(window.get(), &on_key);
+    glfwSetScrollCallback(window.get(), &on_scroll);
+    glfwGetCursorPos(window.get(), &input.last_mouse.x, &input.last_mouse.y);
+}
+
+void handle_mouse(Window& window, const UiOverlay& ui, Input& input, float height) {
+    ViewerState& s = *input.state;
+    glm::dvec2 mouse;
+    glfwGetCursorPos(window.get(), &mouse.x, &mouse.y);
+    const glm::dvec2 delta = mouse - input.last_mouse;
+    input.last_mouse = mouse;
+    if (!ui.wants_mouse()) {
+        const bool left = glfwGetMouseButton(window.get(), GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+        const bool shift = glfwGetKey(window.get(), GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS;
+        const bool pan = glfwGetMouseButton(window.get(), GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS ||
+                         glfwGetMouseButton(window.get(), GLFW_MOUSE_BUTTON_MIDDLE) == GLFW_PRESS || (left && shift);
+        if (pan && (delta.x != 0.0 || delta.y != 0.0))
+            s.camera.pan(float(delta.x), float(delta.y), height);
+        else if (left && (delta.x != 0.0 || delta.y != 0.0))
+            s.camera.orbit(-0.3f * float(delta.x), 0.3f * float(delta.y));
+        if (input.scroll != 0.0) s.camera.zoom(float(std::pow(1.1, input.scroll)));
+    }
+    input.scroll = 0.0;
+}
+
+void play_script(ScriptPlayer& player, Window& window, Input& input, float height, const std::function<void()>& save_view) {
+    ViewerState& s = *input.state;
+    for (const ScriptCommand& c : player.next_frame()) switch (c.kind) {
+            case ScriptCommand::Kind::Orbit: s.camera.orbit(c.a, c.b); break;
+            case ScriptCommand::Kind::Zoom: s.camera.zoom(c.a); break;
+            case ScriptCommand::Kind::Pan: s.camera.pan(c.a, c.b, height); break;
+            case ScriptCommand::Kind::Key: apply_key(s, key_from_name(c.text)); break;
+            case ScriptCommand::Kind::Resize: glfwSetWindowSize(window.get(), int(c.a), int(c.b)); break;
+            case ScriptCommand::Kind::Minimize:
+                glfwIconifyWindow(window.get());
+                input.script_minimized = true;
+                break;
+            case ScriptCommand::Kind::Restore:
+                glfwRestoreWindow(window.get());
+                input.script_minimized = false;
+                break;
+            case ScriptCommand::Kind::Screenshot: s.screenshot_path = c.text; break;
+            case ScriptCommand::Kind::Save:
+                s.save_path = c.text;
+                save_view();
+                break;
+            case ScriptCommand::Kind::Quit: s.quit = true; break;
+            case ScriptCommand::Kind::Wait: break;
+        }
+}
+
+void ViewStats::add(const ViewerState& s, const FrameTimings& timings) {
+    frame_ms.push_back(s.frame_ms);
+    render += s.render_ms;
+    present += s.present_ms;
+    extract += timings.extract_ms;
+    chain += timings.chain_ms;
+    visibility += timings.visibility_ms;
+    coherence += timings.coherence_ms;
+    if (gpu.size() != s.gpu.size()) {  // the passes of the first timed frame
+        gpu = s.gpu;
+        for (PassTime& t : gpu) t.ms = 0.0;
+    }
+    for (size_t i = 0; i < gpu.size(); ++i) gpu[i].ms += s.gpu[i].ms;
+}
+
+void ViewStats::print(uint32_t width, uint32_t height) const {
+    if (frame_ms.empty()) return;
+    const double n = double(frame_ms.size());
+    const double mean = std::accumulate(frame_ms.begin(), frame_ms.end(), 0.0) / n;
+    const double med = median(frame_ms);
+    std::printf("frames: %zu at %ux%u, frame time mean %.2f ms, median %.2f ms, %.1f fps (median)\n", frame_ms.size(),
+                width, height, mean, med, med > 0.0 ? 1000.0 / med : 0.0);
+    std::printf("mean per frame: render %.2f ms (host extraction %.2f, chain %.2f, visibility %.2f, coherence %.2f), "
+                "present %.2f ms\n",
+                render / n, extract / n, chain / n, visibility / n, coherence / n, present / n);
+    for (const PassTime& t : gpu)
+        if (t.ms >= 0.0) std::printf("  GPU %s: %.3f ms\n", t.name.c_str(), t.ms / n);
+}
+
+}  // namespace lw::cli
