@@ -103,8 +103,9 @@ TEST(LineSets, DashesFollowTheParameterization) {
     const double slam_px = slam.median_dt * 256.0 / 4.0;      // Lmax / κ
     EXPECT_LE(dashed_px, 1.25 * slam_px + 0.05) << "dashed " << dashed_px << " px, SLAM " << slam_px << " px";
     // Frame 0: every dashed path starts at the tiling scale, T = s / 1024.
-    for (const DumpPath& path : paths_of_line_set({dumps.front()}, "dashed").front().paths)
-        EXPECT_NEAR(path.rho, 1.0f / 1024.0f, 1e-7f);
+    const std::vector<PathDump> first = paths_of_line_set({dumps.front()}, "dashed");
+    ASSERT_FALSE(first.front().paths.empty());
+    for (const DumpPath& path : first.front().paths) EXPECT_NEAR(path.rho, 1.0f / 1024.0f, 1e-7f);
 }
 
 // One frame of a scene through the render command's path (RGBA target, the scene's camera at
@@ -159,17 +160,17 @@ TEST(LineSets, ShorthandIsOneSetPerType) {
 
 TEST(LineSets, BadKeysNameThemselves) {
     const std::pair<const char*, const char*> cases[] = {
-        {R"([{"select": {}}])", "line_sets[0]: name: required"},
-        {R"([{"name": "a b"}])", "line_sets[0]: name: letters, digits"},
-        {R"([{"name": "a"}, {"name": "a"}])", "line_sets[1]: name: \"a\" is used by an earlier set"},
-        {R"([{"name": "a", "select": {"types": ["ridge"]}}])", "line_sets[0].select: types: unknown line type \"ridge\""},
-        {R"([{"name": "a", "style": {"dashes": [0, 0]}}])", "line_sets[0].style: dashes: the pattern has no length"},
-        {R"([{"name": "a", "style": {"cap": "pointy"}}])", "line_sets[0].style: cap: must be one of"},
+        {R"([{"select": {}}])", "line_sets[0].name: required"},
+        {R"([{"name": "a b"}])", "line_sets[0].name: letters, digits"},
+        {R"([{"name": "a"}, {"name": "a"}])", "line_sets[1].name: \"a\" is used by an earlier set"},
+        {R"([{"name": "a", "select": {"types": ["ridge"]}}])", "line_sets[0].select.types: unknown line type \"ridge\""},
+        {R"([{"name": "a", "style": {"dashes": [0, 0]}}])", "line_sets[0].style.dashes: the pattern has no length"},
+        {R"([{"name": "a", "style": {"cap": "pointy"}}])", "line_sets[0].style.cap: must be one of"},
         {R"([{"name": "a", "style": {"width_modifiers": [{"input": "along"}]}}])",
-         "line_sets[0].style.width_modifiers[0]: ramp: required"},
-        {R"([{"name": "a", "style": {"geometry": [{"kind": "wobble"}]}}])", "line_sets[0].style.geometry[0]: kind:"},
-        {R"([{"name": "a", "coherence": {"policy": "x"}}])", "line_sets[0].coherence: policy: must be one of"},
-        {R"([{"name": "a", "colour": 1}])", "line_sets[0]: colour: unknown key"},
+         "line_sets[0].style.width_modifiers[0].ramp: required"},
+        {R"([{"name": "a", "style": {"geometry": [{"kind": "wobble"}]}}])", "line_sets[0].style.geometry[0].kind:"},
+        {R"([{"name": "a", "coherence": {"policy": "x"}}])", "line_sets[0].coherence.policy: must be one of"},
+        {R"([{"name": "a", "colour": 1}])", "line_sets[0].colour: unknown key"},
     };
     for (const auto& [json, message] : cases) {
         try {
