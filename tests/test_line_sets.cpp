@@ -33,13 +33,21 @@ fs::path spot_scene(const fs::path& dir, const std::string& line_sets, int frame
     return scene;
 }
 
-std::vector<PathDump> read_dumps(const fs::path& dir) {
+// `linework render SCENE --dump-paths` into `dir`; the dumps in frame order (none, and a
+// failure, when the render fails).
+std::vector<PathDump> render_dumps(const fs::path& scene, const fs::path& dir) {
+    const test::CommandResult r = test::run_linework("render '" + scene.string() + "' -o '" + (dir / "out").string() +
+                                                     "' --dump-paths '" + (dir / "dump").string() + "' --device cpu");
     std::vector<PathDump> dumps;
+    if (r.exit_code != 0) {
+        ADD_FAILURE() << r.output;
+        return dumps;
+    }
     for (int f = 0;; ++f) {
         char name[32];
         std::snprintf(name, sizeof name, "frame_%04d.json", f);
-        if (!fs::exists(dir / name)) break;
-        dumps.push_back(read_path_dump(dir / name));
+        if (!fs::exists(dir / "dump" / name)) break;
+        dumps.push_back(read_path_dump(dir / "dump" / name));
     }
     return dumps;
 }
@@ -59,10 +67,7 @@ TEST(LineSets, EachSetKeepsItsOwnTexturePeriod) {
         " {\"name\": \"inner\", \"select\": {\"types\": [\"suggestive\", \"crease\"]}, "
         "\"style\": {\"width\": 4, \"slam\": \"" + (dir / "long.exr").string() + "\"}}]",
         24, 72.0f);
-    const test::CommandResult r = test::run_linework("render '" + scene.string() + "' -o '" + (dir / "out").string() +
-                                                     "' --dump-paths '" + (dir / "dump").string() + "' --device cpu");
-    ASSERT_EQ(r.exit_code, 0) << r.output;
-    const std::vector<PathDump> dumps = read_dumps(dir / "dump");
+    const std::vector<PathDump> dumps = render_dumps(scene, dir);
     ASSERT_EQ(dumps.size(), 24u);
     const float kappa = 16.0f / 4.0f;  // square texels: the SLAM's height over the width
     for (const auto& [set, length] : {std::pair{"outline", 512.0f}, std::pair{"inner", 1024.0f}}) {
@@ -90,10 +95,7 @@ TEST(LineSets, DashesFollowTheParameterization) {
         " {\"name\": \"slam\", \"select\": {\"types\": [\"silhouette\"]}, "
         "\"style\": {\"width\": 4, \"slam\": \"" + (dir / "slam.exr").string() + "\"}}]",
         24, 72.0f);
-    const test::CommandResult r = test::run_linework("render '" + scene.string() + "' -o '" + (dir / "out").string() +
-                                                     "' --dump-paths '" + (dir / "dump").string() + "' --device cpu");
-    ASSERT_EQ(r.exit_code, 0) << r.output;
-    const std::vector<PathDump> dumps = read_dumps(dir / "dump");
+    const std::vector<PathDump> dumps = render_dumps(scene, dir);
     ASSERT_EQ(dumps.size(), 24u);
     const SlidingMeasure dashed = measure_sliding(paths_of_line_set(dumps, "dashed"));
     const SlidingMeasure slam = measure_sliding(paths_of_line_set(dumps, "slam"));

@@ -1,5 +1,7 @@
 #include "render/frame_renderer.h"
 
+#include <algorithm>
+
 
 #include "core/error.h"
 #include "core/timer.h"
@@ -169,7 +171,8 @@ Frame FrameRenderer::render(const CameraMatrices& camera, const glm::vec3& eye, 
         frame.layers = layers_->prepare(*layers, coherence != nullptr, lines.sample_spacing_px);
         frame.timings.coherence_ms += layer_timer.elapsed_ms();
     }
-    if (!stroke_pass_ && (layers_ || !strokes.empty())) stroke_pass_ = std::make_unique<StrokePass>(*ctx_, target_.color.format());
+    const bool any_strokes = std::any_of(strokes.begin(), strokes.end(), [](const auto& s) { return !s.empty(); });
+    if (!stroke_pass_ && (layers_ || any_strokes)) stroke_pass_ = std::make_unique<StrokePass>(*ctx_, target_.color.format());
 
     // (2) Line sets in order, then layers, over the surface; colour read back. Vertex
     // buffers must outlive the submission.
@@ -213,7 +216,6 @@ void FrameRenderer::prepare_sets(Frame& frame, const std::vector<LineSetDesc>& s
                         ? select_line_set(frame.screen_paths, set, groups)
                         : select_line_set(compute_visibility(frame.paths, camera, depth, {.sample_spacing_px = spacing}),
                                           set, groups);
-        const bool textured = state.texture != nullptr || needs_parameterization(set.style);
         if (coherence) {
             if (!state.tracker) state.tracker = std::make_unique<CoherenceTracker>(*ctx_, target_.width, target_.height);
             out.params = state.tracker->update(out.paths, camera, surface, out.coherence);
@@ -229,7 +231,7 @@ void FrameRenderer::prepare_sets(Frame& frame, const std::vector<LineSetDesc>& s
         for (size_t p = 0; p < out.paths.size(); ++p) {
             // Hidden runs have no fit: they tile.
             const PathParam& param = !out.params.empty() && out.paths[p].visible ? out.params[p] : tiled[p];
-            const StrokeParams stroke{.rho = param.rho, .phi = param.phi, .fold = textured ? param.fold : SlamFold{},
+            const StrokeParams stroke{.rho = param.rho, .phi = param.phi, .fold = param.fold,
                                       .width = set.style.width, .color = set.style.color};
             append_styled_stroke(out.paths[p], stroke, set.style, period_px(out.coherence), strokes[i]);
         }

@@ -13,12 +13,6 @@ using scene_detail::ObjectReader;
 
 namespace {
 
-std::string resolve_file(ObjectReader& r, const std::string& key, const std::filesystem::path& file) {
-    const std::filesystem::path p(r.string_of(key));
-    if (p.empty()) r.fail_key(key, "expected a file name");
-    return (p.is_absolute() ? p : file.parent_path() / p).string();
-}
-
 std::vector<std::string> strings(ObjectReader& r, const std::string& key) {
     const json& v = r.at(key);
     if (!v.is_array()) r.fail_key(key, "expected an array of strings");
@@ -189,8 +183,8 @@ LineSetStyle read_style(ObjectReader& set, const std::filesystem::path& file) {
     if (r.has("alpha")) style.alpha = float(r.number("alpha", 0.0, 1.0));
     if (r.has("width")) style.width = float(r.number("width", 0.1, 256.0));
     if (r.has("fade")) style.fade = r.boolean("fade");
-    if (r.has("slam")) style.slam = resolve_file(r, "slam", file);
-    if (r.has("ribbon")) style.ribbon = resolve_file(r, "ribbon", file);
+    if (r.has("slam")) style.slam = r.file_path("slam", "a SLAM file (.exr)");
+    if (r.has("ribbon")) style.ribbon = r.file_path("ribbon", "a ribbon exemplar image (.png)");
     if (!style.slam.empty() && !style.ribbon.empty()) r.fail_key("ribbon", "a set is drawn with a SLAM or a ribbon, not both");
     if (r.has("ribbon_scale")) style.ribbon_scale = float(r.number("ribbon_scale", 1.0, 4096.0));
     read_shape(r, style);

@@ -17,6 +17,12 @@ namespace lw::scene_detail {
 
 using json = nlohmann::json;
 
+// A path written in a scene file: relative ones are relative to the file's folder.
+inline std::string resolve_against(const std::filesystem::path& file, const std::string& name) {
+    const std::filesystem::path p(name);
+    return (p.is_absolute() ? p : file.parent_path() / p).string();
+}
+
 // Reads one JSON object, remembering which keys were consumed so that the rest can be
 // reported as unknown. `where` is the key path used in messages ("" for the root).
 class ObjectReader {
@@ -65,6 +71,14 @@ public:
             fail_key(key, "must be one of " + list + ", got \"" + s + "\"");
         }
         return s;
+    }
+
+    // A non-empty file name, resolved against the scene file's folder; `what` says what the
+    // file should be ("a SLAM file (.exr)") when it is empty.
+    std::string file_path(const std::string& key, const std::string& what) {
+        const std::string name = string_of(key);
+        if (name.empty()) fail_key(key, "expected " + what);
+        return resolve_against(file_, name);
     }
 
     glm::vec3 vec3(const std::string& key, double lo = -1e30, double hi = 1e30) {

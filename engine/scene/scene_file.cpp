@@ -139,17 +139,9 @@ LineStyle read_line_type(ObjectReader& lines, LineType type, const std::filesyst
     if (r.has("enabled")) enabled = r.boolean("enabled");
     if (r.has("width")) style.width = static_cast<float>(r.number("width", 0.1, 64.0));
     if (r.has("color")) style.color = r.vec3("color", 0.0, 1.0);
-    if (r.has("slam")) {
-        const std::filesystem::path slam(r.string_of("slam"));
-        if (slam.empty()) r.fail_key("slam", "expected a SLAM file (.exr)");
-        style.slam = (slam.is_absolute() ? slam : file.parent_path() / slam).string();
-    }
+    if (r.has("slam")) style.slam = r.file_path("slam", "a SLAM file (.exr)");
     if (r.has("taper")) style.taper_px = static_cast<float>(r.number("taper", 0.0, 4096.0));
-    if (r.has("ribbon")) {
-        const std::filesystem::path ribbon(r.string_of("ribbon"));
-        if (ribbon.empty()) r.fail_key("ribbon", "expected a ribbon exemplar image (.png)");
-        style.ribbon = (ribbon.is_absolute() ? ribbon : file.parent_path() / ribbon).string();
-    }
+    if (r.has("ribbon")) style.ribbon = r.file_path("ribbon", "a ribbon exemplar image (.png)");
     if (r.has("ribbon_scale")) style.ribbon_scale = static_cast<float>(r.number("ribbon_scale", 1.0, 4096.0));
     if (!style.ribbon.empty() && !style.slam.empty())
         r.fail_key("ribbon", "a line type is drawn with a SLAM or a ribbon, not both");
@@ -218,17 +210,11 @@ LayerTransform read_layer_transform(ObjectReader& r) {
     return t;
 }
 
-std::string resolve(const std::filesystem::path& base, const std::string& name) {
-    const std::filesystem::path p(name);
-    return (p.is_absolute() ? p : base / p).string();
-}
-
 // "layers": [{"strokes": FILE, "color", "width_scale", "scale_widths", "outline", "fill",
 //             "slam" | "ribbon" (+ "ribbon_scale"), "taper", "transform" | "keyframes"}, ...]
 std::vector<VectorLayerDesc> read_layers(ObjectReader& scene, const std::filesystem::path& file) {
     const json& list = scene.at("layers");
     if (!list.is_array()) scene.fail_key("layers", "expected an array of layers");
-    const std::filesystem::path base = file.parent_path();
     std::vector<VectorLayerDesc> layers;
     for (size_t i = 0; i < list.size(); ++i) {
         ObjectReader r(list[i], "layers[" + std::to_string(i) + "]", file);
@@ -236,14 +222,14 @@ std::vector<VectorLayerDesc> read_layers(ObjectReader& scene, const std::filesys
         if (!r.has("strokes")) r.fail_key("strokes", "required (a stroke file, .json or .svg)");
         layer.strokes = r.string_of("strokes");
         if (layer.strokes.empty()) r.fail_key("strokes", "expected a stroke file (.json or .svg)");
-        layer.strokes = resolve(base, layer.strokes);
+        layer.strokes = scene_detail::resolve_against(file, layer.strokes);
         if (r.has("color")) layer.color = r.vec3("color", 0.0, 1.0);
         if (r.has("width_scale")) layer.width_scale = static_cast<float>(r.number("width_scale", 0.0, 1000.0));
         if (r.has("scale_widths")) layer.scale_widths = r.boolean("scale_widths");
         if (r.has("outline")) layer.outline = r.boolean("outline");
         if (r.has("fill")) layer.fill = r.vec3("fill", 0.0, 1.0);
-        if (r.has("slam")) layer.slam = resolve(base, r.string_of("slam"));
-        if (r.has("ribbon")) layer.ribbon = resolve(base, r.string_of("ribbon"));
+        if (r.has("slam")) layer.slam = scene_detail::resolve_against(file, r.string_of("slam"));
+        if (r.has("ribbon")) layer.ribbon = scene_detail::resolve_against(file, r.string_of("ribbon"));
         if (!layer.slam.empty() && !layer.ribbon.empty())
             r.fail_key("ribbon", "a layer is drawn with a SLAM or a ribbon, not both");
         if (r.has("ribbon_scale")) layer.ribbon_scale = static_cast<float>(r.number("ribbon_scale", 1.0, 4096.0));
@@ -285,7 +271,6 @@ SceneDesc parse_scene_json(const std::string& text, const std::filesystem::path&
 
     SceneDesc scene;
     scene.source = source;
-    const std::filesystem::path base = source.parent_path();
     ObjectReader r(root, "", source);
 
     if (r.has("version") && r.number("version", 1, 1) != 1) r.fail_key("version", "unsupported");
@@ -308,7 +293,7 @@ SceneDesc parse_scene_json(const std::string& text, const std::filesystem::path&
         for (const auto& name : names) {
             std::filesystem::path p(name);
             if (!is_model_path(p)) r.fail_key("model", "\"" + name + "\" is not a .gltf or .glb file");
-            scene.models.push_back(p.is_absolute() ? p : base / p);
+            scene.models.push_back(scene_detail::resolve_against(source, name));
         }
     }
     if (r.has("size")) {

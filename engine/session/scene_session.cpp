@@ -116,14 +116,6 @@ bool SceneSession::has_ribbons() const {
     return layer_ribbons;
 }
 
-void SceneSession::set_line_set_enabled(size_t set, bool on) {
-    if (set >= sets_.size()) throw Error("line set " + std::to_string(set) + ": no such set");
-    sets_[set].enabled = on;
-    // The shorthand's switch is its type's.
-    if (desc_.lines.sets.empty()) set_line_type_enabled(desc_.lines.params, LineType(set), on);
-    else desc_.lines.sets[set].enabled = on;
-}
-
 void SceneSession::set_line_set_textured(size_t set, bool on) {
     if (set >= sets_.size() || !slams_[set]) return;
     textured_[set] = on;

@@ -74,13 +74,12 @@ public:
     const std::vector<LineSetDesc>& line_sets() const { return sets_; }
     bool has_ribbons() const;
 
-    // The lines as edited live (the viewer's panel): thresholds, sets on and off, widths
-    // and colours. A set's SLAM or ribbon and a crease angle are fixed at construction (or
+    // The lines as edited live (the viewer's panel): thresholds, sets on and off (the
+    // shorthand's type switches or a set's "enabled"), widths and colours. A set's SLAM or ribbon and a crease angle are fixed at construction (or
     // after rebuild_lines()).
     LinesDesc& lines() { return desc_.lines; }
     SurfaceStyle& surface() { return desc_.style; }
     CoherenceParams& coherence() { return options_.coherence; }  // the base (viewer: policy, radius)
-    void set_line_set_enabled(size_t set, bool on);
     // The line mesh again (a new crease angle); temporal state starts afresh.
     void rebuild_lines();
     // Whether a set's SLAM is drawn (the viewer's style switch; the SLAM stays loaded).

@@ -86,8 +86,10 @@ int run_view(const ViewOptions& o) {
         SessionOptions options = session_options(o.scene, desc);
         options.color_format = swapchain.format();  // the frame reaches the window by a copy
         options.subdivide = o.subdivide;
-        SceneSession session(ctx, desc, options);
-        session.resize(swapchain.extent().width, swapchain.extent().height);
+        SceneDesc sized = desc;  // the window's framebuffer may differ from the scene's size
+        sized.width = int(swapchain.extent().width);
+        sized.height = int(swapchain.extent().height);
+        SceneSession session(ctx, sized, options);
         std::printf("scene: %s (%zu triangles)\n", o.scene.input.c_str(), session.scene().mesh.triangle_count());
         ViewerState s = initial_state(session, o);
         s.coherence = session.coherence();
