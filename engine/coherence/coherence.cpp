@@ -202,7 +202,7 @@ CoherenceTracker::CoherenceTracker(const Context& ctx, uint32_t width, uint32_t 
     vkGetPhysicalDeviceFormatProperties(ctx.physical_device(), VK_FORMAT_R32G32B32A32_SFLOAT, &props);
     if (!(props.optimalTilingFeatures & VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BLEND_BIT))
         throw Error(ctx.info().name + " cannot blend into RGBA32F attachments, which the parameterization splat needs "
-                                      "(--compute host splats on the host)");
+                                      "(the host compute site splats on the host)");
     splat_image_ = Image(ctx, {.width = width, .height = height, .format = VK_FORMAT_R32G32B32A32_SFLOAT,
                                .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                                .name = "parameterization splat"});

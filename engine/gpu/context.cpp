@@ -100,9 +100,10 @@ std::string list_for_message(const std::vector<DeviceInfo>& devices) {
 int choose_device(const std::vector<DeviceInfo>& devices, const DeviceChoice& choice) {
     if (choice.kind == DeviceChoice::Kind::Index) {
         if (choice.index < 0 || choice.index >= static_cast<int>(devices.size()))
-            throw Error("--device " + std::to_string(choice.index) + ": no such device; " + list_for_message(devices));
+            throw ParameterError("device", " " + std::to_string(choice.index) + ": no such device; " + list_for_message(devices), 1);
         const DeviceInfo& d = devices[static_cast<size_t>(choice.index)];
-        if (!d.suitable) throw Error("--device " + std::to_string(choice.index) + ": " + d.name + " " + d.unsuitable_reason);
+        if (!d.suitable)
+            throw ParameterError("device", " " + std::to_string(choice.index) + ": " + d.name + " " + d.unsuitable_reason, 1);
         return choice.index;
     }
     int best = -1;
@@ -114,10 +115,11 @@ int choose_device(const std::vector<DeviceInfo>& devices, const DeviceChoice& ch
         if (best < 0 || type_rank(d.type) < type_rank(devices[static_cast<size_t>(best)].type)) best = d.index;
     }
     if (best < 0) {
-        const char* what = choice.kind == DeviceChoice::Kind::Cpu   ? "--device cpu: no CPU Vulkan device (lavapipe) found"
-                           : choice.kind == DeviceChoice::Kind::Gpu ? "--device gpu: no GPU Vulkan device found"
-                                                                    : "no suitable Vulkan device found";
-        throw Error(std::string(what) + "; " + list_for_message(devices));
+        if (choice.kind == DeviceChoice::Kind::Cpu)
+            throw ParameterError("device", " cpu: no CPU Vulkan device (lavapipe) found; " + list_for_message(devices), 1);
+        if (choice.kind == DeviceChoice::Kind::Gpu)
+            throw ParameterError("device", " gpu: no GPU Vulkan device found; " + list_for_message(devices), 1);
+        throw Error("no suitable Vulkan device found; " + list_for_message(devices));
     }
     return best;
 }
@@ -177,14 +179,14 @@ DeviceChoice parse_device_choice(const std::string& text) {
     if (!text.empty() && std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; }) &&
         text.size() < 6)
         return {DeviceChoice::Kind::Index, std::stoi(text)};
-    throw usage_error("--device: expected auto, cpu, gpu or a device index, got \"" + text + "\"");
+    throw ParameterError("device", ": expected auto, cpu, gpu or a device index, got \"" + text + "\"");
 }
 
-std::optional<ComputeSite> parse_compute_site(const std::string& text, const std::string& option) {
+std::optional<ComputeSite> parse_compute_site(const std::string& text) {
     if (text == "auto") return std::nullopt;
     if (text == "device") return ComputeSite::Device;
     if (text == "host") return ComputeSite::Host;
-    throw usage_error(option + ": expected auto, device or host, got \"" + text + "\"");
+    throw ParameterError("compute", ": expected auto, device or host, got \"" + text + "\"");
 }
 
 std::string DeviceInfo::type_name() const {

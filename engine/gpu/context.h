@@ -61,7 +61,7 @@ struct ContextDesc {
 inline constexpr const char* kComputeSiteHelp =
     "Where line extraction, the parameterization splat and RANSAC run: auto (the host on CPU devices "
     "such as lavapipe, where that is faster; the device on GPUs), device, or host";
-[[nodiscard]] std::optional<ComputeSite> parse_compute_site(const std::string& text, const std::string& option);
+[[nodiscard]] std::optional<ComputeSite> parse_compute_site(const std::string& text);
 
 struct DeviceInfo {
     int index = 0;

@@ -90,7 +90,7 @@ Swapchain::Swapchain(const Context& ctx, const Window& window, const SwapchainDe
         VkBool32 supported = VK_FALSE;
         LW_VK(vkGetPhysicalDeviceSurfaceSupportKHR(ctx.physical_device(), ctx.queue_family(), surface_, &supported));
         if (!supported)
-            throw Error(ctx.info().name + " cannot present to this window from its graphics queue (try another --device)");
+            throw Error(ctx.info().name + " cannot present to this window from its graphics queue (choose another device)");
         const VkSurfaceFormatKHR format = choose_format(ctx.physical_device(), surface_);
         format_ = format.format;
         color_space_ = format.colorSpace;

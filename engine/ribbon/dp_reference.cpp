@@ -103,7 +103,7 @@ std::string no_valid_position_message(const DpProblem& problem, size_t row) {
            std::to_string(problem.rows.size()) +
            ": no valid position in the exemplar, even letting the piece cut the pattern — it must fit in E "
            "horizontally and keep ink off forbidden pixels (C = " + std::to_string(problem.samples) +
-           " exemplar pixels across the ribbon: try a shorter --piece or another --scale)";
+           " exemplar pixels across the ribbon: try a shorter piece length δ or another scale s)";
 }
 
 DpTables run_dp_reference(const DpProblem& problem, const DpRunOptions& options) {

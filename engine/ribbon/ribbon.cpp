@@ -33,19 +33,19 @@ glm::vec2 Ribbon::max_corner() const {
 
 Ribbon build_ribbon(const ArclengthCurve& curve, const RibbonParams& params) {
     if (!(params.width > 0.0f) || !std::isfinite(params.width))
-        throw usage_error("--width: the ribbon width b must be a positive number of pixels");
+        throw ParameterError("ribbon width", ": the ribbon width b must be a positive number of pixels");
     if (!(params.piece > 0.0f) || !std::isfinite(params.piece))
-        throw usage_error("--piece: the piece length δ must be a positive number of pixels");
+        throw ParameterError("ribbon piece", ": the piece length δ must be a positive number of pixels");
     if (!(params.scale > 0.0f) || !std::isfinite(params.scale))
-        throw usage_error("--scale: s must be a positive number of exemplar pixels");
-    if (params.scale > 4096.0f) throw usage_error("--scale: at most 4096 exemplar pixels across the ribbon");
+        throw ParameterError("ribbon scale", ": s must be a positive number of exemplar pixels");
+    if (params.scale > 4096.0f) throw ParameterError("ribbon scale", ": at most 4096 exemplar pixels across the ribbon");
 
     const float length = curve.length();
     const float delta = params.piece;
     // x_0 .. x_N (see the header for the remainder rule).
     std::vector<float> xs;
     const auto full = static_cast<long>(std::floor(length / delta));
-    if (full > 100000) throw usage_error("--piece: " + std::to_string(full) + " pieces; at most 100000");
+    if (full > 100000) throw ParameterError("ribbon piece", ": " + std::to_string(full) + " pieces; at most 100000");
     for (long i = 0; i <= full; ++i) xs.push_back(float(i) * delta);
     const float remainder = length - xs.back();
     if (xs.size() == 1 || remainder > 0.25f * delta)
@@ -78,8 +78,8 @@ Ribbon build_ribbon(const ArclengthCurve& curve, const RibbonParams& params) {
     for (size_t i = 0; i + 1 < xs.size(); ++i)
         ribbon.pieces.push_back({top[i], bottom[i], bottom[i + 1], top[i + 1], tangent[i]});
     if (ribbon.closed && ribbon.pieces.size() < 2)
-        throw usage_error("--piece: a closed curve of length " + std::to_string(length) +
-                          " px needs at least two pieces; use a shorter piece length");
+        throw ParameterError("ribbon piece", ": a closed curve of length " + std::to_string(length) +
+                                                 " px needs at least two pieces; use a shorter piece length");
     return ribbon;
 }
 

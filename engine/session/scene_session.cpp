@@ -187,9 +187,14 @@ double SceneSession::draw_ribbons(Frame& frame, uint64_t seed) {
     for (const LineSetFrame& set : frame.sets) {
         if (!ribbons_[set.set]) continue;
         const LineSetStyle& style = sets_[set.set].style;
-        const RibbonStrokeStats stats =
-            draw_ribbon_strokes(*ctx_, set.paths, std::nullopt, *ribbons_[set.set],
-                                {.width = style.width, .scale = style.ribbon_scale, .seed = seed}, frame.image.color);
+        RibbonStrokeStats stats;
+        try {
+            stats = draw_ribbon_strokes(*ctx_, set.paths, std::nullopt, *ribbons_[set.set],
+                                        {.width = style.width, .scale = style.ribbon_scale, .seed = seed},
+                                        frame.image.color);
+        } catch (const ParameterError& e) {  // the style's width and ribbon_scale set them
+            throw Error(desc_.source.string() + ": line set " + set.name + ": " + e.what(), 1);
+        }
         ms += stats.ms;
         ribbon_reports_.push_back({set.name, stats});
     }

@@ -123,7 +123,7 @@ int run_surface(const BenchOptions& b) {
 
 int run_lines(const BenchOptions& b) {
     lw::Context ctx({.device = lw::parse_device_choice(b.device),
-                     .compute_site = lw::parse_compute_site(b.compute, "--compute")});
+                     .compute_site = lw::parse_compute_site(b.compute)});
     BenchScene s = prepare(b, ctx);
     lw::FrameRenderer renderer(ctx, uint32_t(s.width), uint32_t(s.height));
     lw::LinesDesc lines;

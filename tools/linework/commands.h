@@ -6,6 +6,8 @@
 #pragma once
 
 #include <functional>
+#include <initializer_list>
+#include <utility>
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -46,6 +48,19 @@ bool validation_from_environment();
 void use_slam_strokes(LinesDesc& lines, const std::string& slam, float width);
 // 1 (after one line on stderr) when validation was on and reported anything, else 0.
 int exit_code_after_validation(const Context& ctx, bool validation);
+
+// Runs f; an engine ParameterError about one of `flags` (engine name → flag, e.g.
+// {"ribbon piece", "--piece"}) is re-thrown naming the flag that set it.
+template <typename F>
+auto flags_named(std::initializer_list<std::pair<const char*, const char*>> flags, F&& f) {
+    try {
+        return f();
+    } catch (const ParameterError& e) {
+        for (const auto& [name, flag] : flags)
+            if (e.name() == name) throw Error(flag + e.rest(), e.exit_code());
+        throw;
+    }
+}
 
 // Runs f; an engine error that does not name its file is re-thrown with the file in front.
 template <typename F>

@@ -51,7 +51,9 @@ int main(int argc, char** argv) {
 
     try {
         for (auto& [subcommand, runner] : commands)
-            if (subcommand->parsed()) return runner();
+            // Every command that takes a device names it with --device and --compute.
+            if (subcommand->parsed())
+                return lw::cli::flags_named({{"device", "--device"}, {"compute", "--compute"}}, runner);
     } catch (const lw::Error& e) {
         std::fprintf(stderr, "linework: error: %s\n", e.what());
         return e.exit_code();

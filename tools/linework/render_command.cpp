@@ -75,7 +75,7 @@ int run_render(const RenderOptions& o) {
 
     const bool validation = validation_on(o.scene);
     Context ctx({.device = parse_device_choice(o.scene.device), .validation = validation,
-                 .compute_site = parse_compute_site(o.scene.compute, "--compute")});
+                 .compute_site = parse_compute_site(o.scene.compute)});
     Timer load_timer;
     SessionOptions options = session_options(o.scene, desc);
     options.coherent = options.coherent || !o.dump_paths.empty();

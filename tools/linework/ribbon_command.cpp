@@ -214,7 +214,10 @@ Runner add_ribbon_command(CLI::App& app) {
     cmd->add_option("--device", o->device, "auto, cpu (lavapipe), gpu, or an index from `linework devices`")
         ->capture_default_str();
     cmd->add_flag("--validation", o->validation, "Enable the Khronos validation layer (also LINEWORK_VALIDATION=1)");
-    return [o] { return run_ribbon(*o); };
+    return [o] {
+        return flags_named({{"ribbon width", "--width"}, {"ribbon piece", "--piece"}, {"ribbon scale", "--scale"}},
+                           [&] { return run_ribbon(*o); });
+    };
 }
 
 Runner add_ribbon_exemplar_command(CLI::App& app) {

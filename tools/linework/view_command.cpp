@@ -76,7 +76,7 @@ int run_view(const ViewOptions& o) {
     const bool validation = validation_on(o.scene);
     Context ctx({.device = parse_device_choice(o.scene.device), .validation = validation,
                  .instance_extensions = window.required_instance_extensions(), .swapchain = true,
-                 .compute_site = parse_compute_site(o.scene.compute, "--compute")});
+                 .compute_site = parse_compute_site(o.scene.compute)});
     std::printf("device: %s\n", ctx.info().describe().c_str());
     const bool fixed_step = player || o.benchmark > 0;  // scripted runs see the same frames every time
     // Everything that records or owns GPU work lives in this scope, so that the validation
