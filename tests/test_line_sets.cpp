@@ -208,5 +208,63 @@ TEST(LineSets, SelectByMaterialAndModel) {
     EXPECT_TRUE(ctx.validation_messages().empty());
 }
 
+// The viewer's "save view" writes the line sets back: reading the saved scene gives the same
+// sets, every key (the viewer test renders such a file headlessly).
+TEST(LineSets, SavedSceneReadsBackEveryKey) {
+    const fs::path dir = test::temp_dir();
+    const std::string sets = R"([{"name": "a", "enabled": false,
+        "select": {"types": ["silhouette", "crease"], "visibility": "any", "models": ["m.glb"], "materials": ["Body"]},
+        "style": {"color": [0.1, 0.2, 0.3], "alpha": 0.5, "width": 3, "cap": "round", "join": "round",
+                  "taper_in": 4, "taper_out": 2, "fade": false, "dashes": [5, 2, 1],
+                  "width_modifiers": [{"input": "along", "ramp": [[0, 0.5], [1, 2]], "blend": "replace"}],
+                  "alpha_modifiers": [{"input": "distance", "range": [1, 9], "ramp": [[0, 1], [1, 0]]}],
+                  "color_modifiers": [{"input": "curvature", "range": [0, 0.2], "ramp": [[0, [0, 0, 0]], [1, [1, 0, 0]]],
+                                       "influence": 0.25}],
+                  "geometry": [{"kind": "noise", "wavelength": 9, "amplitude": 1.5, "seed": 42},
+                               {"kind": "tip_remove", "length": 3}],
+                  "chaining": {"split_angle": 50, "min_length": 4, "max_length": 300}},
+        "coherence": {"policy": "arclength", "length_scale": 2, "sample_spacing": 3}},
+       {"name": "b", "style": {"slam": "s.exr"}}])";
+    const SceneDesc desc = parse_scene_json("{\"model\": \"m.glb\", \"line_sets\": " + sets + "}", dir / "in.json");
+    const SceneDesc back = parse_scene_json(scene_json(desc, ViewCamera{}, dir), dir / "out.json");
+    ASSERT_EQ(back.lines.sets.size(), 2u);
+    const LineSetDesc& a = back.lines.sets[0];
+    const LineSetDesc& b = desc.lines.sets[0];
+    EXPECT_EQ(a.name, "a");
+    EXPECT_FALSE(a.enabled);
+    EXPECT_EQ(a.select.types, b.select.types);
+    EXPECT_EQ(a.select.visibility, Visibility::Any);
+    EXPECT_EQ(a.select.models, b.select.models);
+    EXPECT_EQ(a.select.materials, b.select.materials);
+    EXPECT_EQ(a.style.color, b.style.color);
+    EXPECT_EQ(a.style.alpha, 0.5f);
+    EXPECT_EQ(a.style.cap, Cap::Round);
+    EXPECT_EQ(a.style.join, Join::Round);
+    EXPECT_EQ(a.style.taper_in_px, 4.0f);
+    EXPECT_EQ(a.style.taper_out_px, 2.0f);
+    EXPECT_FALSE(a.style.fade);
+    EXPECT_EQ(a.style.dashes, b.style.dashes);
+    ASSERT_EQ(a.style.width_modifiers.size(), 1u);
+    EXPECT_EQ(a.style.width_modifiers[0].blend, ModifierBlend::Replace);
+    EXPECT_EQ(a.style.width_modifiers[0].ramp.points, b.style.width_modifiers[0].ramp.points);
+    ASSERT_EQ(a.style.alpha_modifiers.size(), 1u);
+    EXPECT_EQ(a.style.alpha_modifiers[0].range_max, 9.0f);
+    ASSERT_EQ(a.style.color_modifiers.size(), 1u);
+    EXPECT_EQ(a.style.color_modifiers[0].influence, 0.25f);
+    EXPECT_EQ(a.style.color_modifiers[0].ramp.points, b.style.color_modifiers[0].ramp.points);
+    ASSERT_EQ(a.style.geometry.size(), 2u);
+    EXPECT_EQ(a.style.geometry[0].kind, GeometryModifier::Kind::Noise);
+    EXPECT_EQ(a.style.geometry[0].seed, 42u);
+    EXPECT_EQ(a.style.geometry[1].kind, GeometryModifier::Kind::TipRemove);
+    EXPECT_EQ(a.style.chaining.split_angle_deg, 50.0f);
+    EXPECT_EQ(a.style.chaining.max_length_px, 300.0f);
+    EXPECT_EQ(a.coherence.policy, ParamPolicy::Arclength);
+    EXPECT_EQ(a.coherence.length_scale, 2.0f);
+    EXPECT_EQ(a.coherence.sample_spacing_px, 3.0f);
+    EXPECT_EQ(back.lines.sets[1].style.slam, desc.lines.sets[1].style.slam);
+    EXPECT_EQ(back.lines.sets[1].style.cap, Cap::Butt);
+    EXPECT_FALSE(back.lines.sets[1].coherence.policy.has_value());
+}
+
 }  // namespace
 }  // namespace lw

@@ -5,6 +5,7 @@
 // The window tests run `xvfb-run` (package xvfb) with LINEWORK_VALIDATION=1 on lavapipe;
 // they are skipped, with the reason, when xvfb-run is not installed. Golden image:
 // regenerate with LINEWORK_UPDATE_GOLDENS=1 ctest --test-dir build -R Viewer
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -152,6 +153,42 @@ TEST(Viewer, ResizeAndMinimizeByScript) {
     EXPECT_EQ(a.height, 300);
     EXPECT_EQ(b.width, 160);
     EXPECT_EQ(b.height, 360);
+}
+
+// Viewer parity: a scene of line sets with a ribbon set (synthesized on the host and written
+// back to the target the window shows) looks in the viewer as `linework render` draws it, and
+// the saved view keeps the sets.
+TEST(Viewer, LineSetsAndRibbonsAsRenderDrawsThem) {
+    if (!have_xvfb()) GTEST_SKIP() << "xvfb-run not installed (apt-get install xvfb xauth)";
+    const fs::path dir = test::temp_dir();
+    write_file(dir / "scene.json",
+               "{\"model\": \"" + (test::data_dir() / "models/spot/spot.glb").string() +
+                   "\", \"size\": [160, 120], \"shading\": \"unlit\", \"color\": [1, 1, 1],"
+                   " \"camera\": {\"eye\": [2.6, 0.9, -2.4], \"target\": [0, 0.05, 0], \"fov\": 35},"
+                   " \"line_sets\": [{\"name\": \"beads\", \"select\": {\"types\": [\"silhouette\"]},"
+                   " \"style\": {\"width\": 10, \"ribbon\": \"" + (test::source_dir() / "scenes/exemplars/beads.png").string() +
+                   "\"}}, {\"name\": \"inner\", \"select\": {\"types\": [\"suggestive\", \"crease\"]},"
+                   " \"style\": {\"width\": 2, \"cap\": \"round\", \"color\": [0.6, 0.1, 0.1]}}]}");
+    write_file(dir / "session.txt", "key f1\nwait 1\nscreenshot " + (dir / "shot.png").string() + "\nsave " +
+                                        (dir / "view.json").string() + "\nquit\n");
+    const auto r = run_view(test::quote(dir / "scene.json") + " --script " + test::quote(dir / "session.txt"));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_EQ(r.output.find("validation:"), std::string::npos) << r.output;
+    const auto rendered = test::run_linework("render " + test::quote(dir / "scene.json") + " -o " +
+                                             test::quote(dir / "render") + " --device cpu");
+    ASSERT_EQ(rendered.exit_code, 0) << rendered.output;
+    const ImageRGBA8 shot = read_image_rgba8(dir / "shot.png");
+    const ImageRGBA8 render = read_image_rgba8(dir / "render/frame_0000.png");
+    expect_close(shot, render, dir, "viewer vs linework render, with a ribbon set");
+    size_t coloured = 0;  // the beads are coloured; the unlit white cow is not
+    for (size_t i = 0; i < shot.pixels.size(); i += 4)
+        coloured += std::max({shot.pixels[i], shot.pixels[i + 1], shot.pixels[i + 2]}) -
+                        std::min({shot.pixels[i], shot.pixels[i + 1], shot.pixels[i + 2]}) > 40;
+    EXPECT_GT(coloured, 50u) << "no ribbon in the viewer's frame";
+    const SceneDesc saved = load_scene_file(dir / "view.json");
+    ASSERT_EQ(saved.lines.sets.size(), 2u);
+    EXPECT_EQ(saved.lines.sets[0].name, "beads");
+    EXPECT_FALSE(saved.lines.sets[0].style.ribbon.empty());
 }
 
 }  // namespace

@@ -59,8 +59,8 @@ struct SceneDesc {
 // Scene JSON for `desc` with its fixed `camera` (what the viewer saves as "the current
 // view"), in the format load_scene_file reads. Model, SLAM and ribbon paths are written
 // relative to `dest_dir` (the folder the file will be in) when they can be. Written: models,
-// size, fov, camera, shading and colours, lines (every type, thresholds, styles), the
-// animation's clip and fps. Not written: camera paths (the view is one fixed camera) and
+// size, fov, camera, shading and colours, lines (every type, thresholds, styles), the line
+// sets (every key), the animation's clip and fps. Not written: camera paths (the view is one fixed camera) and
 // vector layers.
 [[nodiscard]] std::string scene_json(const SceneDesc& desc, const ViewCamera& camera,
                                      const std::filesystem::path& dest_dir);

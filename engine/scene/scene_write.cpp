@@ -30,6 +30,97 @@ std::string relative_to(const std::filesystem::path& path, const std::filesystem
     return rel.empty() || ups >= depth ? absolute.lexically_normal().string() : rel.generic_string();
 }
 
+const char* input_name(ModifierInput input) {
+    return input == ModifierInput::Along ? "along" : input == ModifierInput::Distance ? "distance" : "curvature";
+}
+
+json scalar_modifiers(const std::vector<ScalarModifier>& modifiers) {
+    json out = json::array();
+    for (const ScalarModifier& m : modifiers) {
+        json ramp = json::array();
+        for (const glm::vec2& p : m.ramp.points) ramp.push_back({round6(p.x), round6(p.y)});
+        out.push_back({{"input", input_name(m.input)}, {"range", {round6(m.range_min), round6(m.range_max)}},
+                       {"ramp", ramp},
+                       {"blend", m.blend == ModifierBlend::Multiply ? "multiply"
+                                 : m.blend == ModifierBlend::Replace ? "replace"
+                                                                     : "add"}});
+    }
+    return out;
+}
+
+json color_modifiers(const std::vector<ColorModifier>& modifiers) {
+    json out = json::array();
+    for (const ColorModifier& m : modifiers) {
+        json ramp = json::array();
+        for (const auto& [x, c] : m.ramp.points) ramp.push_back({round6(x), vec3(c)});
+        out.push_back({{"input", input_name(m.input)}, {"range", {round6(m.range_min), round6(m.range_max)}},
+                       {"ramp", ramp}, {"influence", round6(m.influence)}});
+    }
+    return out;
+}
+
+json geometry_modifiers(const std::vector<GeometryModifier>& modifiers) {
+    using Kind = GeometryModifier::Kind;
+    json out = json::array();
+    for (const GeometryModifier& m : modifiers)
+        out.push_back({{"kind", m.kind == Kind::Sinus             ? "sinus"
+                                : m.kind == Kind::Noise           ? "noise"
+                                : m.kind == Kind::BackboneStretch ? "backbone_stretch"
+                                : m.kind == Kind::TipRemove       ? "tip_remove"
+                                                                  : "simplify"},
+                       {"wavelength", round6(m.wavelength_px)}, {"amplitude", round6(m.amplitude_px)},
+                       {"phase", round6(m.phase)}, {"seed", m.seed}, {"length", round6(m.length_px)},
+                       {"tolerance", round6(m.tolerance_px)}});
+    return out;
+}
+
+json line_set_style(const LineSetStyle& s, const std::filesystem::path& dest_dir) {
+    json style{{"color", vec3(s.color)}, {"alpha", round6(s.alpha)}, {"width", round6(s.width)},
+               {"cap", s.cap == Cap::Butt ? "butt" : s.cap == Cap::Round ? "round" : "square"},
+               {"join", s.join == Join::Round ? "round" : "mitre"},
+               {"taper_in", round6(s.taper_in_px)}, {"taper_out", round6(s.taper_out_px)}, {"fade", s.fade}};
+    if (!s.slam.empty()) style["slam"] = relative_to(s.slam, dest_dir);
+    if (!s.ribbon.empty()) style["ribbon"] = relative_to(s.ribbon, dest_dir);
+    if (s.ribbon_scale > 0.0f) style["ribbon_scale"] = round6(s.ribbon_scale);
+    if (!s.dashes.empty()) {
+        json dashes = json::array();
+        for (float d : s.dashes) dashes.push_back(round6(d));
+        style["dashes"] = dashes;
+    }
+    if (!s.width_modifiers.empty()) style["width_modifiers"] = scalar_modifiers(s.width_modifiers);
+    if (!s.alpha_modifiers.empty()) style["alpha_modifiers"] = scalar_modifiers(s.alpha_modifiers);
+    if (!s.color_modifiers.empty()) style["color_modifiers"] = color_modifiers(s.color_modifiers);
+    if (!s.geometry.empty()) style["geometry"] = geometry_modifiers(s.geometry);
+    json chaining{{"split_angle", round6(s.chaining.split_angle_deg)}, {"min_length", round6(s.chaining.min_length_px)}};
+    if (s.chaining.max_length_px > 0.0f) chaining["max_length"] = round6(s.chaining.max_length_px);
+    style["chaining"] = chaining;
+    return style;
+}
+
+// "line_sets" as scene_file.cpp reads them (line_set_file.cpp).
+json line_sets(const std::vector<LineSetDesc>& sets, const std::filesystem::path& dest_dir) {
+    json out = json::array();
+    for (const LineSetDesc& set : sets) {
+        json types = json::array();
+        for (int t = 0; t < kLineTypeCount; ++t)
+            if (set.select.has_type(LineType(t))) types.push_back(line_type_name(LineType(t)));
+        const Visibility v = set.select.visibility;
+        json select{{"types", types},
+                    {"visibility", v == Visibility::Visible ? "visible" : v == Visibility::Hidden ? "hidden" : "any"}};
+        if (!set.select.models.empty()) select["models"] = set.select.models;
+        if (!set.select.materials.empty()) select["materials"] = set.select.materials;
+        json coherence = json::object();
+        if (const auto& p = set.coherence.policy)
+            coherence["policy"] = *p == ParamPolicy::Coherent ? "coherent" : *p == ParamPolicy::Arclength ? "arclength"
+                                                                                                            : "stretch";
+        if (set.coherence.length_scale > 0.0f) coherence["length_scale"] = round6(set.coherence.length_scale);
+        if (set.coherence.sample_spacing_px > 0.0f) coherence["sample_spacing"] = round6(set.coherence.sample_spacing_px);
+        out.push_back({{"name", set.name}, {"enabled", set.enabled}, {"select", select},
+                       {"style", line_set_style(set.style, dest_dir)}, {"coherence", coherence}});
+    }
+    return out;
+}
+
 }  // namespace
 
 std::string scene_json(const SceneDesc& desc, const ViewCamera& camera, const std::filesystem::path& dest_dir) {
@@ -78,6 +169,7 @@ std::string scene_json(const SceneDesc& desc, const ViewCamera& camera, const st
         l["hidden"] = lines.hidden == HiddenLines::Dashed ? "dashed" : lines.hidden == HiddenLines::Faint ? "faint" : "none";
         l["sample_spacing"] = round6(lines.sample_spacing_px);
         root["lines"] = l;
+        if (!lines.sets.empty()) root["line_sets"] = line_sets(lines.sets, dest_dir);
     }
     if (desc.animation.play) {
         json a{{"fps", round6(desc.animation.fps)}};
