@@ -161,12 +161,16 @@ TEST(Viewer, ResizeAndMinimizeByScript) {
 TEST(Viewer, LineSetsAndRibbonsAsRenderDrawsThem) {
     if (!have_xvfb()) GTEST_SKIP() << "xvfb-run not installed (apt-get install xvfb xauth)";
     const fs::path dir = test::temp_dir();
+    // A small beads exemplar (48×16) keeps the host synthesis to seconds a frame.
+    const auto exemplar = test::run_linework("ribbon-exemplar beads -o " + test::quote(dir / "beads.png") +
+                                             " --size 48x16 --seed 3");
+    ASSERT_EQ(exemplar.exit_code, 0) << exemplar.output;
     write_file(dir / "scene.json",
                "{\"model\": \"" + (test::data_dir() / "models/spot/spot.glb").string() +
                    "\", \"size\": [160, 120], \"shading\": \"unlit\", \"color\": [1, 1, 1],"
                    " \"camera\": {\"eye\": [2.6, 0.9, -2.4], \"target\": [0, 0.05, 0], \"fov\": 35},"
                    " \"line_sets\": [{\"name\": \"beads\", \"select\": {\"types\": [\"silhouette\"]},"
-                   " \"style\": {\"width\": 10, \"ribbon\": \"" + (test::source_dir() / "scenes/exemplars/beads.png").string() +
+                   " \"style\": {\"width\": 10, \"ribbon\": \"" + (dir / "beads.png").string() +
                    "\"}}, {\"name\": \"inner\", \"select\": {\"types\": [\"suggestive\", \"crease\"]},"
                    " \"style\": {\"width\": 2, \"cap\": \"round\", \"color\": [0.6, 0.1, 0.1]}}]}");
     write_file(dir / "session.txt", "key f1\nwait 1\nscreenshot " + (dir / "shot.png").string() + "\nsave " +
