@@ -1,0 +1,171 @@
+// tests/test_line_set_images.cpp — line-set modifiers measured in the rendered image: a flat
+// square seen straight on has four straight borders, so widths, dash lengths and cap shapes
+// can be read off the pixels (lavapipe, validation on).
+#include <algorithm>
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "geometry/test_meshes.h"
+#include "render/frame_renderer.h"
+#include "test_support.h"
+
+namespace lw {
+namespace {
+
+constexpr int kW = 320, kH = 240;
+
+class LineSetImage : public test::GpuTest {
+protected:
+    // The square [-1, 1]² at z = 0 from (0, 0, 3), 60° field of view: its top border is a
+    // horizontal line about 138 px long near row 51; nothing else draws a line.
+    ImageRGBA8 render(const LineSetDesc& set) {
+        const TriangleMesh plane = make_height_field([](double, double) { return 0.0; }, {-1, -1}, {1, 1}, 4, 4);
+        const ViewCamera view{.eye = {0, 0, 3}, .target = {0, 0, 0}, .up = {0, 1, 0}, .fov_deg = 60};
+        const CameraMatrices camera = camera_matrices(view, float(kW) / float(kH), compute_bounds(plane.positions));
+        FrameRenderer renderer(ctx(), kW, kH);
+        renderer.set_mesh(plane, true, 45.0f);
+        LinesDesc lines;
+        lines.sets = {set};
+        SurfaceStyle surface;
+        surface.draw_surface = false;  // lines over white
+        return renderer.render(camera, view.eye, surface, lines).image.color;
+    }
+    static bool ink(const ImageRGBA8& image, int x, int y) {
+        return x >= 0 && y >= 0 && x < image.width && y < image.height && image.pixels[size_t(y * image.width + x) * 4] < 128;
+    }
+    // Inked pixels of column x within ±16 rows of `row`.
+    static int column_ink(const ImageRGBA8& image, int x, int row) {
+        int n = 0;
+        for (int y = row - 16; y <= row + 16; ++y) n += ink(image, x, y);
+        return n;
+    }
+    static LineSetDesc borders(float width) {
+        LineSetDesc set{.name = "edge"};
+        set.select.types = 1u << uint32_t(LineType::Border);
+        set.style.width = width;
+        set.style.cap = Cap::Butt;
+        set.style.chaining.split_angle_deg = 45.0f;  // the square's loop → four straight sides
+        return set;
+    }
+};
+
+// Width along the stroke: ramp 0.2 → 1 → 0.4 of 10 px over each side; the image's width is
+// within 1 px of it near both ends and in the middle.
+TEST_F(LineSetImage, WidthAlongTheStrokeFollowsTheRamp) {
+    LineSetDesc set = borders(10.0f);
+    set.style.width_modifiers = {{.input = ModifierInput::Along, .ramp = {{{0.0f, 0.2f}, {0.5f, 1.0f}, {1.0f, 0.4f}}}}};
+    const ImageRGBA8 image = render(set);
+    // The side's ends: the corners where the vertical sides (x ≈ 91 and 229) meet it.
+    int row = -1;
+    for (int y = 0; y < kH / 2 && row < 0; ++y)
+        if (ink(image, kW / 2, y)) row = y + 5;  // the middle of the 10-px-wide middle
+    ASSERT_GT(row, 0);
+    int left = kW / 2, right = kW / 2;
+    while (left > 0 && column_ink(image, left - 1, row) > 0) --left;
+    while (right < kW - 1 && column_ink(image, right + 1, row) > 0) ++right;
+    const float length = float(right - left);
+    ASSERT_GT(length, 120.0f);
+    auto ramp = [](float x) { return 10.0f * (x < 0.5f ? 0.2f + 1.6f * x : 1.0f - 1.2f * (x - 0.5f)); };
+    auto width_at = [&](float fraction) { return float(column_ink(image, left + int(std::lround(fraction * length)), row)); };
+    // The path's direction is the chaining's: the ramp runs one way or the other.
+    const bool forward = width_at(0.05f) < width_at(0.95f);
+    for (float f : {0.05f, 0.1f, 0.5f, 0.9f, 0.95f})
+        EXPECT_NEAR(width_at(f), ramp(forward ? f : 1.0f - f), 1.0f) << "at " << f << " of the side";
+}
+
+// Dashes [12, 6] on a straight side: the runs of ink along it are 12 ± 1 px, the gaps 6 ± 1.
+TEST_F(LineSetImage, DashesHaveTheirLengths) {
+    LineSetDesc set = borders(3.0f);
+    set.style.dashes = {12.0f, 6.0f};
+    const ImageRGBA8 image = render(set);
+    int row = -1;
+    for (int y = 0; y < kH / 2 && row < 0; ++y)
+        for (int x = 100; x < 220 && row < 0; ++x)
+            if (ink(image, x, y)) row = y + 1;  // the middle of the 3-px line
+    ASSERT_GT(row, 0);
+    std::vector<int> runs, gaps;
+    int run = 0, gap = 0;
+    bool seen = false;
+    for (int x = 100; x < 220; ++x) {  // away from the corners
+        if (ink(image, x, row)) {
+            if (seen && gap > 0) gaps.push_back(gap);
+            gap = 0;
+            ++run;
+            seen = true;
+        } else {
+            if (run > 0) runs.push_back(run);
+            run = 0;
+            gap += seen;
+        }
+    }
+    // Interior runs only: the first and last may be cut by the window.
+    ASSERT_GE(runs.size(), 5u);
+    for (size_t i = 1; i + 1 < runs.size(); ++i) EXPECT_NEAR(runs[i], 12, 1) << "dash " << i;
+    for (size_t i = 1; i + 1 < gaps.size(); ++i) EXPECT_NEAR(gaps[i], 6, 1) << "gap " << i;
+}
+
+// Round caps: 1-px dashes of an 8-px stroke are discs of diameter 8 (9 along: the dash's
+// pixel plus two 4-px half discs).
+TEST_F(LineSetImage, RoundCapsMakeShortDashesDiscs) {
+    LineSetDesc set = borders(8.0f);
+    set.style.dashes = {1.0f, 19.0f};
+    set.style.cap = Cap::Round;
+    const ImageRGBA8 image = render(set);
+    const int top = [&] {
+        for (int y = 0; y < kH / 2; ++y)
+            for (int x = 110; x < 210; ++x)
+                if (ink(image, x, y)) return y;
+        return -1;
+    }();
+    ASSERT_GE(top, 0);
+    // Blobs along the side, by columns with ink in the band [top, top + 12).
+    std::vector<std::pair<int, int>> blobs;  // first, last column
+    for (int x = 105; x < 215; ++x) {
+        bool any = false;
+        for (int y = top; y < top + 12; ++y) any = any || ink(image, x, y);
+        if (any && (blobs.empty() || blobs.back().second != x - 1)) blobs.push_back({x, x});
+        else if (any) blobs.back().second = x;
+    }
+    ASSERT_GE(blobs.size(), 4u);
+    for (size_t i = 1; i + 1 < blobs.size(); ++i) {
+        const auto [first, last] = blobs[i];
+        EXPECT_NEAR(last - first + 1, 9, 1) << "blob " << i << " along";
+        const int middle = (first + last) / 2;
+        int across = 0;
+        for (int y = top - 2; y < top + 14; ++y) across += ink(image, middle, y);
+        EXPECT_NEAR(across, 8, 1) << "blob " << i << " across";
+        // A disc, not a square: its corners stay paper.
+        EXPECT_FALSE(ink(image, first, top)) << "blob " << i;
+        EXPECT_FALSE(ink(image, last, top)) << "blob " << i;
+    }
+}
+
+// Seeded noise: the same scene renders the same pixels in two renderers, and it displaces
+// the straight side by up to its amplitude.
+TEST_F(LineSetImage, NoiseIsDeterministicAndBounded) {
+    LineSetDesc set = borders(2.0f);
+    set.style.geometry = {{.kind = GeometryModifier::Kind::Noise, .wavelength_px = 16.0f, .amplitude_px = 4.0f, .seed = 9}};
+    const ImageRGBA8 a = render(set), b = render(set);
+    EXPECT_EQ(compare_images(a, b).max_abs_error, 0);
+    const ImageRGBA8 straight = render(borders(2.0f));
+    int row = -1;
+    for (int y = 0; y < kH / 2 && row < 0; ++y)
+        if (ink(straight, kW / 2, y)) row = y;
+    ASSERT_GT(row, 0);
+    int lowest = kH, highest = -1;
+    for (int x = 110; x < 210; ++x)
+        for (int y = row - 10; y <= row + 10; ++y)
+            if (ink(a, x, y)) {
+                lowest = std::min(lowest, y);
+                highest = std::max(highest, y);
+            }
+    EXPECT_GE(highest - lowest, 4) << "no displacement";        // the line wanders
+    EXPECT_LE(highest - lowest, 2 * 4 + 2 + 1) << "past the amplitude";  // ±4 px, 2 px wide
+    LineSetDesc other = set;
+    other.style.geometry[0].seed = 10;
+    EXPECT_GT(compare_images(a, render(other)).max_abs_error, 0);
+}
+
+}  // namespace
+}  // namespace lw
