@@ -2,7 +2,8 @@
 // selection, a style with modifiers, coherence settings — read into `LineSetDesc`.
 #include "scene/line_set_file.h"
 
-#include <regex>
+#include <algorithm>
+#include <cctype>
 
 #include "scene/object_reader.h"
 
@@ -219,19 +220,26 @@ LineSetCoherence read_coherence(ObjectReader& set, const std::filesystem::path& 
     return coherence;
 }
 
+// Letters, digits, _ and -, not starting with a digit or -: an SVG (XML) id.
+bool is_svg_id(const std::string& name) {
+    if (name.empty() || !(std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_')) return false;
+    return std::all_of(name.begin(), name.end(), [](char c) {
+        return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
+    });
+}
+
 }  // namespace
 
 std::vector<LineSetDesc> read_line_sets(scene_detail::ObjectReader& scene, const std::filesystem::path& file) {
     const json& list = scene.at("line_sets");
     if (!list.is_array() || list.empty()) scene.fail_key("line_sets", "expected a non-empty array of line sets");
-    static const std::regex kName("[A-Za-z_][A-Za-z0-9_-]*");  // an SVG group id
     std::vector<LineSetDesc> sets;
     for (size_t i = 0; i < list.size(); ++i) {
         ObjectReader r(list[i], "line_sets[" + std::to_string(i) + "]", file);
         LineSetDesc set;
         if (!r.has("name")) r.fail_key("name", "required (it names the set's SVG group and dump entries)");
         set.name = r.string_of("name");
-        if (!std::regex_match(set.name, kName)) r.fail_key("name", "letters, digits, _ and - (an SVG id), got \"" + set.name + "\"");
+        if (!is_svg_id(set.name)) r.fail_key("name", "letters, digits, _ and - (an SVG id), got \"" + set.name + "\"");
         for (const LineSetDesc& other : sets)
             if (other.name == set.name) r.fail_key("name", "\"" + set.name + "\" is used by an earlier set");
         if (r.has("enabled")) set.enabled = r.boolean("enabled");
