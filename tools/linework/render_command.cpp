@@ -64,14 +64,7 @@ int run_render(const RenderOptions& o) {
     SceneDesc desc = scene_from_options(o.scene);
     apply_overrides(o, desc);
     FrameFiles files{o.output, o.svg, o.dump_paths, o.exr};
-    for (const std::string& dir : {o.output, o.dump_paths}) {
-        std::error_code ec;
-        if (dir.empty()) continue;
-        std::filesystem::create_directories(dir, ec);
-        if (ec || !std::filesystem::is_directory(dir))
-            throw Error(dir + ": cannot create " + (dir == o.output ? "output" : "dump") + " folder" +
-                        (ec ? " (" + ec.message() + ")" : ""));
-    }
+    create_folders(files);
 
     const bool validation = validation_on(o.scene);
     Context ctx({.device = parse_device_choice(o.scene.device), .validation = validation,

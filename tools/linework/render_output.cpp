@@ -53,6 +53,17 @@ std::filesystem::path svg_path(const FrameFiles& files, int f) {
 
 }  // namespace
 
+void create_folders(const FrameFiles& files) {
+    for (const std::filesystem::path& dir : {files.out_dir, std::filesystem::path(files.dump_paths)}) {
+        if (dir.empty()) continue;
+        std::error_code ec;
+        std::filesystem::create_directories(dir, ec);
+        if (ec || !std::filesystem::is_directory(dir))
+            throw Error(dir.string() + ": cannot create " + (dir == files.out_dir ? "output" : "dump") + " folder" +
+                        (ec ? " (" + ec.message() + ")" : ""));
+    }
+}
+
 void write_frame_files(const FrameFiles& files, const SceneSession& session, const Frame& frame, int f) {
     const SceneDesc& desc = session.desc();
     if (files.exr)

@@ -25,6 +25,9 @@ struct FrameFiles {
     bool sequence = false;
 };
 
+// Makes the output folder and the dump folder (when asked for); errors name them.
+void create_folders(const FrameFiles& files);
+
 // Writes the frame's files: EXR, SVG, dump, then the PNG (a frame whose PNG exists is
 // complete, which --resume relies on).
 void write_frame_files(const FrameFiles& files, const SceneSession& session, const Frame& frame, int f);

@@ -31,36 +31,34 @@ struct ViewOptions {
     bool no_vsync = false, no_panel = false;
 };
 
-ViewerState initial_state(const SceneSession& session, const ViewOptions& o) {
-    ViewerState s;
-    s.desc = session.desc();
-    for (size_t i = 0; i < session.line_sets().size(); ++i) {
-        s.set_names.push_back(session.line_sets()[i].name);
-        s.has_slam.push_back(session.line_set_has_slam(i));
-        s.strokes.push_back(session.line_set_has_slam(i));
-        s.ribbon.push_back(!session.line_sets()[i].style.ribbon.empty());
-    }
-    s.camera = s.home = OrbitCamera::from(session.scene().camera);
-    s.animated = session.animated();
-    s.duration_s = s.animated ? session.duration_s() : 0.0f;
-    s.fps = s.desc.animation.fps;
-    s.playing = s.animated;
-    s.panel = !o.no_panel;
-    s.output_dir = o.output;
-    s.triangles = session.scene().mesh.triangle_count();
-    return s;
-}
-
-// The panel's edits reach the session before the frame.
-void apply_edits(ViewerState& s, SceneSession& session) {
-    session.lines() = s.desc.lines;
-    session.surface() = s.desc.style;
-    session.coherence().policy = s.coherence.policy;
-    session.coherence().splat_radius_px = s.coherence.splat_radius_px;
-    if (s.crease_changed) session.rebuild_lines();
-    if (s.slams_changed)
-        for (size_t i = 0; i < s.strokes.size(); ++i) session.set_line_set_textured(i, s.strokes[i]);
-    s.crease_changed = s.slams_changed = false;
+// One frame: the session's, the panel over it, presented; the screenshot asked for. False
+// when the swapchain must be made again.
+bool draw_and_present(ViewerState& s, SceneSession& session, Swapchain& swapchain, UiOverlay& ui, Input& input,
+                      FrameTimings& timings) {
+    Timer render_timer;
+    const Frame frame = session.frame({.when = {.seconds = s.time_s}, .camera = s.camera.view(),
+                                       .outputs = {.color = false}, .ribbons_to_target = true});
+    s.render_ms = render_timer.elapsed_ms();
+    timings = frame.timings;
+    s.gpu = frame.timings.gpu;
+    s.extract_ms = frame.timings.extract_ms;
+    s.chain_ms = frame.timings.chain_ms;
+    s.visibility_ms = frame.timings.visibility_ms;
+    s.coherence_ms = frame.timings.coherence_ms;
+    s.paths = frame.screen_paths.size();
+    ui.begin_frame();
+    input.ui_keyboard = ui.wants_keyboard();
+    draw_panel(s);
+    ui.end_frame();
+    Timer present_timer;
+    ImageRGBA8 shot;
+    const bool want_shot = !s.screenshot_path.empty();
+    const bool presented = swapchain.present({.frame = &session.target().color,
+                                              .overlay = [&](VkCommandBuffer cmd) { ui.record(cmd); },
+                                              .screenshot = want_shot ? &shot : nullptr});
+    s.present_ms = present_timer.elapsed_ms();
+    if (want_shot && !shot.pixels.empty()) write_screenshot(s, shot);
+    return presented;
 }
 
 int run_view(const ViewOptions& o) {
@@ -91,7 +89,7 @@ int run_view(const ViewOptions& o) {
         sized.height = int(swapchain.extent().height);
         SceneSession session(ctx, sized, options);
         std::printf("scene: %s (%zu triangles)\n", o.scene.input.c_str(), session.scene().mesh.triangle_count());
-        ViewerState s = initial_state(session, o);
+        ViewerState s = initial_state(session, !o.no_panel, o.output);
         s.coherence = session.coherence();
         s.device = ctx.info().describe();
         s.host_compute = ctx.preferred_compute_site() == ComputeSite::Host;
@@ -138,37 +136,15 @@ int run_view(const ViewOptions& o) {
             }
             apply_edits(s, session);
 
-            Timer render_timer;
-            const Frame frame = session.frame({.when = {.seconds = s.time_s}, .camera = s.camera.view(),
-                                               .outputs = {.color = false}, .ribbons_to_target = true});
-            s.render_ms = render_timer.elapsed_ms();
-            s.gpu = frame.timings.gpu;
-            s.extract_ms = frame.timings.extract_ms;
-            s.chain_ms = frame.timings.chain_ms;
-            s.visibility_ms = frame.timings.visibility_ms;
-            s.coherence_ms = frame.timings.coherence_ms;
-            s.paths = frame.screen_paths.size();
-
-            ui.begin_frame();
-            input.ui_keyboard = ui.wants_keyboard();
-            draw_panel(s);
-            ui.end_frame();
-            Timer present_timer;
-            ImageRGBA8 shot;
-            const bool want_shot = !s.screenshot_path.empty();
-            if (!swapchain.present({.frame = &session.target().color,
-                                    .overlay = [&](VkCommandBuffer cmd) { ui.record(cmd); },
-                                    .screenshot = want_shot ? &shot : nullptr}))
-                recreate = true;
-            s.present_ms = present_timer.elapsed_ms();
-            if (want_shot && !shot.pixels.empty()) write_screenshot(s, shot);
+            FrameTimings timings;
+            if (!draw_and_present(s, session, swapchain, ui, input, timings)) recreate = true;
             if (!s.save_path.empty()) save_view();
             const auto now = std::chrono::steady_clock::now();
             s.frame_ms = std::chrono::duration<double, std::milli>(now - last).count();
             last = now;
             s.history.push_back(float(s.frame_ms));
             if (s.history.size() > 120) s.history.pop_front();
-            if (frames++ >= warmup) stats.add(s, frame.timings);
+            if (frames++ >= warmup) stats.add(s, timings);
         }
         stats.print(swapchain.extent().width, swapchain.extent().height);
     }  // GPU objects destroyed

@@ -151,4 +151,36 @@ void ViewStats::print(uint32_t width, uint32_t height) const {
         if (t.ms >= 0.0) std::printf("  GPU %s: %.3f ms\n", t.name.c_str(), t.ms / n);
 }
 
+ViewerState initial_state(const SceneSession& session, bool panel, const std::string& output_dir) {
+    ViewerState s;
+    s.desc = session.desc();
+    for (size_t i = 0; i < session.line_sets().size(); ++i) {
+        s.set_names.push_back(session.line_sets()[i].name);
+        s.has_slam.push_back(session.line_set_has_slam(i));
+        s.strokes.push_back(session.line_set_has_slam(i));
+        s.ribbon.push_back(!session.line_sets()[i].style.ribbon.empty());
+    }
+    s.camera = s.home = OrbitCamera::from(session.scene().camera);
+    s.animated = session.animated();
+    s.duration_s = s.animated ? session.duration_s() : 0.0f;
+    s.fps = s.desc.animation.fps;
+    s.playing = s.animated;
+    s.panel = panel;
+    s.output_dir = output_dir;
+    s.triangles = session.scene().mesh.triangle_count();
+    return s;
+}
+
+// The panel's edits reach the session before the frame.
+void apply_edits(ViewerState& s, SceneSession& session) {
+    session.lines() = s.desc.lines;
+    session.surface() = s.desc.style;
+    session.coherence().policy = s.coherence.policy;
+    session.coherence().splat_radius_px = s.coherence.splat_radius_px;
+    if (s.crease_changed) session.rebuild_lines();
+    if (s.slams_changed)
+        for (size_t i = 0; i < s.strokes.size(); ++i) session.set_line_set_textured(i, s.strokes[i]);
+    s.crease_changed = s.slams_changed = false;
+}
+
 }  // namespace lw::cli

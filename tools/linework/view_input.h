@@ -11,6 +11,7 @@
 #include "platform/ui_overlay.h"
 #include "platform/window.h"
 #include "render/frame_renderer.h"
+#include "session/scene_session.h"
 #include "view_script.h"
 #include "view_state.h"
 
@@ -33,6 +34,11 @@ void handle_mouse(Window& window, const UiOverlay& ui, Input& input, float heigh
 
 // This frame's script commands; `save_view` writes the scene file of the current view.
 void play_script(ScriptPlayer& player, Window& window, Input& input, float height, const std::function<void()>& save_view);
+
+// The viewer's state at start: the session's scene, sets and camera; the panel shown or not.
+[[nodiscard]] ViewerState initial_state(const SceneSession& session, bool panel, const std::string& output_dir);
+// The panel's edits reach the session before the frame.
+void apply_edits(ViewerState& s, SceneSession& session);
 
 // The current view as a scene file (F5, the panel, the script's `save`): s.save_path, or a
 // numbered file in the output folder for "*".
