@@ -205,12 +205,14 @@ void draw_panel(ViewerState& s) {
 
     LinesDesc& lines = s.desc.lines;
     if (ImGui::CollapsingHeader("Lines", ImGuiTreeNodeFlags_DefaultOpen)) {
-        ImGui::Checkbox("silhouettes (l)", &lines.params.silhouettes);
-        ImGui::SameLine(170);
-        ImGui::Checkbox("suggestive (s)", &lines.params.suggestive);
-        ImGui::Checkbox("creases (c)", &lines.params.creases);
-        ImGui::SameLine(170);
-        ImGui::Checkbox("borders (b)", &lines.params.borders);
+        if (lines.sets.empty()) {  // the shorthand's sets are the types (explicit sets: below)
+            ImGui::Checkbox("silhouettes (l)", &lines.params.silhouettes);
+            ImGui::SameLine(170);
+            ImGui::Checkbox("suggestive (s)", &lines.params.suggestive);
+            ImGui::Checkbox("creases (c)", &lines.params.creases);
+            ImGui::SameLine(170);
+            ImGui::Checkbox("borders (b)", &lines.params.borders);
+        }
         ImGui::SliderFloat("suggestive thr.", &lines.params.sug_thresh, 0.0f, 0.2f, "%.3f");
         ImGui::SliderFloat("crease angle", &lines.params.crease_angle_deg, 1.0f, 179.0f, "%.0f°");
         if (ImGui::IsItemDeactivatedAfterEdit()) s.crease_changed = true;
