@@ -195,5 +195,72 @@ TEST_F(LineSetImage, NoiseIsDeterministicAndBounded) {
     EXPECT_GT(compare_images(a, render(other)).max_abs_error, 0);
 }
 
+// The run of ink through the middle of the top side, on the row where it lies.
+struct SideRun {
+    int row = -1, length = 0;
+};
+SideRun top_side_run(const ImageRGBA8& image, bool (*ink)(const ImageRGBA8&, int, int)) {
+    SideRun run;
+    for (int y = 0; y < kH / 2 && run.row < 0; ++y)
+        if (ink(image, kW / 2, y)) run.row = y + 1;
+    if (run.row < 0) return run;
+    int left = kW / 2, right = kW / 2;
+    while (left > 0 && ink(image, left - 1, run.row)) --left;
+    while (right < kW - 1 && ink(image, right + 1, run.row)) ++right;
+    run.length = right - left + 1;
+    return run;
+}
+
+// Alpha, colour along the stroke, square against butt caps, tip removal, backbone stretch
+// and sinus displacement, each read off the pixels of the square's top side (138 px).
+TEST_F(LineSetImage, AlphaColourCapsAndGeometryInThePixels) {
+    auto rgb = [](const ImageRGBA8& image, int x, int y) {
+        const size_t i = size_t(y * image.width + x) * 4;
+        return glm::ivec3(image.pixels[i], image.pixels[i + 1], image.pixels[i + 2]);
+    };
+    const SideRun plain = top_side_run(render(borders(4.0f)), &LineSetImage::ink);
+    ASSERT_GT(plain.length, 120);
+
+    LineSetDesc half = borders(4.0f);  // alpha 0.5 black over white: 128 ± 2
+    half.style.alpha = 0.5f;
+    half.style.taper_in_px = 0.001f;  // a styled set (the stroke builder) with no visible taper
+    const ImageRGBA8 a = render(half);
+    EXPECT_NEAR(rgb(a, kW / 2, plain.row).r, 128, 2) << "alpha";
+
+    LineSetDesc ramp = borders(4.0f);  // red at the start, blue at the end
+    ramp.style.color_modifiers = {{.input = ModifierInput::Along,
+                                   .ramp = {{{0.0f, glm::vec3(1, 0, 0)}, {1.0f, glm::vec3(0, 0, 1)}}}}};
+    const ImageRGBA8 c = render(ramp);
+    const glm::ivec3 near_left = rgb(c, kW / 2 - 55, plain.row), near_right = rgb(c, kW / 2 + 55, plain.row);
+    EXPECT_GT(std::abs((near_left.r - near_left.b) - (near_right.r - near_right.b)), 300)
+        << "one end red, the other blue";
+
+    LineSetDesc dashed = borders(6.0f);  // dashes [10, 10]: butt 10 px, square 16 px
+    dashed.style.dashes = {10.0f, 10.0f};
+    const SideRun butt = top_side_run(render(dashed), &LineSetImage::ink);
+    dashed.style.cap = Cap::Square;
+    const SideRun square = top_side_run(render(dashed), &LineSetImage::ink);
+    EXPECT_NEAR(square.length - butt.length, 6, 1) << butt.length << " " << square.length;
+
+    LineSetDesc tips = borders(4.0f);  // tip removal: 10 px off each end
+    tips.style.geometry = {{.kind = GeometryModifier::Kind::TipRemove, .length_px = 10.0f}};
+    EXPECT_NEAR(top_side_run(render(tips), &LineSetImage::ink).length, plain.length - 20, 2);
+    LineSetDesc stretched = borders(4.0f);  // backbone stretch: 5 px past each end
+    stretched.style.geometry = {{.kind = GeometryModifier::Kind::BackboneStretch, .length_px = 5.0f}};
+    EXPECT_NEAR(top_side_run(render(stretched), &LineSetImage::ink).length, plain.length + 10, 2);
+
+    LineSetDesc sinus = borders(2.0f);  // ±3 px along the normal: ink spans 2·3 + 2 rows
+    sinus.style.geometry = {{.kind = GeometryModifier::Kind::Sinus, .wavelength_px = 30.0f, .amplitude_px = 3.0f}};
+    const ImageRGBA8 w = render(sinus);
+    int lowest = kH, highest = -1;
+    for (int x = 110; x < 210; ++x)
+        for (int y = plain.row - 10; y <= plain.row + 10; ++y)
+            if (ink(w, x, y)) {
+                lowest = std::min(lowest, y);
+                highest = std::max(highest, y);
+            }
+    EXPECT_NEAR(highest - lowest + 1, 2 * 3 + 2, 1) << "sinus rows " << highest - lowest + 1;
+}
+
 }  // namespace
 }  // namespace lw
