@@ -83,9 +83,7 @@ void RenderTarget::write_color(const Context& ctx, std::span<const uint8_t> rgba
                               .src_access = VK_ACCESS_2_MEMORY_READ_BIT,
                               .dst_stage = VK_PIPELINE_STAGE_2_COPY_BIT,
                               .dst_access = VK_ACCESS_2_TRANSFER_WRITE_BIT});
-        VkBufferImageCopy region{.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
-                                 .imageExtent = {width, height, 1}};
-        vkCmdCopyBufferToImage(cmd, staging.get(), color.get(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+        record_buffer_to_image(cmd, staging, color);
         record_image_barrier(cmd, color,
                              {.old_layout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                               .new_layout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,

@@ -194,9 +194,7 @@ void upload_image(const Context& ctx, const Image& image, std::span<const std::b
                               .new_layout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                               .dst_stage = VK_PIPELINE_STAGE_2_COPY_BIT,
                               .dst_access = VK_ACCESS_2_TRANSFER_WRITE_BIT});
-        VkBufferImageCopy region{.imageSubresource = {image.aspect(), 0, 0, 1},
-                                 .imageExtent = {image.extent().width, image.extent().height, image.depth()}};
-        vkCmdCopyBufferToImage(cmd, staging.get(), image.get(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+        record_buffer_to_image(cmd, staging, image);
         record_image_barrier(cmd, image,
                              {.old_layout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                               .new_layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
@@ -219,6 +217,12 @@ Handle<VkSampler> create_sampler(const Context& ctx, const SamplerDesc& desc) {
     VkSampler sampler = VK_NULL_HANDLE;
     LW_VK(vkCreateSampler(ctx.device(), &info, nullptr, &sampler));
     return Handle<VkSampler>(ctx.device(), sampler, vkDestroySampler);
+}
+
+void record_buffer_to_image(VkCommandBuffer cmd, const Buffer& buffer, const Image& image) {
+    VkBufferImageCopy region{.imageSubresource = {image.aspect(), 0, 0, 1},
+                             .imageExtent = {image.extent().width, image.extent().height, image.depth()}};
+    vkCmdCopyBufferToImage(cmd, buffer.get(), image.get(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
 }
 
 void record_image_to_buffer(VkCommandBuffer cmd, const Image& image, const Buffer& buffer) {

@@ -127,6 +127,9 @@ struct SamplerDesc {
 // Bytes per texel of the formats the engine reads back.
 uint32_t format_texel_size(VkFormat format);
 
+// Records a copy of a tightly packed buffer into the whole of `image` (2D or 3D), which is in
+// TRANSFER_DST_OPTIMAL layout.
+void record_buffer_to_image(VkCommandBuffer cmd, const Buffer& buffer, const Image& image);
 // Records a copy of `image` (in TRANSFER_SRC_OPTIMAL layout) into a Readback buffer.
 void record_image_to_buffer(VkCommandBuffer cmd, const Image& image, const Buffer& buffer);
 // Rows [first_row, first_row + rows) of a 2D image to the same rows of a buffer laid out
