@@ -107,6 +107,13 @@ struct Model {
 // Loads and validates a .gltf or .glb file. Throws lw::Error naming the file and the problem.
 [[nodiscard]] Model load_gltf(const std::filesystem::path& path);
 
+// A model of one triangle mesh given as arrays (the Python module's meshes): one root node
+// at the identity, one primitive without a material. `name` stands for the file in errors
+// and in line sets' "models". Checked as a file would be: at least one triangle, every index
+// below the vertex count, finite positions, normals (when given) one per vertex and finite.
+[[nodiscard]] Model model_from_arrays(const std::string& name, std::vector<glm::vec3> positions,
+                                      std::vector<uint32_t> indices, std::vector<glm::vec3> normals = {});
+
 // T × R × S, as glTF 2.0 §3.5.2 composes a node's local transform from its properties.
 [[nodiscard]] glm::mat4 trs_matrix(const glm::vec3& t, const glm::quat& r, const glm::vec3& s);
 

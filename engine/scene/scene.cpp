@@ -16,10 +16,16 @@ void append_mesh(TriangleMesh& mesh, const TriangleMesh& part) {
 }
 
 LoadedScene load_scene(const SceneDesc& desc) {
-    if (desc.models.empty()) throw Error("scene has no model");
+    std::vector<Model> models;
+    for (const auto& path : desc.models) models.push_back(load_gltf(path));
+    return load_scene(desc, std::move(models));
+}
+
+LoadedScene load_scene(const SceneDesc& desc, std::vector<Model> models) {
+    if (models.empty()) throw Error("scene has no model");
     LoadedScene scene{.desc = desc};
-    for (const auto& path : desc.models) {
-        scene.models.push_back(load_gltf(path));
+    for (Model& loaded : models) {
+        scene.models.push_back(std::move(loaded));
         const Model& model = scene.models.back();
         // The rest pose, skinned: a skinned mesh's node transform does not place it (glTF 2.0
         // §3.7.3), its joints do — RobotExpressive's hands sit at its wrists only so.
@@ -27,7 +33,7 @@ LoadedScene load_scene(const SceneDesc& desc) {
         append_mesh(scene.mesh, flatten_posed(model, rest_pose(model)));
         scene.model_triangles.push_back(scene.mesh.triangle_count() - before);
     }
-    if (scene.mesh.indices.empty()) throw Error(desc.models.front().string() + ": no triangles to draw");
+    if (scene.mesh.indices.empty()) throw Error(scene.models.front().path.string() + ": no triangles to draw");
     scene.bounds = compute_bounds(scene.mesh.positions);
     const float aspect = float(desc.width) / float(desc.height);
     scene.camera = desc.camera ? *desc.camera : frame_bounds(scene.bounds, aspect, desc.fov_deg);

@@ -26,6 +26,9 @@ struct LoadedScene {
 };
 
 [[nodiscard]] LoadedScene load_scene(const SceneDesc& desc);
+// The same with the models already in memory (meshes given as arrays), in place of reading
+// `desc.models`; each model's path names it.
+[[nodiscard]] LoadedScene load_scene(const SceneDesc& desc, std::vector<Model> models);
 
 // The scene's geometry at `seconds` on the animation clock: every model posed by its
 // selected clips (the scene's "animation"), skinned; the rest pose when nothing plays.

@@ -259,7 +259,7 @@ std::vector<VectorLayerDesc> read_layers(ObjectReader& scene, const std::filesys
     return layers;
 }
 
-SceneDesc parse_scene_json(const std::string& text, const std::filesystem::path& source) {
+SceneDesc parse_scene_json(const std::string& text, const std::filesystem::path& source, bool models_given) {
     json root;
     try {
         root = json::parse(text);
@@ -275,7 +275,8 @@ SceneDesc parse_scene_json(const std::string& text, const std::filesystem::path&
 
     if (r.has("version") && r.number("version", 1, 1) != 1) r.fail_key("version", "unsupported");
     if (r.has("layers")) scene.layers = read_layers(r, source);
-    if (!r.has("model") && scene.layers.empty())
+    if (models_given && r.has("model")) r.fail_key("model", "not allowed beside a mesh given as arrays");
+    if (!r.has("model") && scene.layers.empty() && !models_given)
         r.fail_key("model", "required (a .gltf/.glb path, or an array of them) unless the scene has layers");
     if (r.has("model")) {
         const json& m = r.at("model");

@@ -54,7 +54,9 @@ struct SceneDesc {
 [[nodiscard]] SceneDesc load_scene_file(const std::filesystem::path& path);
 
 // Parses scene JSON text; `source` names it in errors and anchors relative model paths.
-[[nodiscard]] SceneDesc parse_scene_json(const std::string& text, const std::filesystem::path& source);
+// `models_given`: the caller brings the models (meshes as arrays), so "model" must be absent.
+[[nodiscard]] SceneDesc parse_scene_json(const std::string& text, const std::filesystem::path& source,
+                                         bool models_given = false);
 
 // Scene JSON for `desc` with its fixed `camera` (what the viewer saves as "the current
 // view"), in the format load_scene_file reads. Model, SLAM and ribbon paths are written
