@@ -45,14 +45,31 @@ FaceGroups face_groups(const LoadedScene& scene, const TriangleMesh& mesh, const
     return groups;
 }
 
+// The scene's models: read from the description's paths, or given (meshes as arrays), then
+// named in the description so that line sets' "models" and messages see them.
+LoadedScene load_models(SceneDesc& desc, std::vector<Model> models) {
+    if (models.empty()) return desc.models.empty() ? LoadedScene{.desc = desc} : load_scene(desc);
+    desc.models.clear();
+    for (const Model& model : models) desc.models.push_back(model.path);
+    return load_scene(desc, std::move(models));
+}
+
 }  // namespace
 
+SessionOptions default_session_options(const SceneDesc& desc) {
+    SessionOptions options;
+    options.coherence.splat_radius_px = desc.lines.sample_spacing_px * 2.0f;
+    return options;
+}
+
 SceneSession::SceneSession(const Context& ctx, SceneDesc desc, const SessionOptions& options)
+    : SceneSession(ctx, std::move(desc), options, {}) {}
+
+SceneSession::SceneSession(const Context& ctx, SceneDesc desc, const SessionOptions& options, std::vector<Model> models)
     : ctx_(&ctx),
       desc_(std::move(desc)),
       options_(options),
-      scene_(has_model() ? load_scene(desc_) : LoadedScene{.desc = desc_}),
-      sets_(effective_line_sets(desc_.lines)),
+      scene_(load_models(desc_, std::move(models))),
       layers_(load_scene_layers(desc_)),
       renderer_(ctx, uint32_t(desc_.width), uint32_t(desc_.height), options.color_format) {
     if (options.subdivide > 0) scene_.mesh = subdivide_midpoint(scene_.mesh, options.subdivide);
@@ -60,25 +77,7 @@ SceneSession::SceneSession(const Context& ctx, SceneDesc desc, const SessionOpti
     if (options.camera.target) scene_.camera.target = *options.camera.target;
     if (options.camera.up) scene_.camera.up = *options.camera.up;
     if (scene_.camera.eye == scene_.camera.target) throw Error("camera: the eye and the target coincide");
-    // Every file a style names, read before any rendering so that a bad one fails first; a
-    // SLAM shared by several sets is read once.
-    for (size_t i = 0; i < sets_.size(); ++i) {
-        const LineSetStyle& style = sets_[i].style;
-        std::optional<Slam> slam;
-        for (size_t j = 0; j < i && !style.slam.empty() && !slam; ++j)
-            if (sets_[j].style.slam == style.slam) slam = slams_[j];
-        if (!style.slam.empty() && !slam) slam = read_slam(style.slam);
-        if (slam) renderer_.set_slam(i, *slam);
-        slams_.push_back(std::move(slam));
-        textured_.push_back(true);
-        ribbons_.push_back(style.ribbon.empty() ? std::nullopt
-                                                : std::optional(make_exemplar(read_image_rgba8(style.ribbon), style.ribbon)));
-    }
-    if (options.length_scale > 0.0f) {
-        desc_.lines.length_scale = options.length_scale;
-        for (LineSetDesc& set : desc_.lines.sets) set.coherence.length_scale = options.length_scale;
-        sets_ = effective_line_sets(desc_.lines);
-    }
+    load_line_styles();
     for (LayerStyle& style : layers_.styles) {  // the same policy and tracker settings for layers
         if (options.length_scale > 0.0f) style.coherence.length_scale = options.length_scale;
         style.coherence.policy = options.coherence.policy;
@@ -97,6 +96,61 @@ SceneSession::SceneSession(const Context& ctx, SceneDesc desc, const SessionOpti
         if (const LineMesh* lines = renderer_.line_mesh())
             renderer_.set_face_groups(face_groups(scene_, scene_.mesh, *lines, options.subdivide));
     }
+}
+
+void SceneSession::load_line_styles() {
+    if (options_.length_scale > 0.0f) {
+        desc_.lines.length_scale = options_.length_scale;
+        for (LineSetDesc& set : desc_.lines.sets) set.coherence.length_scale = options_.length_scale;
+    }
+    sets_ = effective_line_sets(desc_.lines);
+    // Every file a style names, read before any rendering so that a bad one fails first; a
+    // SLAM or ribbon exemplar shared by several sets (or kept from before) is read once.
+    std::vector<std::optional<Slam>> slams;
+    std::vector<std::optional<Exemplar>> ribbons;
+    for (size_t i = 0; i < sets_.size(); ++i) {
+        const LineSetStyle& style = sets_[i].style;
+        std::optional<Slam> slam;
+        for (size_t j = 0; j < slams.size() && !style.slam.empty() && !slam; ++j)
+            if (sets_[j].style.slam == style.slam) slam = slams[j];
+        for (size_t j = 0; j < slams_.size() && !style.slam.empty() && !slam; ++j)
+            if (slam_files_[j] == style.slam) slam = slams_[j];
+        if (!style.slam.empty() && !slam) slam = read_slam(style.slam);
+        slams.push_back(std::move(slam));
+        std::optional<Exemplar> ribbon;
+        for (size_t j = 0; j < ribbons_.size() && !style.ribbon.empty() && !ribbon; ++j)
+            if (ribbon_files_[j] == style.ribbon) ribbon = ribbons_[j];
+        if (!style.ribbon.empty() && !ribbon) ribbon = make_exemplar(read_image_rgba8(style.ribbon), style.ribbon);
+        ribbons.push_back(std::move(ribbon));
+    }
+    // Every file read: only now is the old state replaced.
+    for (size_t i = 0; i < std::max(slams.size(), slams_.size()); ++i) {
+        if (i < slams.size() && slams[i]) renderer_.set_slam(i, *slams[i]);
+        else if (i < slams_.size() && slams_[i]) renderer_.clear_slam(i);
+    }
+    slams_ = std::move(slams);
+    ribbons_ = std::move(ribbons);
+    textured_.assign(sets_.size(), true);
+    slam_files_.clear();
+    ribbon_files_.clear();
+    for (const LineSetDesc& set : sets_) {
+        slam_files_.push_back(set.style.slam);
+        ribbon_files_.push_back(set.style.ribbon);
+    }
+}
+
+void SceneSession::set_lines(const LinesDesc& lines) {
+    const LinesDesc before = desc_.lines;
+    desc_.lines = lines;
+    try {
+        load_line_styles();
+    } catch (...) {
+        desc_.lines = before;
+        sets_ = effective_line_sets(desc_.lines);
+        throw;
+    }
+    if (lines.enabled != before.enabled || lines.params.crease_angle_deg != before.params.crease_angle_deg)
+        rebuild_lines();
 }
 
 float SceneSession::duration_s() const { return has_model() ? animation_duration(scene_) : 0.0f; }

@@ -51,6 +51,10 @@ struct SessionOptions {
     CameraOverride camera;
 };
 
+// What `linework render` runs a scene with when no option changes it: the base coherence
+// parameters with δ twice the scene's sample spacing (§4.1), the rest at their defaults.
+[[nodiscard]] SessionOptions default_session_options(const SceneDesc& desc);
+
 struct FrameRequest {
     PathTime when;                      // animation clock and progress over the range
     std::optional<ViewCamera> camera;   // a viewer's camera; absent: the scene's at `when`
@@ -63,6 +67,9 @@ struct FrameRequest {
 class SceneSession {
 public:
     SceneSession(const Context& ctx, SceneDesc desc, const SessionOptions& options = {});
+    // With the models in memory (meshes given as arrays) instead of `desc.models`' files;
+    // the description then names each by its model's path.
+    SceneSession(const Context& ctx, SceneDesc desc, const SessionOptions& options, std::vector<Model> models);
 
     const SceneDesc& desc() const { return desc_; }
     const LoadedScene& scene() const { return scene_; }
@@ -82,6 +89,10 @@ public:
     CoherenceParams& coherence() { return options_.coherence; }  // the base (viewer: policy, radius)
     // The line mesh again (a new crease angle); temporal state starts afresh.
     void rebuild_lines();
+    // New lines as a whole (a Python script's edit): SLAMs and ribbon exemplars the new sets
+    // name are read (a bad file throws and leaves the session as it was), and the line mesh
+    // is rebuilt when lines are switched on or off or the crease angle changed.
+    void set_lines(const LinesDesc& lines);
     // Whether a set's SLAM is drawn (the viewer's style switch; the SLAM stays loaded).
     void set_line_set_textured(size_t set, bool on);
     bool line_set_textured(size_t set) const;
@@ -115,6 +126,7 @@ public:
     [[nodiscard]] std::vector<DumpGroup> dump_groups(const Frame& frame) const;
 
 private:
+    void load_line_styles();
     void pose(float seconds);
     double draw_ribbons(Frame& frame, uint64_t seed);
     bool parameterized() const;
@@ -127,6 +139,7 @@ private:
     std::vector<std::optional<Slam>> slams_;     // per set
     std::vector<bool> textured_;                 // per set: its SLAM is drawn
     std::vector<std::optional<Exemplar>> ribbons_;  // per set
+    std::vector<std::string> slam_files_, ribbon_files_;  // what slams_ and ribbons_ were read from
     SceneLayers layers_;
     FrameRenderer renderer_;
     bool animated_ = false;

@@ -56,11 +56,11 @@ SceneDesc scene_from_options(const SceneOptions& o) {
 }
 
 SessionOptions session_options(const SceneOptions& o, const SceneDesc& desc) {
-    SessionOptions session;
+    SessionOptions session = default_session_options(desc);
     CoherenceParams& c = session.coherence;
     if (o.param == "arclength") c.policy = ParamPolicy::Arclength;
     if (o.param == "stretch") c.policy = ParamPolicy::Stretch;
-    c.splat_radius_px = o.splat_radius > 0.0f ? o.splat_radius : desc.lines.sample_spacing_px * 2.0f;
+    if (o.splat_radius > 0.0f) c.splat_radius_px = o.splat_radius;
     c.ransac.inlier_px = o.inlier_px;
     c.min_stroke_length_px = o.min_stroke_length;
     session.length_scale = o.length_scale;
