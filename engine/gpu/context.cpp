@@ -2,6 +2,7 @@
 #include "gpu/context.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <cstring>
 
 #include "core/error.h"
@@ -396,6 +397,11 @@ void Context::set_name(VkObjectType type, uint64_t handle, const char* name) con
 std::vector<std::string> Context::validation_messages() const {
     std::lock_guard lock(messages_mutex_);
     return validation_messages_;
+}
+
+bool validation_from_environment() {
+    const char* value = std::getenv("LINEWORK_VALIDATION");
+    return value && *value && std::string(value) != "0";
 }
 
 void Context::clear_validation_messages() {

@@ -63,6 +63,10 @@ inline constexpr const char* kComputeSiteHelp =
     "such as lavapipe, where that is faster; the device on GPUs), device, or host";
 [[nodiscard]] std::optional<ComputeSite> parse_compute_site(const std::string& text);
 
+// LINEWORK_VALIDATION set (and not "0"): every program over the engine (the command line,
+// the Python module, the tests) turns the validation layer on.
+[[nodiscard]] bool validation_from_environment();
+
 struct DeviceInfo {
     int index = 0;
     std::string name;

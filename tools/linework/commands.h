@@ -40,8 +40,6 @@ Runner add_view_command(CLI::App& app);
 glm::vec3 parse_vec3(const std::string& text, const std::string& option);
 // "1920x1080" -> (1920, 1080); throws a usage error naming `option`.
 glm::ivec2 parse_size(const std::string& text, const std::string& option);
-// True when LINEWORK_VALIDATION is set to something other than 0 or empty.
-bool validation_from_environment();
 // --slam FILE --stroke-width W: silhouettes and suggestive contours (the shorthand's types,
 // or every line set selecting either) as SLAM strokes of width W, tapered over 2W
 // (replacing any ribbon style).

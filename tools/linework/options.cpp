@@ -50,11 +50,6 @@ glm::ivec2 parse_size(const std::string& text, const std::string& option) {
     return {w, h};
 }
 
-bool validation_from_environment() {
-    const char* value = std::getenv("LINEWORK_VALIDATION");
-    return value && *value && std::string(value) != "0";
-}
-
 void use_slam_strokes(LinesDesc& lines, const std::string& slam, float width) {
     // Line sets: every set that draws silhouettes or suggestive contours.
     for (LineSetDesc& set : lines.sets)
