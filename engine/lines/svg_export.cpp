@@ -18,11 +18,15 @@ std::string hex_color(glm::vec3 c) {
     return text;
 }
 
-std::string number(float v) {
+// Widths with two decimals; coordinates with three, so that a path read back from the file
+// lies within 5e-4 px of the one drawn (the Python module's lines are compared to it).
+std::string number(float v, int decimals = 2) {
     char text[32];
-    std::snprintf(text, sizeof text, "%.2f", double(v));
+    std::snprintf(text, sizeof text, "%.*f", decimals, double(v));
     return text;
 }
+
+std::string point(glm::vec2 p) { return number(p.x, 3) + "," + number(p.y, 3); }
 
 }  // namespace
 
@@ -37,8 +41,8 @@ std::string lines_svg(int width, int height, const std::vector<SvgGroup>& groups
         for (const ScreenPath& path : group.paths ? *group.paths : none) {
             if (!path.visible || path.samples.size() < 2) continue;
             svg += "    <polyline points=\"";
-            for (const ScreenSample& s : path.samples) svg += number(s.pixel.x) + "," + number(s.pixel.y) + " ";
-            if (path.closed) svg += number(path.samples.front().pixel.x) + "," + number(path.samples.front().pixel.y);
+            for (const ScreenSample& s : path.samples) svg += point(s.pixel) + " ";
+            if (path.closed) svg += point(path.samples.front().pixel);
             if (svg.back() == ' ') svg.pop_back();
             svg += "\"/>\n";
         }
