@@ -67,10 +67,10 @@ SlamSynthesis synthesize_slam(const Plane& exemplar, const SlamSynthesisDesc& de
         throw Error(name + ": " + std::to_string(exemplar.cols) + " columns; a " + std::to_string(exemplar.rows) +
                     "-row exemplar needs at least " + std::to_string(m.padded_rows) + " along the stroke");
     if (desc.length % (2 * m.unit) != 0 || desc.length < 2 * m.unit)
-        throw usage_error("--length: " + std::to_string(desc.length) + " is not a multiple of " +
-                          std::to_string(2 * m.unit) + " (twice the pyramid unit of a " + std::to_string(exemplar.rows) +
-                          "-row exemplar)");
-    if (desc.levels < 2) throw usage_error("--levels: at least 2");
+        throw ParameterError("SLAM length", ": " + std::to_string(desc.length) + " is not a multiple of " +
+                                                std::to_string(2 * m.unit) + " (twice the pyramid unit of a " +
+                                                std::to_string(exemplar.rows) + "-row exemplar)");
+    if (desc.levels < 2) throw ParameterError("SLAM levels", ": at least 2");
 
     Timer analysis;
     const Plane padded = pad_exemplar(exemplar, m, out.exemplar_cols);

@@ -64,7 +64,8 @@ int run_slam(const SlamOptions& o) {
     Progress progress(o.levels, "level");
     int done = 0;
     desc.on_level = [&](const synth::SlamLevelReport& r) { progress.update(++done, r.index, r.ms); };
-    const synth::SlamSynthesis s = synth::synthesize_slam(ink, desc);
+    const synth::SlamSynthesis s =
+        flags_named({{"SLAM length", "--length"}, {"SLAM levels", "--levels"}}, [&] { return synth::synthesize_slam(ink, desc); });
     if (s.exemplar_cols != ink.cols)
         std::printf("exemplar cropped to %d columns (a multiple of %d)\n", s.exemplar_cols, m.unit);
     for (const synth::SlamLevelReport& r : s.reports)
