@@ -17,6 +17,8 @@ packages=(
   libcgal-dev                               # Delaunay triangulations of the stroke-pattern synthesizer
   libfftw3-dev                              # FFTs of the SLAM synthesizer (fftw3f)
   libgtest-dev libbenchmark-dev
+  python3-dev python3-pybind11 python3-numpy  # the Python module (python/) and its arrays
+  python3-pytest                            # its tests (tests/python)
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -1,0 +1,198 @@
+// python/session.cpp — a Python session's scene and camera: construction from a file, a
+// model, a dict or arrays; configure(); the camera by parts or by view matrix.
+#include "session.h"
+
+#include <fstream>
+#include <sstream>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "scene/scene_file.h"
+
+namespace lw::py {
+
+namespace {
+
+using json = nlohmann::json;
+
+// Python data → JSON through the json module; NumPy arrays and scalars become lists/numbers.
+json to_json(const pyb::object& value, const std::string& name) {
+    pyb::object dumps = pyb::module_::import("json").attr("dumps");
+    pyb::cpp_function listed([](const pyb::object& o) -> pyb::object {
+        if (pyb::hasattr(o, "tolist")) return o.attr("tolist")();
+        throw pyb::type_error("not JSON data: " + std::string(pyb::str(pyb::type::of(o))));
+    });
+    std::string text;
+    try {
+        text = dumps(value, pyb::arg("default") = listed).cast<std::string>();
+    } catch (pyb::error_already_set& e) {
+        throw pyb::value_error(name + ": " + std::string(e.what()));
+    }
+    return json::parse(text);
+}
+
+std::string read_scene_text(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw pyb::value_error(path.string() + ": cannot open scene file (unreadable)");
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    return buffer.str();
+}
+
+// Keys a live session takes without starting afresh; any other change reopens it.
+bool live_key(const std::string& key) {
+    return key == "lines" || key == "line_sets" || key == "size" || key == "camera" || key == "fov" ||
+           key == "shading" || key == "color" || key == "background" || key == "version";
+}
+
+}  // namespace
+
+Session::Session(const pyb::object& scene, const SessionArgs& a)
+    : ctx_(shared_context(a.device, a.compute, a.validation)) {
+    const bool arrays = !a.vertices.is_none() || !a.faces.is_none();
+    if (arrays && (a.vertices.is_none() || a.faces.is_none()))
+        throw pyb::value_error("vertices and faces: give both (N×3 positions, M×3 vertex indices)");
+    if (arrays)
+        models_.push_back(reading_input([&] {
+            return model_from_arrays(a.name, array_to_vec3(a.vertices, "vertices"), array_to_indices(a.faces, "faces"),
+                                     a.normals.is_none() ? std::vector<glm::vec3>{} : array_to_vec3(a.normals, "normals"));
+        }));
+    // The scene as described: the file's JSON, {} beside a bare model or arrays, or the dict.
+    source_ = "scene";  // a dict: relative paths from the working folder
+    if (scene.is_none()) {
+        if (!arrays) throw pyb::value_error("scene: give a scene file, a model, a dict, or vertices and faces");
+        base_ = json::object();
+    } else if (pyb::isinstance<pyb::dict>(scene)) {
+        base_ = to_json(scene, "scene");
+    } else {
+        if (arrays) throw pyb::value_error("scene: a file and a mesh as arrays: give one (or a dict beside the arrays)");
+        const std::filesystem::path path = scene.cast<std::filesystem::path>();
+        if (!std::filesystem::exists(path)) throw pyb::value_error(path.string() + ": no such file");
+        if (is_model_path(path)) {
+            bare_model_ = true;
+            model_path_ = path;
+            base_ = json::object();
+        } else {
+            const std::string text = read_scene_text(path);
+            (void)reading_input([&] { return parse_scene_json(text, path); });  // the file's own errors first
+            base_ = json::parse(text);
+            source_ = path;
+        }
+    }
+    if (!base_.is_object()) throw pyb::value_error("scene: expected a JSON object");
+    if (a.size) base_["size"] = {a.size->first, a.size->second};
+    camera_override_ = a.camera;
+    fov_ = a.fov;
+    coherent_ = a.coherent;
+    open(parse(base_));
+}
+
+Session::~Session() {
+    const std::lock_guard lock(gpu_mutex());
+    session_.reset();
+}
+
+SceneDesc Session::parse(const json& scene) const {
+    SceneDesc desc = reading_input([&] {
+        const bool given = bare_model_ || !models_.empty();
+        SceneDesc d = parse_scene_json(scene.dump(), source_, given);
+        if (bare_model_) {  // as scene_for_model: no scene file behind it
+            d.models = {model_path_};
+            d.source.clear();
+        }
+        return d;
+    });
+    // As --fov: the framing camera's and the scene camera's.
+    if (fov_) {
+        if (!(*fov_ > 0.0f && *fov_ < 180.0f)) throw pyb::value_error("fov: must be between 0 and 180 degrees");
+        desc.fov_deg = *fov_;
+        if (desc.camera) desc.camera->fov_deg = *fov_;
+    }
+    return desc;
+}
+
+void Session::open(SceneDesc desc) {
+    SessionOptions options = default_session_options(desc);
+    options.coherent = coherent_;
+    options.camera = camera_override_;
+    const std::lock_guard lock(gpu_mutex());
+    session_.reset();  // its GPU memory first
+    session_ = reading_input([&] { return std::make_unique<SceneSession>(*ctx_, std::move(desc), options, models_); });
+    check_validation(*ctx_);
+}
+
+pyb::object Session::scene() const { return pyb::module_::import("json").attr("loads")(base_.dump()); }
+
+void Session::configure(const pyb::object& patch) {
+    if (!pyb::isinstance<pyb::dict>(patch)) throw pyb::value_error("configure: expected a dict of scene keys");
+    const json changes = to_json(patch, "configure");
+    json merged = base_;
+    merged.merge_patch(changes);
+    SceneDesc desc = parse(merged);  // a bad key throws here, with the session untouched
+    bool live = true;
+    for (const auto& [key, value] : changes.items()) live = live && live_key(key);
+    if (!live) {
+        open(std::move(desc));
+        camera_.reset();
+        base_ = std::move(merged);
+        return;
+    }
+    const std::lock_guard lock(gpu_mutex());
+    reading_input([&] {
+        session_->set_lines(desc.lines);
+        return 0;
+    });
+    session_->surface() = desc.style;
+    if (desc.width != session_->desc().width || desc.height != session_->desc().height)
+        session_->resize(uint32_t(desc.width), uint32_t(desc.height));
+    if (changes.contains("camera") || changes.contains("fov")) {
+        const float aspect = float(desc.width) / float(desc.height);
+        camera_ = desc.camera ? *desc.camera
+                              : (session_->has_model() ? frame_bounds(session_->scene().bounds, aspect, desc.fov_deg)
+                                                       : ViewCamera{});
+    }
+    base_ = std::move(merged);
+}
+
+ViewCamera Session::camera() const { return camera_ ? *camera_ : session_->camera_at(last_when_); }
+
+void Session::set_camera(const std::optional<glm::vec3>& eye, const std::optional<glm::vec3>& target,
+                         const std::optional<glm::vec3>& up, std::optional<float> fov) {
+    ViewCamera c = camera();
+    if (eye) c.eye = *eye;
+    if (target) c.target = *target;
+    if (up) c.up = *up;
+    if (fov) {
+        if (!(*fov > 0.0f && *fov < 180.0f)) throw pyb::value_error("fov: must be between 0 and 180 degrees");
+        c.fov_deg = *fov;
+    }
+    if (c.eye == c.target) throw pyb::value_error("camera: the eye and the target coincide");
+    if (glm::length(glm::cross(c.target - c.eye, c.up)) <= 1e-6f * glm::length(c.target - c.eye) * glm::length(c.up))
+        throw pyb::value_error("camera: up is parallel to the view direction");
+    camera_ = c;
+}
+
+void Session::set_view_matrix(const glm::mat4& view) {
+    // The camera a look-at matrix came from: its inverse holds the eye (column 3), the up
+    // (column 1) and the backward axis (column 2, OpenGL's convention, which lookAt makes).
+    const glm::mat4 to_world = glm::inverse(view);
+    const glm::vec3 eye(to_world[3]), up(to_world[1]), forward = -glm::vec3(to_world[2]);
+    if (!std::isfinite(eye.x + eye.y + eye.z) || glm::length(forward) < 1e-6f)
+        throw pyb::value_error("view: not an invertible view matrix");
+    // The target only orients the camera (near and far come from the scene's bounds): the
+    // point along the view axis as far away as the scene's centre.
+    const float distance =
+        session_->has_model() ? std::max(glm::length(session_->scene().bounds.center() - eye), 1e-3f) : 1.0f;
+    ViewCamera c = camera();
+    c.eye = eye;
+    c.up = glm::normalize(up);
+    c.target = eye + glm::normalize(forward) * distance;
+    camera_ = c;
+}
+
+CameraMatrices Session::matrices() const {
+    const auto [w, h] = size();
+    return camera_matrices(camera(), float(w) / float(h), session_->scene().bounds);
+}
+
+}  // namespace lw::py

@@ -1,0 +1,118 @@
+// python/session.h — what `linework.Session` is on the C++ side (bound in session_bind.cpp).
+//
+// Input:  a scene (file, bare model, dict, or a mesh as arrays) and the command line's
+//         overrides (device, size, camera, fov).
+// Output: per call, one frame of a SceneSession as Python data: `Polyline`s grouped as the
+//         SVG groups them, an H×W×4 image (and depth), a `FrameResult` per frame of a sequence.
+//
+// The scene is kept as the JSON it was described with (`base_`); configure() merges a patch
+// into it (RFC 7396) and parses the whole again with the scene-file parser, so every edit is
+// checked as a file would be and leaves the session unchanged when it is wrong.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include "convert.h"
+#include "session/scene_session.h"
+
+namespace lw::py {
+
+struct SessionArgs {
+    std::string device = "auto", compute = "auto";
+    std::optional<bool> validation;
+    std::optional<std::pair<int, int>> size;
+    CameraOverride camera;
+    std::optional<float> fov;
+    bool coherent = false;  // parameterize every set (RANSAC fits in each frame's lines)
+    pyb::object vertices = pyb::none(), faces = pyb::none(), normals = pyb::none();
+    std::string name = "mesh";  // an array mesh's name in errors and line sets' "models"
+};
+
+// One visible (or hidden) run of a brush path, as the SVG's <polyline> holds it, with what
+// the SVG does not: per point its visibility, fade, eye depth, arc length and surface point.
+struct Polyline {
+    pyb::array_t<float> points;    // N×2 pixels, x right, y down (the SVG's coordinates)
+    pyb::array_t<bool> visible;    // N
+    pyb::array_t<float> fade;      // N: the line's fade alpha (suggestive contours fade in)
+    pyb::array_t<float> depth;     // N: eye depth
+    pyb::array_t<float> s;         // N: screen arc length from the start, pixels
+    pyb::array_t<float> position;  // N×3 world-space surface point
+    bool closed = false;           // a whole loop: the SVG repeats the first point
+    std::string type, line_set;
+};
+
+struct FrameResult {
+    int index = 0;
+    float seconds = 0.0f;
+    pyb::object image = pyb::none(), depth = pyb::none(), lines = pyb::none();
+    pyb::dict timings;
+};
+
+class Session {
+public:
+    Session(const pyb::object& scene, const SessionArgs& args);
+    ~Session();
+    Session(const Session&) = delete;
+    Session& operator=(const Session&) = delete;
+
+    // The frame at `frame` (a frame number of the scene's range) or `seconds`.
+    pyb::object render(std::optional<int> frame, std::optional<float> seconds, bool depth);
+    pyb::dict lines(std::optional<int> frame, std::optional<float> seconds, bool hidden);
+    // Frame `index` of `range` (a sequence's), or of the scene's range at `frame` / `seconds`.
+    FrameResult frame_result(int index, const FrameRange& range, bool image, bool depth, bool lines, bool hidden);
+    FrameResult frame_at(std::optional<int> frame, std::optional<float> seconds, bool image, bool depth, bool lines,
+                         bool hidden);
+    FrameRange range() const { return session_->default_frames(); }
+    float fps() const { return session_->desc().animation.fps; }
+
+    SceneSession::Snapshot snapshot() const { return session_->snapshot(); }
+    void restore(const SceneSession::Snapshot& snapshot) {
+        const std::lock_guard lock(gpu_mutex());
+        session_->restore(snapshot);
+    }
+
+    pyb::object scene() const;                  // the scene as described and configured
+    void configure(const pyb::object& patch);   // merged into it, checked, applied
+    std::pair<int, int> size() const { return {session_->desc().width, session_->desc().height}; }
+
+    ViewCamera camera() const;
+    void set_camera(const std::optional<glm::vec3>& eye, const std::optional<glm::vec3>& target,
+                    const std::optional<glm::vec3>& up, std::optional<float> fov);
+    void set_view_matrix(const glm::mat4& view);
+    CameraMatrices matrices() const;
+    void reset_camera() { camera_.reset(); }
+
+    std::vector<std::string> validation_messages() const { return ctx_->validation_messages(); }
+
+private:
+    SceneDesc parse(const nlohmann::json& scene) const;
+    void open(SceneDesc desc);
+    Frame draw(const PathTime& when, uint64_t seed, const FrameOutputs& outputs);
+    PathTime time_of(std::optional<int> frame, std::optional<float> seconds, uint64_t& seed) const;
+    pyb::dict lines_of(const Frame& frame, bool hidden) const;
+    FrameResult result(int index, const PathTime& when, uint64_t seed, bool image, bool depth, bool lines, bool hidden);
+
+    std::shared_ptr<Context> ctx_;
+    nlohmann::json base_;
+    std::filesystem::path source_;     // relative paths resolve beside it; errors name it
+    bool bare_model_ = false;          // a .gltf/.glb given alone: the command line's defaults
+    std::filesystem::path model_path_;
+    std::vector<Model> models_;        // a mesh given as arrays
+    CameraOverride camera_override_;   // the constructor's eye, target, up
+    std::optional<float> fov_;
+    bool coherent_ = false;
+    std::optional<ViewCamera> camera_;  // set_camera(): replaces the scene's in every frame
+    PathTime last_when_;
+    std::unique_ptr<SceneSession> session_;
+};
+
+}  // namespace lw::py

@@ -1,0 +1,137 @@
+// python/session_frames.cpp — a Python session's frames: renders, lines and sequences as
+// NumPy data, drawn exactly as `linework render` draws frame f (frame_time over the range,
+// ribbon seed f + 1).
+#include <cmath>
+
+#include "session.h"
+
+namespace lw::py {
+
+namespace {
+
+Polyline polyline(const ScreenPath& path, const std::string& line_set) {
+    const size_t n = path.samples.size();
+    const auto N = pyb::ssize_t(n);
+    std::vector<float> points(n * 2), fade(n), depth(n), s(n), position(n * 3);
+    for (size_t i = 0; i < n; ++i) {
+        const ScreenSample& p = path.samples[i];
+        points[2 * i] = p.pixel.x;
+        points[2 * i + 1] = p.pixel.y;
+        fade[i] = p.alpha;
+        depth[i] = p.depth;
+        s[i] = p.s;
+        for (int c = 0; c < 3; ++c) position[3 * i + size_t(c)] = p.position[c];
+    }
+    // A run has one visibility (visibility splits paths into runs); per point for the
+    // caller's convenience when runs are joined.
+    pyb::array_t<bool> visible(N);
+    std::fill(visible.mutable_data(), visible.mutable_data() + n, path.visible);
+    return {.points = to_array(std::move(points), {N, 2}),
+            .visible = visible,
+            .fade = to_array(std::move(fade), {N}),
+            .depth = to_array(std::move(depth), {N}),
+            .s = to_array(std::move(s), {N}),
+            .position = to_array(std::move(position), {N, 3}),
+            .closed = path.closed,
+            .type = line_type_name(path.type),
+            .line_set = line_set};
+}
+
+pyb::dict timings_of(const FrameTimings& t) {
+    pyb::dict d;
+    d["total_ms"] = t.total_ms;
+    d["extract_ms"] = t.extract_ms;
+    d["chain_ms"] = t.chain_ms;
+    d["visibility_ms"] = t.visibility_ms;
+    d["coherence_ms"] = t.coherence_ms;
+    for (const PassTime& p : t.gpu)
+        if (p.ms >= 0.0) d[pyb::str("gpu " + p.name + " ms")] = p.ms;
+    return d;
+}
+
+pyb::array_t<float> depth_array(std::vector<float>&& depth, int width, int height) {
+    return to_array(std::move(depth), {pyb::ssize_t(height), pyb::ssize_t(width)});
+}
+
+}  // namespace
+
+PathTime Session::time_of(std::optional<int> frame, std::optional<float> seconds, uint64_t& seed) const {
+    if (frame && seconds) throw pyb::value_error("frame and t: give one");
+    const FrameRange range = this->range();
+    if (seconds) {
+        if (!std::isfinite(*seconds)) throw pyb::value_error("t: expected a finite time in seconds");
+        // The frame number it falls on sets the ribbon seed; progress runs over the range.
+        const float f = *seconds * fps();
+        seed = uint64_t(std::max(0L, std::lround(f))) + 1;
+        const float span = float(range.last - range.first);
+        return {.progress = span > 0.0f ? (f - float(range.first)) / span : 0.0f, .seconds = *seconds};
+    }
+    const int f = frame.value_or(range.first);
+    seed = uint64_t(std::max(f, 0)) + 1;
+    return frame_time(f, range, fps());
+}
+
+Frame Session::draw(const PathTime& when, uint64_t seed, const FrameOutputs& outputs) {
+    Frame frame;
+    {
+        const pyb::gil_scoped_release unlocked;
+        const std::lock_guard lock(gpu_mutex());
+        frame = session_->frame({.when = when, .camera = camera_, .outputs = outputs, .seed = seed});
+    }
+    last_when_ = when;
+    check_validation(*ctx_);
+    return frame;
+}
+
+pyb::dict Session::lines_of(const Frame& frame, bool hidden) const {
+    pyb::dict groups;
+    for (const SvgGroup& group : session_->svg_groups(frame)) {
+        pyb::list paths;
+        if (group.paths)
+            for (const ScreenPath& path : *group.paths)
+                if ((path.visible || hidden) && path.samples.size() >= 2) paths.append(polyline(path, group.id));
+        groups[pyb::str(group.id)] = paths;
+    }
+    return groups;
+}
+
+pyb::object Session::render(std::optional<int> frame, std::optional<float> seconds, bool depth) {
+    uint64_t seed = 1;
+    const PathTime when = time_of(frame, seconds, seed);
+    Frame f = draw(when, seed, {.color = true, .depth = depth});
+    const int w = f.image.color.width, h = f.image.color.height;
+    pyb::object image = image_to_array(std::move(f.image.color));
+    if (!depth) return image;
+    return pyb::make_tuple(image, depth_array(std::move(f.image.depth), w, h));
+}
+
+pyb::dict Session::lines(std::optional<int> frame, std::optional<float> seconds, bool hidden) {
+    if (!session_->has_model()) return {};
+    uint64_t seed = 1;
+    const PathTime when = time_of(frame, seconds, seed);
+    return lines_of(draw(when, seed, {.color = false}), hidden);
+}
+
+FrameResult Session::result(int index, const PathTime& when, uint64_t seed, bool image, bool depth, bool lines,
+                            bool hidden) {
+    Frame f = draw(when, seed, {.color = image, .depth = depth});
+    FrameResult r{.index = index, .seconds = when.seconds, .timings = timings_of(f.timings)};
+    if (lines) r.lines = session_->has_model() ? lines_of(f, hidden) : pyb::dict();
+    const auto [w, h] = size();
+    if (depth) r.depth = depth_array(std::move(f.image.depth), w, h);
+    if (image) r.image = image_to_array(std::move(f.image.color));
+    return r;
+}
+
+FrameResult Session::frame_result(int index, const FrameRange& range, bool image, bool depth, bool lines, bool hidden) {
+    return result(index, frame_time(index, range, fps()), uint64_t(std::max(index, 0)) + 1, image, depth, lines, hidden);
+}
+
+FrameResult Session::frame_at(std::optional<int> frame, std::optional<float> seconds, bool image, bool depth, bool lines,
+                              bool hidden) {
+    uint64_t seed = 1;
+    const PathTime when = time_of(frame, seconds, seed);
+    return result(frame.value_or(int(seed) - 1), when, seed, image, depth, lines, hidden);
+}
+
+}  // namespace lw::py
