@@ -37,16 +37,24 @@ struct SessionArgs {
     std::string name = "mesh";  // an array mesh's name in errors and line sets' "models"
 };
 
+// The per-point data of one frame's polylines, packed: each Polyline's arrays are views into
+// it (made when read), so that lines() costs one pass over the samples, not six arrays per
+// path. Kept alive by every Polyline and every array view of it.
+struct LineStore {
+    std::vector<float> points;    // 2 per sample: pixels, x right, y down (the SVG's coordinates)
+    std::vector<uint8_t> visible; // 1 per sample (a NumPy bool)
+    std::vector<float> fade;      // the line's fade alpha (suggestive contours fade in)
+    std::vector<float> depth;     // eye depth
+    std::vector<float> s;         // screen arc length from the run's start, pixels
+    std::vector<float> position;  // 3 per sample: the world-space surface point
+};
+
 // One visible (or hidden) run of a brush path, as the SVG's <polyline> holds it, with what
 // the SVG does not: per point its visibility, fade, eye depth, arc length and surface point.
 struct Polyline {
-    pyb::array_t<float> points;    // N×2 pixels, x right, y down (the SVG's coordinates)
-    pyb::array_t<bool> visible;    // N
-    pyb::array_t<float> fade;      // N: the line's fade alpha (suggestive contours fade in)
-    pyb::array_t<float> depth;     // N: eye depth
-    pyb::array_t<float> s;         // N: screen arc length from the start, pixels
-    pyb::array_t<float> position;  // N×3 world-space surface point
-    bool closed = false;           // a whole loop: the SVG repeats the first point
+    std::shared_ptr<const LineStore> store;
+    size_t first = 0, count = 0;  // its samples in the store
+    bool closed = false;          // a whole loop: the SVG repeats the first point
     std::string type, line_set;
 };
 

@@ -14,6 +14,19 @@ std::optional<glm::vec3> optional_vec3(const pyb::object& value, const char* nam
     return to_vec3(value, name);
 }
 
+// A view of one polyline's samples in its frame's store (`columns` values per sample); the
+// array keeps the store alive.
+template <typename T, typename V>
+pyb::array_t<T> store_view(const Polyline& p, const std::vector<V> LineStore::*member, size_t columns) {
+    static_assert(sizeof(T) == sizeof(V));
+    const std::vector<V>& values = (*p.store).*member;
+    auto* keep = new std::shared_ptr<const LineStore>(p.store);
+    pyb::capsule base(keep, [](void* k) { delete static_cast<std::shared_ptr<const LineStore>*>(k); });
+    std::vector<pyb::ssize_t> shape{pyb::ssize_t(p.count)};
+    if (columns > 1) shape.push_back(pyb::ssize_t(columns));
+    return pyb::array_t<T>(shape, reinterpret_cast<const T*>(values.data() + p.first * columns), base);
+}
+
 pyb::array_t<float> vec3_array(const glm::vec3& v) { return to_array(std::vector<float>{v.x, v.y, v.z}, {3}); }
 
 pyb::array_t<float> matrix_array(const glm::mat4& m) {
@@ -78,18 +91,24 @@ void bind_session(pyb::module_& m) {
     pyb::class_<Polyline>(m, "Polyline",
                           "One run of a brush path as the SVG's <polyline> holds it (closed loops without the "
                           "repeated first point), with per-point data the SVG lacks.")
-        .def_readonly("points", &Polyline::points, "N×2 float32 pixels, x right, y down: the SVG's coordinates")
-        .def_readonly("visible", &Polyline::visible, "N bool: visible (a run has one visibility)")
-        .def_readonly("fade", &Polyline::fade, "N float32: the line's fade alpha (suggestive contours fade in)")
-        .def_readonly("depth", &Polyline::depth, "N float32: eye depth along the view axis")
-        .def_readonly("s", &Polyline::s, "N float32: screen arc length from the run's start, pixels")
-        .def_readonly("position", &Polyline::position, "N×3 float32: the world-space surface point")
+        .def_property_readonly("points", [](const Polyline& p) { return store_view<float>(p, &LineStore::points, 2); },
+                               "N×2 float32 pixels, x right, y down: the SVG's coordinates")
+        .def_property_readonly("visible", [](const Polyline& p) { return store_view<bool>(p, &LineStore::visible, 1); },
+                               "N bool: visible (a run has one visibility)")
+        .def_property_readonly("fade", [](const Polyline& p) { return store_view<float>(p, &LineStore::fade, 1); },
+                               "N float32: the line's fade alpha (suggestive contours fade in)")
+        .def_property_readonly("depth", [](const Polyline& p) { return store_view<float>(p, &LineStore::depth, 1); },
+                               "N float32: eye depth along the view axis")
+        .def_property_readonly("s", [](const Polyline& p) { return store_view<float>(p, &LineStore::s, 1); },
+                               "N float32: screen arc length from the run's start, pixels")
+        .def_property_readonly("position", [](const Polyline& p) { return store_view<float>(p, &LineStore::position, 3); },
+                               "N×3 float32: the world-space surface point")
         .def_readonly("closed", &Polyline::closed, "a whole loop, entirely visible")
         .def_readonly("type", &Polyline::type, "line type: silhouette, suggestive, crease or border")
         .def_readonly("line_set", &Polyline::line_set, "the line set (SVG group) it belongs to")
-        .def("__len__", [](const Polyline& p) { return p.points.shape(0); })
+        .def("__len__", [](const Polyline& p) { return p.count; })
         .def("__repr__", [](const Polyline& p) {
-            return "<linework.Polyline " + p.type + " in " + p.line_set + ", " + std::to_string(p.points.shape(0)) +
+            return "<linework.Polyline " + p.type + " in " + p.line_set + ", " + std::to_string(p.count) +
                    " points" + (p.closed ? ", closed" : "") + ">";
         });
 

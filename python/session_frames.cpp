@@ -9,29 +9,23 @@ namespace lw::py {
 
 namespace {
 
-Polyline polyline(const ScreenPath& path, const std::string& line_set) {
-    const size_t n = path.samples.size();
-    const auto N = pyb::ssize_t(n);
-    std::vector<float> points(n * 2), fade(n), depth(n), s(n), position(n * 3);
-    for (size_t i = 0; i < n; ++i) {
-        const ScreenSample& p = path.samples[i];
-        points[2 * i] = p.pixel.x;
-        points[2 * i + 1] = p.pixel.y;
-        fade[i] = p.alpha;
-        depth[i] = p.depth;
-        s[i] = p.s;
-        for (int c = 0; c < 3; ++c) position[3 * i + size_t(c)] = p.position[c];
+// Appends the run's samples to the store; the Polyline names their range.
+Polyline polyline(const ScreenPath& path, const std::string& line_set, const std::shared_ptr<LineStore>& store) {
+    LineStore& d = *store;
+    const size_t first = d.fade.size();
+    for (const ScreenSample& p : path.samples) {
+        d.points.insert(d.points.end(), {p.pixel.x, p.pixel.y});
+        // A run has one visibility (visibility splits paths into runs); per point for the
+        // caller's convenience when runs are joined.
+        d.visible.push_back(path.visible ? 1 : 0);
+        d.fade.push_back(p.alpha);
+        d.depth.push_back(p.depth);
+        d.s.push_back(p.s);
+        d.position.insert(d.position.end(), {p.position.x, p.position.y, p.position.z});
     }
-    // A run has one visibility (visibility splits paths into runs); per point for the
-    // caller's convenience when runs are joined.
-    pyb::array_t<bool> visible(N);
-    std::fill(visible.mutable_data(), visible.mutable_data() + n, path.visible);
-    return {.points = to_array(std::move(points), {N, 2}),
-            .visible = visible,
-            .fade = to_array(std::move(fade), {N}),
-            .depth = to_array(std::move(depth), {N}),
-            .s = to_array(std::move(s), {N}),
-            .position = to_array(std::move(position), {N, 3}),
+    return {.store = store,
+            .first = first,
+            .count = path.samples.size(),
             .closed = path.closed,
             .type = line_type_name(path.type),
             .line_set = line_set};
@@ -84,12 +78,23 @@ Frame Session::draw(const PathTime& when, uint64_t seed, const FrameOutputs& out
 }
 
 pyb::dict Session::lines_of(const Frame& frame, bool hidden) const {
+    const std::vector<SvgGroup> svg = session_->svg_groups(frame);
+    auto store = std::make_shared<LineStore>();
+    size_t samples = 0;
+    for (const SvgGroup& group : svg)
+        for (const ScreenPath& path : group.paths ? *group.paths : std::vector<ScreenPath>{}) samples += path.samples.size();
+    LineStore& d = *store;
+    for (std::vector<float>* v : {&d.fade, &d.depth, &d.s}) v->reserve(samples);
+    d.points.reserve(2 * samples);
+    d.position.reserve(3 * samples);
+    d.visible.reserve(samples);
     pyb::dict groups;
-    for (const SvgGroup& group : session_->svg_groups(frame)) {
+    for (const SvgGroup& group : svg) {
         pyb::list paths;
         if (group.paths)
             for (const ScreenPath& path : *group.paths)
-                if ((path.visible || hidden) && path.samples.size() >= 2) paths.append(polyline(path, group.id));
+                if ((path.visible || hidden) && path.samples.size() >= 2)
+                    paths.append(pyb::cast(polyline(path, group.id, store)));
         groups[pyb::str(group.id)] = paths;
     }
     return groups;
