@@ -165,18 +165,24 @@ speak raises RuntimeError. Bad input raises ValueError with the command line's m
              pyb::arg("up") = pyb::none(), pyb::arg("fov") = pyb::none(), pyb::arg("vertices") = pyb::none(),
              pyb::arg("faces") = pyb::none(), pyb::arg("normals") = pyb::none(), pyb::arg("name") = "mesh",
              pyb::arg("compute") = "auto", pyb::arg("coherent") = false, pyb::arg("validation") = pyb::none())
-        .def("render", &Session::render, pyb::kw_only(), pyb::arg("frame") = pyb::none(), pyb::arg("t") = pyb::none(),
-             pyb::arg("depth") = false,
+        .def("render", [](Session& s, std::optional<float> t, std::optional<int> frame, bool depth) {
+                 return s.render(frame, t, depth);
+             },
+             pyb::arg("t") = pyb::none(), pyb::kw_only(), pyb::arg("frame") = pyb::none(), pyb::arg("depth") = false,
              "The frame as an H×W×4 uint8 array (the PNG `linework render` writes); with depth=True a tuple "
-             "(image, H×W float32 window depth, 1 = background). frame: a frame number (default: the first of "
-             "the scene's range), t: seconds; the camera path's progress runs over the scene's range.")
-        .def("lines", &Session::lines, pyb::kw_only(), pyb::arg("frame") = pyb::none(), pyb::arg("t") = pyb::none(),
-             pyb::arg("hidden") = false,
+             "(image, H×W float32 window depth, 1 = background). t: seconds on the animation clock, or frame: a "
+             "frame number (default: the first of the scene's range); the camera path's progress runs over the "
+             "scene's range.")
+        .def("lines", [](Session& s, std::optional<float> t, std::optional<int> frame, bool hidden) {
+                 return s.lines(frame, t, hidden);
+             },
+             pyb::arg("t") = pyb::none(), pyb::kw_only(), pyb::arg("frame") = pyb::none(), pyb::arg("hidden") = false,
              "The frame's lines: a dict from SVG group id (the line set; with per-type keys the type names "
              "silhouette, suggestive, crease, border) to a list of Polyline — the SVG's polylines. hidden=True "
              "adds the hidden runs that sets selecting hidden lines hold.")
-        .def("frame", &Session::frame_at, pyb::kw_only(), pyb::arg("frame") = pyb::none(), pyb::arg("t") = pyb::none(),
-             pyb::arg("image") = true, pyb::arg("depth") = false, pyb::arg("lines") = true, pyb::arg("hidden") = false,
+        .def("frame", [](Session& s, std::optional<float> t, std::optional<int> frame, bool image, bool depth,
+                            bool lines, bool hidden) { return s.frame_at(frame, t, image, depth, lines, hidden); },
+             pyb::arg("t") = pyb::none(), pyb::kw_only(), pyb::arg("frame") = pyb::none(), pyb::arg("image") = true, pyb::arg("depth") = false, pyb::arg("lines") = true, pyb::arg("hidden") = false,
              "One frame with its image and its lines (and depth) from the same drawing, as a FrameResult. Every "
              "call of render(), lines() and frame() draws a frame: where a style is parameterized (a SLAM, "
              "dashes, coherent=True), consecutive calls are consecutive frames of a sequence.")
