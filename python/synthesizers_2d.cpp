@@ -227,16 +227,7 @@ pyb::object hatch(const pyb::object& training, int count, int window, int block,
     if (!along.is_none()) {
         std::string along_where;
         const std::vector<Stroke> along_strokes = strokes_argument(along, "along", &along_where);
-        for (size_t i = 0; i < along_strokes.size(); ++i) {
-            const Curve2D c{along_strokes[i].points, along_strokes[i].closed};
-            paths.push_back(naming_input(along_where, [&] {
-                try {
-                    return ArclengthCurve(c);
-                } catch (const Error& e) {
-                    throw Error("path " + std::to_string(i + 1) + ": " + e.what());
-                }
-            }));
-        }
+        paths = naming_input(along_where, [&] { return hatch_paths(along_strokes); });
     }
 
     HatchDesc desc;
@@ -247,45 +238,19 @@ pyb::object hatch(const pyb::object& training, int count, int window, int block,
     desc.plausible = plausible;
     // As the command line: one generator for every path; blocks numbered across paths.
     Rng rng(seed);
-    int block_offset = 0;
-    size_t stroke_offset = 0, restarts = 0;
+    size_t restarts = 0;
     std::vector<HatchBlock> kept;
     auto report = [&](const HatchBlock& b, bool is_kept) {
-        if (!is_kept) {
-            ++restarts;
-            return;
-        }
-        HatchBlock numbered = b;
-        numbered.index += block_offset;
-        numbered.first += stroke_offset;
-        numbered.last += stroke_offset;
-        kept.push_back(numbered);
+        if (is_kept) kept.push_back(b);
+        else ++restarts;
     };
-    std::vector<Stroke> out;
-    double used_threshold = 0.0;
+    Hatching h;
     {
         const pyb::gil_scoped_release released;
-        if (paths.empty()) {
-            const HatchSequence seq = generate_hatching(t, desc, rng, report);
-            used_threshold = seq.threshold;
-            out = place_on_line(t, seq.ids);
-        } else {
-            // Fig. 8: one sequence per path, long enough to fill it (at most `count` strokes).
-            std::vector<float> steps(t.step);
-            std::sort(steps.begin(), steps.end());
-            const float median_step = std::max(steps[steps.size() / 2], 1e-3f);
-            for (const ArclengthCurve& p : paths) {
-                HatchDesc d = desc;
-                d.count = std::min(count, int(std::ceil(p.length() / median_step)) + 2);
-                const HatchSequence seq = generate_hatching(t, d, rng, report);
-                used_threshold = seq.threshold;
-                std::vector<Stroke> placed = place_along(t, seq.ids, p);
-                block_offset += int(seq.blocks.size());
-                stroke_offset += seq.ids.size();
-                out.insert(out.end(), placed.begin(), placed.end());
-            }
-        }
+        h = hatch(t, desc, paths, rng, report);
     }
+    const std::vector<Stroke>& out = h.strokes;
+    const double used_threshold = h.threshold;
     pyb::list strokes = strokes_value(out);
     if (!return_info) return strokes;
     pyb::list blocks;

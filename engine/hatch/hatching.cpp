@@ -145,4 +145,51 @@ std::vector<Stroke> place_along(const HatchTraining& t, const std::vector<int>& 
     return out;
 }
 
+Hatching hatch(const HatchTraining& t, const HatchDesc& desc, const std::vector<ArclengthCurve>& paths, Rng& rng,
+                const std::function<void(const HatchBlock&, bool kept)>& on_block) {
+    Hatching out;
+    if (paths.empty()) {
+        const HatchSequence seq = generate_hatching(t, desc, rng, on_block);
+        out.threshold = seq.threshold;
+        out.strokes = place_on_line(t, seq.ids);
+        return out;
+    }
+    std::vector<float> steps(t.step);
+    std::sort(steps.begin(), steps.end());
+    const float median_step = std::max(steps[steps.size() / 2], 1e-3f);
+    int block_offset = 0;
+    size_t stroke_offset = 0;
+    const auto numbered = [&](const HatchBlock& b, bool kept) {
+        if (!on_block) return;
+        HatchBlock n = b;
+        n.index += block_offset;
+        n.first += stroke_offset;
+        n.last += stroke_offset;
+        on_block(n, kept);
+    };
+    for (const ArclengthCurve& path : paths) {
+        HatchDesc d = desc;
+        d.count = std::min(desc.count, int(std::ceil(path.length() / median_step)) + 2);
+        const HatchSequence seq = generate_hatching(t, d, rng, numbered);
+        out.threshold = seq.threshold;
+        const std::vector<Stroke> placed = place_along(t, seq.ids, path);
+        block_offset += int(seq.blocks.size());
+        stroke_offset += seq.ids.size();
+        out.strokes.insert(out.strokes.end(), placed.begin(), placed.end());
+    }
+    return out;
+}
+
+std::vector<ArclengthCurve> hatch_paths(const std::vector<Stroke>& strokes) {
+    std::vector<ArclengthCurve> paths;
+    for (size_t i = 0; i < strokes.size(); ++i) {
+        try {
+            paths.emplace_back(Curve2D{strokes[i].points, strokes[i].closed});
+        } catch (const Error& e) {
+            throw Error("path " + std::to_string(i + 1) + ": " + e.what());
+        }
+    }
+    return paths;
+}
+
 }  // namespace lw

@@ -85,4 +85,20 @@ struct HatchSequence {
 [[nodiscard]] std::vector<Stroke> place_along(const HatchTraining& training, const std::vector<int>& ids,
                                               const ArclengthCurve& path, size_t* placed = nullptr);
 
+// A whole hatching, as `linework hatch` and the Python module make it: on the training's line
+// without paths, else (Fig. 8) one sequence per path, each long enough to fill it (the path's
+// length over the training's median step, at most desc.count strokes), all from one
+// generator. `on_block` hears every block as generate_hatching reports it, numbered across
+// the paths (block indices and stroke numbers go on from one path to the next).
+struct Hatching {
+    std::vector<Stroke> strokes;
+    double threshold = 0.0;  // the KL2 threshold used (the last sequence's; 0: none)
+};
+[[nodiscard]] Hatching hatch(const HatchTraining& training, const HatchDesc& desc, const std::vector<ArclengthCurve>& paths,
+                             Rng& rng, const std::function<void(const HatchBlock&, bool kept)>& on_block = {});
+
+// The paths to hatch along, from strokes (a stroke file's): "path N: problem" for one that
+// cannot be parameterized by arc length.
+[[nodiscard]] std::vector<ArclengthCurve> hatch_paths(const std::vector<Stroke>& strokes);
+
 }  // namespace lw

@@ -37,16 +37,7 @@ int run_hatch(const HatchOptions& o) {
     std::vector<ArclengthCurve> paths;
     if (!o.along.empty()) {
         const StrokeSet along = load_strokes(o.along);
-        for (size_t i = 0; i < along.strokes.size(); ++i) {
-            Curve2D c{along.strokes[i].points, along.strokes[i].closed};
-            paths.push_back(naming(o.along, [&] {
-                try {
-                    return ArclengthCurve(c);
-                } catch (const Error& e) {
-                    throw Error("path " + std::to_string(i + 1) + ": " + e.what());
-                }
-            }));
-        }
+        paths = naming(o.along, [&] { return hatch_paths(along.strokes); });
     }
 
     std::fprintf(info, "training: %s, %zu strokes, %d-dimensional vectors (%d varying)\n", o.training.c_str(),
@@ -59,44 +50,24 @@ int run_hatch(const HatchOptions& o) {
     desc.threshold = o.threshold;
     desc.plausible = o.plausible;
     Rng rng(o.seed);
-    int block_offset = 0;
-    size_t stroke_offset = 0, restarts = 0, over = 0;
+    size_t restarts = 0, over = 0;
     auto report = [&](const HatchBlock& b, bool kept) {
         if (!kept) {
             ++restarts;
             std::fprintf(stderr, "hatch: block %d (window %d) KL2 %.3f over the threshold: generated again with window %d\n",
-                         b.index + block_offset, b.window, b.kl2, b.window + 2);
+                         b.index, b.window, b.kl2, b.window + 2);
             return;
         }
         if (b.over_threshold) ++over;
         if (o.kl2)
-            std::printf("block %d strokes %zu-%zu KL2 %.4f\n", b.index + block_offset, b.first + stroke_offset,
-                        b.last + stroke_offset, b.kl2);
+            std::printf("block %d strokes %zu-%zu KL2 %.4f\n", b.index, b.first, b.last, b.kl2);
     };
 
     StrokeSet out;
     Timer generation;
-    double threshold = 0.0;
-    if (paths.empty()) {
-        const HatchSequence seq = generate_hatching(t, desc, rng, report);
-        threshold = seq.threshold;
-        out.strokes = place_on_line(t, seq.ids);
-    } else {
-        // Fig. 8: one sequence per path, long enough to fill it (at most --count strokes).
-        std::vector<float> steps(t.step);
-        std::sort(steps.begin(), steps.end());
-        const float median_step = std::max(steps[steps.size() / 2], 1e-3f);
-        for (const ArclengthCurve& path : paths) {
-            HatchDesc d = desc;
-            d.count = std::min(o.count, int(std::ceil(path.length() / median_step)) + 2);
-            const HatchSequence seq = generate_hatching(t, d, rng, report);
-            threshold = seq.threshold;
-            std::vector<Stroke> placed = place_along(t, seq.ids, path);
-            block_offset += int(seq.blocks.size());
-            stroke_offset += seq.ids.size();
-            out.strokes.insert(out.strokes.end(), placed.begin(), placed.end());
-        }
-    }
+    Hatching h = hatch(t, desc, paths, rng, report);  // Fig. 8 along paths: one sequence each
+    out.strokes = std::move(h.strokes);
+    const double threshold = h.threshold;
     const double generation_ms = generation.elapsed_ms();
     std::fprintf(info, "generated %zu strokes%s with window %d in blocks of %d (%.1f ms); %zu block(s) generated again, "
                  "%zu kept above the KL2 threshold %.3g\n",
