@@ -155,13 +155,7 @@ void write_slam_file(const std::filesystem::path& path, const pyb::array& ink, c
 
 // Over white unless the background should stay transparent: what `linework ribbon` writes.
 ImageRGBA8 composite(ImageRGBA8&& image, bool transparent) {
-    if (transparent) return std::move(image);
-    for (size_t i = 0; i < image.pixels.size(); i += 4) {
-        const int a = image.pixels[i + 3];
-        for (size_t c = 0; c < 3; ++c)
-            image.pixels[i + c] = uint8_t((image.pixels[i + c] * a + 255 * (255 - a) + 127) / 255);
-        image.pixels[i + 3] = 255;
-    }
+    if (!transparent) composite_over_white(image);
     return std::move(image);
 }
 

@@ -10,6 +10,15 @@
 
 namespace lw {
 
+void composite_over_white(ImageRGBA8& image) {
+    for (size_t i = 0; i < image.pixels.size(); i += 4) {
+        const int a = image.pixels[i + 3];
+        for (size_t c = 0; c < 3; ++c)
+            image.pixels[i + c] = uint8_t((image.pixels[i + c] * a + 255 * (255 - a) + 127) / 255);
+        image.pixels[i + 3] = 255;
+    }
+}
+
 ImageDiff compare_images(const ImageRGBA8& a, const ImageRGBA8& b, int tolerance) {
     if (a.width != b.width || a.height != b.height)
         throw Error("images differ in size: " + std::to_string(a.width) + "x" + std::to_string(a.height) + " vs " +

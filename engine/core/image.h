@@ -28,6 +28,10 @@ struct ImageDiff {
     ImageRGBA8 diff;              // |A - B| × 8, clamped; alpha 255
 };
 
+// Composites a non-premultiplied RGBA image over white, in place (alpha becomes 255): what
+// `linework ribbon` writes unless asked for a transparent background.
+void composite_over_white(ImageRGBA8& image);
+
 // Compares RGBA images of equal size (throws lw::Error otherwise). `tolerance` is the
 // per-channel difference a pixel may have before it counts as differing.
 [[nodiscard]] ImageDiff compare_images(const ImageRGBA8& a, const ImageRGBA8& b, int tolerance = 0);

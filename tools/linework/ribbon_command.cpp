@@ -51,13 +51,8 @@ void write_dump(const std::string& path, const RibbonSynthesis& s) {
 
 // Over white unless the background should stay transparent.
 ImageRGBA8 composite(const ImageRGBA8& image, bool transparent) {
-    if (transparent) return image;
     ImageRGBA8 out = image;
-    for (size_t i = 0; i < out.pixels.size(); i += 4) {
-        const int a = out.pixels[i + 3];
-        for (size_t c = 0; c < 3; ++c) out.pixels[i + c] = uint8_t((out.pixels[i + c] * a + 255 * (255 - a) + 127) / 255);
-        out.pixels[i + 3] = 255;
-    }
+    if (!transparent) composite_over_white(out);
     return out;
 }
 
