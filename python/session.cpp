@@ -131,6 +131,11 @@ void Session::configure(const pyb::object& patch) {
     SceneDesc desc = parse(merged);  // a bad key throws here, with the session untouched
     bool live = true;
     for (const auto& [key, value] : changes.items()) live = live && live_key(key);
+    // A camera path (an orbit, keyframes) is the session's own: changing to or from one reopens it.
+    const bool camera_change = changes.contains("camera") || changes.contains("fov");
+    if (camera_change && (desc.camera_path.kind != CameraPath::Kind::Fixed ||
+                          session_->desc().camera_path.kind != CameraPath::Kind::Fixed))
+        live = false;
     if (!live) {
         open(std::move(desc));
         camera_.reset();
@@ -143,9 +148,9 @@ void Session::configure(const pyb::object& patch) {
         return 0;
     });
     session_->surface() = desc.style;
-    if (desc.width != session_->desc().width || desc.height != session_->desc().height)
+    if (std::pair(desc.width, desc.height) != size())
         session_->resize(uint32_t(desc.width), uint32_t(desc.height));
-    if (changes.contains("camera") || changes.contains("fov")) {
+    if (camera_change) {
         const float aspect = float(desc.width) / float(desc.height);
         camera_ = desc.camera ? *desc.camera
                               : (session_->has_model() ? frame_bounds(session_->scene().bounds, aspect, desc.fov_deg)

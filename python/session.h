@@ -90,7 +90,7 @@ public:
 
     pyb::object scene() const;                  // the scene as described and configured
     void configure(const pyb::object& patch);   // merged into it, checked, applied
-    std::pair<int, int> size() const { return {session_->desc().width, session_->desc().height}; }
+    std::pair<int, int> size() const { return {int(session_->target().width), int(session_->target().height)}; }
 
     ViewCamera camera() const;
     void set_camera(const std::optional<glm::vec3>& eye, const std::optional<glm::vec3>& target,

@@ -125,6 +125,14 @@ def test_configure_is_a_scene_edit(tmp_path):
         s.configure({"lines": {"silhouette": {"width": "wide"}}})
     assert np.array_equal(s.render(), image)
     assert s.scene["lines"]["silhouette"]["width"] == 4
+    # Size and camera change live; an orbit reopens the session (a camera path is its own).
+    s.configure({"size": [120, 90], "camera": {"eye": [2, 0.5, 2], "target": [0, 0, 0]}})
+    assert s.size == (120, 90) and s.render().shape == (90, 120, 4)
+    assert np.allclose(s.camera["eye"], [2, 0.5, 2])
+    s.configure({"camera": {"orbit": 90}, "animation": {"frames": [0, 3]}})  # about that camera
+    assert s.frame_range == (0, 3)
+    s.render(frame=3)  # the orbit's end: a quarter turn about the up axis through the target
+    assert np.allclose(s.camera["eye"], [2, 0.5, -2], atol=1e-4) or np.allclose(s.camera["eye"], [-2, 0.5, 2], atol=1e-4)
 
 
 def test_frames_snapshot_and_restore(tmp_path):
