@@ -3,6 +3,7 @@
 #include <map>
 #include <mutex>
 #include <tuple>
+#include <type_traits>
 
 namespace lw::py {
 
@@ -77,20 +78,52 @@ std::vector<glm::vec2> array_to_vec2(const pyb::array& array, const std::string&
     return array_to_points<2>(array, name);
 }
 
-std::vector<uint32_t> array_to_indices(const pyb::array& array, const std::string& name) {
-    if (array.dtype().kind() != 'i' && array.dtype().kind() != 'u')
-        throw pyb::value_error(name + ": expected integer vertex indices, got dtype " + std::string(pyb::str(array.dtype())));
-    auto a = checked<int64_t>(array, name, 2);
+namespace {
+
+// Indices of a signed or unsigned integer type T, each in [0, 2³²).
+template <typename T>
+std::vector<uint32_t> indices_of(const pyb::array& array, const std::string& name) {
+    auto a = checked<T>(array, name, 2);
     if (a.shape(1) != 3) throw pyb::value_error(name + ": expected an M×3 array of triangles, got " + shape_text(a));
     std::vector<uint32_t> indices(size_t(a.size()));
     for (size_t i = 0; i < indices.size(); ++i) {
-        const int64_t v = a.data()[i];
-        if (v < 0 || v > int64_t(UINT32_MAX))
+        const T v = a.data()[i];
+        bool negative = false;
+        if constexpr (std::is_signed_v<T>) negative = v < 0;
+        if (negative || uint64_t(v) > uint64_t(UINT32_MAX))
             throw pyb::value_error(name + ": index " + std::to_string(v) + " of triangle " + std::to_string(i / 3) +
                                    " is out of range");
         indices[i] = uint32_t(v);
     }
     return indices;
+}
+
+}  // namespace
+
+std::vector<uint32_t> array_to_indices(const pyb::array& array, const std::string& name) {
+    const char kind = array.dtype().kind();
+    if (kind == 'u') return indices_of<uint64_t>(array, name);
+    if (kind == 'i') return indices_of<int64_t>(array, name);
+    throw pyb::value_error(name + ": expected integer vertex indices, got dtype " + std::string(pyb::str(array.dtype())));
+}
+
+std::string printable(const std::string& message) {
+    std::string out;
+    out.reserve(message.size());
+    for (size_t i = 0; i < message.size();) {
+        const auto c = static_cast<unsigned char>(message[i]);
+        const size_t n = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xE ? 3 : (c >> 3) == 0x1E ? 4 : 0;
+        bool valid = n > 0 && i + n <= message.size();
+        for (size_t k = 1; valid && k < n; ++k) valid = (static_cast<unsigned char>(message[i + k]) >> 6) == 0x2;
+        if (valid && (n > 1 || c >= 0x20 || c == '\n' || c == '\t')) {
+            out.append(message, i, n);
+            i += n;
+        } else {
+            out += '?';
+            ++i;
+        }
+    }
+    return out;
 }
 
 glm::vec3 to_vec3(const pyb::object& value, const std::string& name) {

@@ -59,6 +59,10 @@ std::mutex& gpu_mutex();
 // message (the command line exits 1), and the messages are cleared.
 void check_validation(Context& ctx);
 
+// The message as valid UTF-8 (Python's text): bytes that are not (an error quoting a binary
+// file's bytes) become '?', where pybind11 would otherwise raise with an empty message.
+std::string printable(const std::string& message);
+
 // Runs f; an engine ParameterError about one of `names` (engine name → Python argument,
 // e.g. {"ribbon piece", "piece"}) becomes a ValueError naming the argument, others keep
 // the engine's name. Any other engine error is re-thrown as it is (RuntimeError).
@@ -68,8 +72,8 @@ auto arguments_named(std::initializer_list<std::pair<const char*, const char*>> 
         return f();
     } catch (const ParameterError& e) {
         for (const auto& [engine, argument] : names)
-            if (e.name() == engine) throw pyb::value_error(argument + e.rest());
-        throw pyb::value_error(e.what());
+            if (e.name() == engine) throw pyb::value_error(printable(argument + e.rest()));
+        throw pyb::value_error(printable(e.what()));
     }
 }
 
@@ -80,7 +84,7 @@ auto reading_input(F&& f) {
     try {
         return f();
     } catch (const Error& e) {
-        throw pyb::value_error(e.what());
+        throw pyb::value_error(printable(e.what()));
     }
 }
 

@@ -26,9 +26,9 @@ PYBIND11_MODULE(linework, m) {
         try {
             if (p) std::rethrow_exception(p);
         } catch (const lw::ParameterError& e) {
-            PyErr_SetString(PyExc_ValueError, e.what());
+            PyErr_SetString(PyExc_ValueError, lw::py::printable(e.what()).c_str());
         } catch (const lw::Error& e) {
-            PyErr_SetString(PyExc_RuntimeError, e.what());
+            PyErr_SetString(PyExc_RuntimeError, lw::py::printable(e.what()).c_str());
         }
     });
     // Images as the command line reads and writes them (OpenImageIO), so that a script needs

@@ -24,9 +24,9 @@ json to_json(const pyb::object& value, const std::string& name) {
     });
     std::string text;
     try {
-        text = dumps(value, pyb::arg("default") = listed).cast<std::string>();
+        text = dumps(value, pyb::arg("default") = listed, pyb::arg("allow_nan") = false).cast<std::string>();
     } catch (pyb::error_already_set& e) {
-        throw pyb::value_error(name + ": " + std::string(e.what()));
+        throw pyb::value_error(name + ": " + std::string(pyb::str(e.value())));
     }
     return json::parse(text);
 }
@@ -66,7 +66,13 @@ Session::Session(const pyb::object& scene, const SessionArgs& a)
         base_ = to_json(scene, "scene");
     } else {
         if (arrays) throw pyb::value_error("scene: a file and a mesh as arrays: give one (or a dict beside the arrays)");
-        const std::filesystem::path path = scene.cast<std::filesystem::path>();
+        std::filesystem::path path;
+        try {
+            path = scene.cast<std::filesystem::path>();
+        } catch (const pyb::cast_error&) {
+            throw pyb::type_error("scene: expected a path (str or os.PathLike), a dict or None, got " +
+                                  std::string(pyb::str(pyb::type::of(scene).attr("__name__"))));
+        }
         if (!std::filesystem::exists(path)) throw pyb::value_error(path.string() + ": no such file");
         if (is_model_path(path)) {
             bare_model_ = true;
@@ -116,9 +122,13 @@ void Session::open(SceneDesc desc) {
     options.coherent = coherent_;
     options.camera = camera_override_;
     const std::lock_guard lock(gpu_mutex());
-    session_.reset();  // its GPU memory first
-    session_ = reading_input([&] { return std::make_unique<SceneSession>(*ctx_, std::move(desc), options, models_); });
+    // The new session first: when it fails (a missing model, a bad layer file) the old one
+    // stays, as configure() promises.
+    std::unique_ptr<SceneSession> opened =
+        reading_input([&] { return std::make_unique<SceneSession>(*ctx_, std::move(desc), options, models_); });
+    session_ = std::move(opened);
     check_validation(*ctx_);
+    check_camera(camera(), "camera");
 }
 
 pyb::object Session::scene() const { return pyb::module_::import("json").attr("loads")(base_.dump()); }
@@ -129,6 +139,8 @@ void Session::configure(const pyb::object& patch) {
     json merged = base_;
     merged.merge_patch(changes);
     SceneDesc desc = parse(merged);  // a bad key throws here, with the session untouched
+    // session_ is read below without gpu_mutex: only frames run without the GIL, and they
+    // do not change what is read here (the description, the size).
     bool live = true;
     for (const auto& [key, value] : changes.items()) live = live && live_key(key);
     // A camera path (an orbit, keyframes) is the session's own: changing to or from one reopens it.
@@ -136,9 +148,10 @@ void Session::configure(const pyb::object& patch) {
     if (camera_change && (desc.camera_path.kind != CameraPath::Kind::Fixed ||
                           session_->desc().camera_path.kind != CameraPath::Kind::Fixed))
         live = false;
-    if (!live) {
+    if (!live) {  // a new session: the scene's camera again, set_camera()'s dropped
         open(std::move(desc));
         camera_.reset();
+        scene_camera_.reset();
         base_ = std::move(merged);
         return;
     }
@@ -150,16 +163,30 @@ void Session::configure(const pyb::object& patch) {
     session_->surface() = desc.style;
     if (std::pair(desc.width, desc.height) != size())
         session_->resize(uint32_t(desc.width), uint32_t(desc.height));
-    if (camera_change) {
+    if (camera_change) {  // the scene's camera now; a set_camera() camera is dropped
         const float aspect = float(desc.width) / float(desc.height);
-        camera_ = desc.camera ? *desc.camera
-                              : (session_->has_model() ? frame_bounds(session_->scene().bounds, aspect, desc.fov_deg)
-                                                       : ViewCamera{});
+        scene_camera_ = desc.camera ? *desc.camera
+                                    : (session_->has_model() ? frame_bounds(session_->scene().bounds, aspect, desc.fov_deg)
+                                                             : ViewCamera{});
+        camera_.reset();
     }
     base_ = std::move(merged);
 }
 
-ViewCamera Session::camera() const { return camera_ ? *camera_ : session_->camera_at(last_when_); }
+ViewCamera Session::camera() const {
+    if (camera_) return *camera_;
+    if (scene_camera_) return *scene_camera_;
+    return session_->camera_at(last_when_);
+}
+
+void Session::check_camera(const ViewCamera& c, const std::string& name) {
+    const glm::vec3 view = c.target - c.eye;
+    if (!std::isfinite(glm::length(view)) || !std::isfinite(glm::length(c.up)))
+        throw pyb::value_error(name + ": eye, target and up must be finite and not so large that their distances overflow");
+    if (c.eye == c.target) throw pyb::value_error(name + ": the eye and the target coincide");
+    if (glm::length(glm::cross(glm::normalize(view), c.up)) <= 1e-6f * glm::length(c.up))
+        throw pyb::value_error(name + ": up is parallel to the view direction");
+}
 
 void Session::set_camera(const std::optional<glm::vec3>& eye, const std::optional<glm::vec3>& target,
                          const std::optional<glm::vec3>& up, std::optional<float> fov) {
@@ -171,15 +198,25 @@ void Session::set_camera(const std::optional<glm::vec3>& eye, const std::optiona
         if (!(*fov > 0.0f && *fov < 180.0f)) throw pyb::value_error("fov: must be between 0 and 180 degrees");
         c.fov_deg = *fov;
     }
-    if (c.eye == c.target) throw pyb::value_error("camera: the eye and the target coincide");
-    if (glm::length(glm::cross(c.target - c.eye, c.up)) <= 1e-6f * glm::length(c.target - c.eye) * glm::length(c.up))
-        throw pyb::value_error("camera: up is parallel to the view direction");
+    check_camera(c, "camera");
     camera_ = c;
 }
 
 void Session::set_view_matrix(const glm::mat4& view) {
     // The camera a look-at matrix came from: its inverse holds the eye (column 3), the up
     // (column 1) and the backward axis (column 2, OpenGL's convention, which lookAt makes).
+    // Only a rigid look-at (rotation and translation, last row 0 0 0 1, right-handed with
+    // the camera looking down −z) names a camera; a transposed, scaled or mirrored matrix
+    // would be taken for another one silently.
+    const glm::mat3 r(view);
+    const glm::mat3 rrt = r * glm::transpose(r);
+    bool rigid = std::abs(view[0][3]) < 1e-5f && std::abs(view[1][3]) < 1e-5f && std::abs(view[2][3]) < 1e-5f &&
+                 std::abs(view[3][3] - 1.0f) < 1e-5f && glm::determinant(r) > 0.0f;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) rigid = rigid && std::abs(rrt[i][j] - (i == j ? 1.0f : 0.0f)) < 1e-3f;
+    if (!rigid)
+        throw pyb::value_error("view: expected a rigid world-to-camera matrix (a rotation and a translation, last row "
+                               "0 0 0 1, looking down -z, as lookAt makes; column vectors: p_camera = view @ p_world)");
     const glm::mat4 to_world = glm::inverse(view);
     const glm::vec3 eye(to_world[3]), up(to_world[1]), forward = -glm::vec3(to_world[2]);
     if (!std::isfinite(eye.x + eye.y + eye.z) || glm::length(forward) < 1e-6f)

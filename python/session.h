@@ -26,6 +26,13 @@
 
 namespace lw::py {
 
+// Frame numbers a session takes: far past any animation, far from int's limits.
+inline constexpr int kMaxFrame = 10'000'000;
+inline void check_frame(long long f, const char* name) {
+    if (f < -kMaxFrame || f > kMaxFrame)
+        throw pyb::value_error(std::string(name) + ": " + std::to_string(f) + " is past ±" + std::to_string(kMaxFrame));
+}
+
 struct SessionArgs {
     std::string device = "auto", compute = "auto";
     std::optional<bool> validation;
@@ -85,7 +92,10 @@ public:
     SceneSession::Snapshot snapshot() const { return session_->snapshot(); }
     void restore(const SceneSession::Snapshot& snapshot) {
         const std::lock_guard lock(gpu_mutex());
-        session_->restore(snapshot);
+        reading_input([&] {  // another scene's snapshot is bad input, refused before any change
+            session_->restore(snapshot);
+            return 0;
+        });
     }
 
     pyb::object scene() const;                  // the scene as described and configured
@@ -97,12 +107,13 @@ public:
                     const std::optional<glm::vec3>& up, std::optional<float> fov);
     void set_view_matrix(const glm::mat4& view);
     CameraMatrices matrices() const;
-    void reset_camera() { camera_.reset(); }
+    void reset_camera() { camera_.reset(); }  // back to the scene's (as configured)
 
     std::vector<std::string> validation_messages() const { return ctx_->validation_messages(); }
 
 private:
     SceneDesc parse(const nlohmann::json& scene) const;
+    static void check_camera(const ViewCamera& camera, const std::string& name);
     void open(SceneDesc desc);
     Frame draw(const PathTime& when, uint64_t seed, const FrameOutputs& outputs);
     PathTime time_of(std::optional<int> frame, std::optional<float> seconds, uint64_t& seed) const;
@@ -118,7 +129,8 @@ private:
     CameraOverride camera_override_;   // the constructor's eye, target, up
     std::optional<float> fov_;
     bool coherent_ = false;
-    std::optional<ViewCamera> camera_;  // set_camera(): replaces the scene's in every frame
+    std::optional<ViewCamera> camera_;        // set_camera(): replaces the scene's in every frame
+    std::optional<ViewCamera> scene_camera_;  // configure()'s "camera": the scene's fixed camera now
     PathTime last_when_;
     std::unique_ptr<SceneSession> session_;
 };

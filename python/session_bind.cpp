@@ -24,7 +24,15 @@ pyb::array_t<T> store_view(const Polyline& p, const std::vector<V> LineStore::*m
     pyb::capsule base(keep, [](void* k) { delete static_cast<std::shared_ptr<const LineStore>*>(k); });
     std::vector<pyb::ssize_t> shape{pyb::ssize_t(p.count)};
     if (columns > 1) shape.push_back(pyb::ssize_t(columns));
-    return pyb::array_t<T>(shape, reinterpret_cast<const T*>(values.data() + p.first * columns), base);
+    // Read-only: every read of the attribute is a view of the same frame's store.
+    std::vector<pyb::ssize_t> strides{pyb::ssize_t(sizeof(T) * columns)};
+    if (columns > 1) strides.push_back(pyb::ssize_t(sizeof(T)));
+    T* data = const_cast<T*>(reinterpret_cast<const T*>(values.data() + p.first * columns));
+    pyb::array_t<T> view(pyb::buffer_info(data, sizeof(T), pyb::format_descriptor<T>::format(), pyb::ssize_t(shape.size()),
+                                          shape, strides, true),
+                         base);
+    view.attr("setflags")(pyb::arg("write") = false);
+    return view;
 }
 
 pyb::array_t<float> vec3_array(const glm::vec3& v) { return to_array(std::vector<float>{v.x, v.y, v.z}, {3}); }
@@ -125,7 +133,7 @@ void bind_session(pyb::module_& m) {
                                         "parameterization); Session.restore() goes on from it exactly.")
         .def_readonly("seconds", &SceneSession::Snapshot::seconds, "the pose it was taken in");
 
-    pyb::class_<FrameIterator>(m, "FrameIterator")
+    pyb::class_<FrameIterator>(m, "FrameIterator", "Session.frames(): a coherent sequence, drawn as it is iterated.")
         .def("__iter__", [](FrameIterator& it) -> FrameIterator& { return it; })
         .def("__next__", &FrameIterator::step);
 
@@ -152,7 +160,12 @@ speak raises RuntimeError. Bad input raises ValueError with the command line's m
                                .coherent = coherent, .vertices = vertices, .faces = faces, .normals = normals,
                                .name = name};
                  if (!size.is_none()) {
-                     const auto wh = size.cast<std::pair<int, int>>();
+                     std::pair<int, int> wh;
+                     try {
+                         wh = size.cast<std::pair<int, int>>();
+                     } catch (const pyb::cast_error&) {
+                         throw pyb::value_error("size: expected (width, height), two integers");
+                     }
                      if (wh.first < 1 || wh.second < 1 || wh.first > 16384 || wh.second > 16384)
                          throw pyb::value_error("size: width and height must be between 1 and 16384");
                      a.size = wh;
@@ -193,18 +206,28 @@ speak raises RuntimeError. Bad input raises ValueError with the command line's m
                 Session& s = self.cast<Session&>();
                 FrameRange range = s.range();
                 if (!frames.is_none()) {
-                    if (pyb::isinstance(frames, pyb::module_::import("builtins").attr("range"))) {
-                        const int start = frames.attr("start").cast<int>(), stop = frames.attr("stop").cast<int>();
-                        if (frames.attr("step").cast<int>() != 1 || stop <= start)
-                            throw pyb::value_error("frames: expected consecutive frames, range(first, last + 1)");
-                        range = {start, stop - 1};
-                    } else {
-                        const auto ab = frames.cast<std::pair<int, int>>();
-                        if (ab.second < ab.first) throw pyb::value_error("frames: expected (first, last), first <= last");
-                        range = {ab.first, ab.second};
+                    long long first = 0, last = 0;
+                    try {
+                        if (pyb::isinstance(frames, pyb::module_::import("builtins").attr("range"))) {
+                            first = frames.attr("start").cast<long long>();
+                            last = frames.attr("stop").cast<long long>() - 1;
+                            if (frames.attr("step").cast<long long>() != 1 || last < first)
+                                throw pyb::value_error("frames: expected consecutive frames, range(first, last + 1)");
+                        } else {
+                            const auto ab = frames.cast<std::pair<long long, long long>>();
+                            first = ab.first;
+                            last = ab.second;
+                            if (last < first) throw pyb::value_error("frames: expected (first, last), first <= last");
+                        }
+                    } catch (const pyb::cast_error&) {
+                        throw pyb::value_error("frames: expected range(first, last + 1) or (first, last), integers");
                     }
+                    check_frame(first, "frames");
+                    check_frame(last, "frames");
+                    range = {int(first), int(last)};
                 }
-                if (warmup < 0) throw pyb::value_error("warmup: must be 0 or more");
+                if (warmup < 0 || warmup > kMaxFrame) throw pyb::value_error("warmup: must be 0 to " + std::to_string(kMaxFrame));
+                check_frame(range.first - (long long)warmup, "frames (first - warmup)");
                 return FrameIterator{&s, self, range, range.first - warmup, image, depth, lines, hidden};
             },
             pyb::arg("frames") = pyb::none(), pyb::kw_only(), pyb::arg("image") = true, pyb::arg("depth") = false,
@@ -219,8 +242,8 @@ speak raises RuntimeError. Bad input raises ValueError with the command line's m
         .def("configure", &Session::configure, pyb::arg("changes"),
              "Merge scene keys into the scene (RFC 7396: nested dicts merge, None deletes), check them as a "
              "scene file, apply: lines, line_sets, shading and colours, size and camera take effect live; any "
-             "other key reopens the session (its temporal state starts afresh). A bad key raises ValueError and "
-             "changes nothing.")
+             "other key reopens the session (its temporal state starts afresh, and a camera from set_camera() is "
+             "dropped). A bad key raises ValueError and changes nothing.")
         .def_property_readonly("size", &Session::size, "(width, height) in pixels")
         .def_property_readonly("camera", [](const Session& s) { return camera_dict(s.camera()); },
                                "The camera of the next frame: dict(eye, target, up, fov).")
@@ -246,8 +269,10 @@ speak raises RuntimeError. Bad input raises ValueError with the command line's m
                                "4×4 float32 projection (Vulkan clip space, depth 0..1)")
         .def_property_readonly("frame_range", [](const Session& s) { return pyb::make_tuple(s.range().first, s.range().last); },
                                "(first, last): the frames a render draws without a range")
-        .def_property_readonly("fps", &Session::fps)
-        .def_property_readonly("validation_messages", &Session::validation_messages);
+        .def_property_readonly("fps", &Session::fps, "frames per second of the scene's animation clock")
+        .def_property_readonly("validation_messages", &Session::validation_messages,
+                               "messages of the validation layer not yet raised (it is on with validation=True "
+                               "or LINEWORK_VALIDATION=1)");
 
     m.def("load_mesh", &load_mesh, pyb::arg("path"),
           "The triangles of a .gltf/.glb model in world space (rest pose) as the renderer merges them: "

@@ -53,13 +53,15 @@ PathTime Session::time_of(std::optional<int> frame, std::optional<float> seconds
     if (frame && seconds) throw pyb::value_error("frame and t: give one");
     const FrameRange range = this->range();
     if (seconds) {
-        if (!std::isfinite(*seconds)) throw pyb::value_error("t: expected a finite time in seconds");
+        if (!std::isfinite(*seconds) || std::abs(*seconds * fps()) > float(kMaxFrame))
+            throw pyb::value_error("t: expected a finite time within " + std::to_string(kMaxFrame) + " frames of 0");
         // The frame number it falls on sets the ribbon seed; progress runs over the range.
         const float f = *seconds * fps();
         seed = uint64_t(std::max(0L, std::lround(f))) + 1;
         const float span = float(range.last - range.first);
         return {.progress = span > 0.0f ? (f - float(range.first)) / span : 0.0f, .seconds = *seconds};
     }
+    check_frame(frame.value_or(range.first), "frame");
     const int f = frame.value_or(range.first);
     seed = uint64_t(std::max(f, 0)) + 1;
     return frame_time(f, range, fps());
@@ -70,7 +72,7 @@ Frame Session::draw(const PathTime& when, uint64_t seed, const FrameOutputs& out
     {
         const pyb::gil_scoped_release unlocked;
         const std::lock_guard lock(gpu_mutex());
-        frame = session_->frame({.when = when, .camera = camera_, .outputs = outputs, .seed = seed});
+        frame = session_->frame({.when = when, .camera = camera_ ? camera_ : scene_camera_, .outputs = outputs, .seed = seed});
     }
     last_when_ = when;
     check_validation(*ctx_);
@@ -111,7 +113,6 @@ pyb::object Session::render(std::optional<int> frame, std::optional<float> secon
 }
 
 pyb::dict Session::lines(std::optional<int> frame, std::optional<float> seconds, bool hidden) {
-    if (!session_->has_model()) return {};
     uint64_t seed = 1;
     const PathTime when = time_of(frame, seconds, seed);
     return lines_of(draw(when, seed, {.color = false}), hidden);
@@ -121,7 +122,7 @@ FrameResult Session::result(int index, const PathTime& when, uint64_t seed, bool
                             bool hidden) {
     Frame f = draw(when, seed, {.color = image, .depth = depth});
     FrameResult r{.index = index, .seconds = when.seconds, .timings = timings_of(f.timings)};
-    if (lines) r.lines = session_->has_model() ? lines_of(f, hidden) : pyb::dict();
+    if (lines) r.lines = lines_of(f, hidden);
     const auto [w, h] = size();
     if (depth) r.depth = depth_array(std::move(f.image.depth), w, h);
     if (image) r.image = image_to_array(std::move(f.image.color));

@@ -258,7 +258,29 @@ double SceneSession::draw_ribbons(Frame& frame, uint64_t seed) {
 
 void SceneSession::resize(uint32_t width, uint32_t height) { renderer_.resize(width, height); }
 
+SceneSession::Snapshot SceneSession::snapshot() const {
+    const LineMesh* lines = renderer_.line_mesh();
+    return {.seconds = last_seconds_,
+            .coherence = renderer_.coherence_snapshot(),
+            .width = renderer_.target().width,
+            .height = renderer_.target().height,
+            .welded_vertices = lines ? lines->mesh.positions.size() : 0};
+}
+
 void SceneSession::restore(const Snapshot& snapshot) {
+    const auto count = [](size_t n, const char* what) { return std::to_string(n) + " " + what; };
+    if (snapshot.coherence.sets.size() > sets_.size() || snapshot.coherence.layers.size() != layers_.descs.size())
+        throw Error("snapshot: taken of another scene (" + count(snapshot.coherence.sets.size(), "line sets, ") +
+                    count(snapshot.coherence.layers.size(), "layers; this one has ") + count(sets_.size(), "and ") +
+                    count(layers_.descs.size(), "layers)"));
+    const LineMesh* lines = renderer_.line_mesh();
+    const size_t welded = lines ? lines->mesh.positions.size() : 0;
+    if (snapshot.width != 0 && (snapshot.width != renderer_.target().width ||
+                                snapshot.height != renderer_.target().height || snapshot.welded_vertices != welded))
+        throw Error("snapshot: taken of another scene or size (" + std::to_string(snapshot.width) + "x" +
+                    std::to_string(snapshot.height) + ", " + count(snapshot.welded_vertices, "welded vertices; this one ") +
+                    std::to_string(renderer_.target().width) + "x" + std::to_string(renderer_.target().height) + ", " +
+                    count(welded, "welded vertices)"));
     pose(snapshot.seconds);
     renderer_.restore_coherence(snapshot.coherence);
     last_seconds_ = snapshot.seconds;

@@ -117,8 +117,14 @@ public:
     struct Snapshot {
         float seconds = 0.0f;  // the pose it was taken in
         FrameRenderer::CoherenceSnapshot coherence;
+        // What it was taken of (0: not recorded, as in a render's saved state, whose options
+        // signature is checked instead): restoring into another image size or line mesh fails.
+        uint32_t width = 0, height = 0;
+        size_t welded_vertices = 0;
     };
-    [[nodiscard]] Snapshot snapshot() const { return {last_seconds_, renderer_.coherence_snapshot()}; }
+    [[nodiscard]] Snapshot snapshot() const;
+    // Checks the snapshot against this session (sets, layers, and the size and line mesh when
+    // recorded) before changing anything; throws lw::Error("snapshot: ...") when it is another's.
     void restore(const Snapshot& snapshot);
 
     // The frame's lines as SVG groups (one per line set, in order) and dump groups.

@@ -199,3 +199,65 @@ def test_errors_carry_the_cli_messages(tmp_path):
         s.render(frame=0, t=0.0)
     with pytest.raises(ValueError, match="eye and the target coincide"):
         s.set_camera(eye=s.camera["target"])
+
+
+def test_bad_edits_and_odd_arguments_leave_a_working_session(tmp_path):
+    s = linework.Session(SOURCE / "scenes/default.json", device="cpu", size=(64, 48))
+    image = s.render()
+    # A non-live key that fails to load keeps the old session.
+    with pytest.raises(ValueError, match="nope.glb"):
+        s.configure({"model": str(tmp_path / "nope.glb")})
+    assert np.array_equal(s.render(), image)
+    with pytest.raises(ValueError, match="configure"):
+        s.configure({"lines": {"silhouette": {"width": float("nan")}}})
+    # reset_camera() goes back to the configured camera, not the file's.
+    s.configure({"camera": {"eye": [0, 0.5, 3], "target": [0, 0, 0]}})
+    s.set_camera(eye=(3, 0, 0))
+    s.reset_camera()
+    assert np.allclose(s.camera["eye"], [0, 0.5, 3])
+    # Only a rigid look-at names a camera.
+    view = s.view_matrix
+    for bad in (view.T, 2 * view, np.diag([1, 1, -1, 1]) @ view):
+        with pytest.raises(ValueError, match="rigid"):
+            s.set_camera(view=bad)
+    with pytest.raises(ValueError, match="up is parallel"):
+        linework.Session(SPOT, device="cpu", size=(64, 48), eye=(0, 5, 0), target=(0, 0, 0), up=(0, 1, 0))
+    for size in ((10.5, 20), "10x20", (1, 2, 3)):
+        with pytest.raises(ValueError, match="size"):
+            linework.Session(SPOT, device="cpu", size=size)
+    for frames in ((2**31 - 1, 2**31 - 1), (0,), range(0, 2**40)):
+        with pytest.raises(ValueError, match="frames"):
+            s.frames(frames)
+    with pytest.raises(ValueError, match="t: expected a finite time"):
+        s.render(1e30)
+    with pytest.raises(TypeError, match="scene: expected a path"):
+        linework.Session(5, device="cpu")
+    with pytest.raises(ValueError, match="faces: index 9223372036854775813 of triangle 0 is out of range"):
+        linework.Session(vertices=np.eye(3), faces=np.array([[0, 1, 2**63 + 5]], np.uint64), device="cpu")
+    # An error quoting a binary file's bytes still has its message.
+    with pytest.raises(ValueError, match="slam-brush.png: invalid JSON"):
+        linework.Session(SOURCE / "scenes/exemplars/slam-brush.png", device="cpu")
+    # Polylines are read-only views of their frame.
+    p = s.lines()["silhouette"][0]
+    with pytest.raises(ValueError):
+        p.points[0, 0] = 5
+
+
+def test_another_scenes_snapshot_is_refused_before_anything_changes():
+    spot = linework.Session(SPOT, device="cpu", size=(96, 72), coherent=True)
+    spot.render()
+    snap = spot.snapshot()
+    one_set = {"model": str(SPOT), "line_sets": [{"name": "outline", "select": {"types": ["silhouette"]}}]}
+    other = linework.Session(one_set, device="cpu", size=(96, 72))
+    with pytest.raises(ValueError, match="snapshot: taken of another scene"):
+        other.restore(snap)
+    smaller = linework.Session(SPOT, device="cpu", size=(64, 48), coherent=True)
+    with pytest.raises(ValueError, match="snapshot: taken of another scene or size"):
+        smaller.restore(snap)
+    fresh = linework.Session(SPOT, device="cpu", size=(64, 48), coherent=True)
+    assert np.array_equal(smaller.render(), fresh.render())
+
+
+def test_a_scene_of_layers_alone_has_the_svgs_empty_groups():
+    s = linework.Session(SOURCE / "scenes/patterns_sheet.json", device="cpu", size=(64, 48))
+    assert s.lines() == {"silhouette": [], "suggestive": [], "crease": [], "border": []}
