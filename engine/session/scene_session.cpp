@@ -98,28 +98,39 @@ SceneSession::SceneSession(const Context& ctx, SceneDesc desc, const SessionOpti
     }
 }
 
+namespace {
+
+// A file some set already read: the value of the first set in `sets` (in order, of which
+// `values` are the first values.size()) whose style names the same file.
+template <typename T>
+std::optional<T> already_read(const std::string& file, std::string LineSetStyle::*member,
+                              const std::vector<LineSetDesc>& sets, const std::vector<std::optional<T>>& values) {
+    for (size_t j = 0; j < values.size() && !file.empty(); ++j)
+        if (sets[j].style.*member == file && values[j]) return values[j];
+    return std::nullopt;
+}
+
+}  // namespace
+
 void SceneSession::load_line_styles() {
     if (options_.length_scale > 0.0f) {
         desc_.lines.length_scale = options_.length_scale;
         for (LineSetDesc& set : desc_.lines.sets) set.coherence.length_scale = options_.length_scale;
     }
+    const std::vector<LineSetDesc> previous = std::move(sets_);  // what slams_ and ribbons_ were read for
     sets_ = effective_line_sets(desc_.lines);
     // Every file a style names, read before any rendering so that a bad one fails first; a
     // SLAM or ribbon exemplar shared by several sets (or kept from before) is read once.
     std::vector<std::optional<Slam>> slams;
     std::vector<std::optional<Exemplar>> ribbons;
-    for (size_t i = 0; i < sets_.size(); ++i) {
-        const LineSetStyle& style = sets_[i].style;
-        std::optional<Slam> slam;
-        for (size_t j = 0; j < slams.size() && !style.slam.empty() && !slam; ++j)
-            if (sets_[j].style.slam == style.slam) slam = slams[j];
-        for (size_t j = 0; j < slams_.size() && !style.slam.empty() && !slam; ++j)
-            if (slam_files_[j] == style.slam) slam = slams_[j];
+    for (const LineSetDesc& set : sets_) {
+        const LineSetStyle& style = set.style;
+        std::optional<Slam> slam = already_read(style.slam, &LineSetStyle::slam, sets_, slams);
+        if (!slam) slam = already_read(style.slam, &LineSetStyle::slam, previous, slams_);
         if (!style.slam.empty() && !slam) slam = read_slam(style.slam);
         slams.push_back(std::move(slam));
-        std::optional<Exemplar> ribbon;
-        for (size_t j = 0; j < ribbons_.size() && !style.ribbon.empty() && !ribbon; ++j)
-            if (ribbon_files_[j] == style.ribbon) ribbon = ribbons_[j];
+        std::optional<Exemplar> ribbon = already_read(style.ribbon, &LineSetStyle::ribbon, sets_, ribbons);
+        if (!ribbon) ribbon = already_read(style.ribbon, &LineSetStyle::ribbon, previous, ribbons_);
         if (!style.ribbon.empty() && !ribbon) ribbon = make_exemplar(read_image_rgba8(style.ribbon), style.ribbon);
         ribbons.push_back(std::move(ribbon));
     }
@@ -131,12 +142,6 @@ void SceneSession::load_line_styles() {
     slams_ = std::move(slams);
     ribbons_ = std::move(ribbons);
     textured_.assign(sets_.size(), true);
-    slam_files_.clear();
-    ribbon_files_.clear();
-    for (const LineSetDesc& set : sets_) {
-        slam_files_.push_back(set.style.slam);
-        ribbon_files_.push_back(set.style.ribbon);
-    }
 }
 
 void SceneSession::set_lines(const LinesDesc& lines) {

@@ -145,7 +145,6 @@ private:
     std::vector<std::optional<Slam>> slams_;     // per set
     std::vector<bool> textured_;                 // per set: its SLAM is drawn
     std::vector<std::optional<Exemplar>> ribbons_;  // per set
-    std::vector<std::string> slam_files_, ribbon_files_;  // what slams_ and ribbons_ were read from
     SceneLayers layers_;
     FrameRenderer renderer_;
     bool animated_ = false;
