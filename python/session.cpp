@@ -80,9 +80,13 @@ Session::Session(const pyb::object& scene, const SessionArgs& a)
             base_ = json::object();
         } else {
             const std::string text = read_scene_text(path);
-            (void)reading_input([&] { return parse_scene_json(text, path); });  // the file's own errors first
-            base_ = json::parse(text);
-            source_ = path;
+            source_ = path;  // open(parse(base_)) below checks every key, naming the file
+            try {
+                base_ = json::parse(text);
+            } catch (const json::exception&) {  // the scene parser's message for bad JSON
+                (void)reading_input([&] { return parse_scene_json(text, path); });
+                throw;
+            }
         }
     }
     if (!base_.is_object()) throw pyb::value_error("scene: expected a JSON object");
