@@ -1,6 +1,7 @@
 #include "coherence/path_dump.h"
 
 #include <algorithm>
+#include <optional>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -79,33 +80,77 @@ namespace {
 
 // Samples of a frame in a grid of `cell`-pixel buckets for neighbour queries.
 struct SampleGrid {
+    struct Entry {
+        const DumpPath* path = nullptr;
+        size_t k = 0;
+        const DumpSample& sample() const { return path->samples[k]; }
+    };
     float cell;
-    std::unordered_map<int64_t, std::vector<const DumpSample*>> buckets;
+    std::unordered_map<int64_t, std::vector<Entry>> buckets;
     static int64_t key(int x, int y) { return int64_t(x) << 32 ^ int64_t(uint32_t(y)); }
     SampleGrid(const PathDump& frame, float c) : cell(c) {
         for (const auto& path : frame.paths)
-            for (const auto& s : path.samples)
-                buckets[key(int(std::floor(s.pixel.x / cell)), int(std::floor(s.pixel.y / cell)))].push_back(&s);
+            for (size_t k = 0; k < path.samples.size(); ++k) {
+                const glm::vec2 p = path.samples[k].pixel;
+                buckets[key(int(std::floor(p.x / cell)), int(std::floor(p.y / cell)))].push_back({&path, k});
+            }
     }
-    const DumpSample* nearest(glm::vec2 p, float radius) const {
-        const DumpSample* best = nullptr;
+    template <class F>
+    void for_each_within(glm::vec2 p, float radius, F&& f) const {
+        const int cx = int(std::floor(p.x / cell)), cy = int(std::floor(p.y / cell));
+        for (int y = cy - 1; y <= cy + 1; ++y)
+            for (int x = cx - 1; x <= cx + 1; ++x) {
+                const auto it = buckets.find(key(x, y));
+                if (it == buckets.end()) continue;
+                for (const Entry& e : it->second)
+                    if (glm::length(e.sample().pixel - p) <= radius) f(e);
+            }
+    }
+    std::optional<Entry> nearest(glm::vec2 p, float radius) const {
+        std::optional<Entry> best;
         float best_d = radius;
         const int cx = int(std::floor(p.x / cell)), cy = int(std::floor(p.y / cell));
         for (int y = cy - 1; y <= cy + 1; ++y)
             for (int x = cx - 1; x <= cx + 1; ++x) {
                 const auto it = buckets.find(key(x, y));
                 if (it == buckets.end()) continue;
-                for (const DumpSample* s : it->second) {
-                    const float d = glm::length(s->pixel - p);
+                for (const Entry& e : it->second) {
+                    const float d = glm::length(e.sample().pixel - p);
                     if (d <= best_d) {
                         best_d = d;
-                        best = s;
+                        best = e;
                     }
                 }
             }
         return best;
     }
 };
+
+// The point of the matched sample's path nearest to `p`, projected on the segments to its
+// neighbours: its distance to `p` and T interpolated there, so that samples placed at other
+// phases still compare.
+struct PathPoint {
+    float distance;
+    double t;
+};
+PathPoint point_on_path(const SampleGrid::Entry& e, glm::vec2 p) {
+    const std::vector<DumpSample>& s = e.path->samples;
+    double t = s[e.k].t;
+    float best = glm::length(s[e.k].pixel - p);
+    for (const size_t other : {e.k - 1, e.k + 1}) {
+        if (other >= s.size()) continue;  // e.k - 1 wraps past 0
+        const glm::vec2 a = s[e.k].pixel, b = s[other].pixel;
+        const float len2 = glm::dot(b - a, b - a);
+        if (len2 <= 0.0f) continue;
+        const float alpha = std::clamp(glm::dot(p - a, b - a) / len2, 0.0f, 1.0f);
+        const float d = glm::length(a + alpha * (b - a) - p);
+        if (d < best) {
+            best = d;
+            t = double(s[e.k].t) + double(alpha) * (double(s[other].t) - double(s[e.k].t));
+        }
+    }
+    return {best, t};
+}
 
 double median(std::vector<double> v) {
     if (v.empty()) return 0.0;
@@ -121,14 +166,46 @@ SlidingMeasure measure_sliding(const std::vector<PathDump>& frames, float match_
         const SampleGrid previous(frames[f - 1], std::max(match_px, 1.0f));
         for (const auto& path : frames[f].paths)
             for (const auto& s : path.samples) {
-                const DumpSample* match = previous.nearest(s.pixel, match_px);
+                const std::optional<SampleGrid::Entry> match = previous.nearest(s.pixel, match_px);
                 if (!match) continue;
-                double dt = double(s.t) - double(match->t);
+                double dt = double(s.t) - double(match->sample().t);
                 dt -= std::round(dt);  // wrapped to half a period
                 dts.push_back(std::abs(dt));
             }
     }
     return {median(dts), dts.size()};
+}
+
+PhaseError measure_phase_error(const PathDump& frame, const PathDump& reference, float match_px) {
+    std::vector<double> dts;
+    const SampleGrid grid(reference, std::max(match_px, 1.0f));
+    for (const auto& path : frame.paths)
+        for (const auto& s : path.samples) {
+            // The nearest reference path of the same set; where paths meet (shared ends, a run
+            // in two pieces) several lie as near, and the closest phase among them counts.
+            float best_d = match_px;
+            double best_dt = -1.0;
+            grid.for_each_within(s.pixel, match_px, [&](const SampleGrid::Entry& e) {
+                if (e.path->line_set != path.line_set) return;
+                const PathPoint q = point_on_path(e, s.pixel);
+                double dt = double(s.t) - q.t;
+                dt = std::abs(dt - std::round(dt));
+                if (q.distance < best_d - 0.05f || (q.distance < best_d + 0.05f && (best_dt < 0.0 || dt < best_dt))) {
+                    best_d = std::min(best_d, q.distance);
+                    best_dt = dt;
+                }
+            });
+            if (best_dt >= 0.0) dts.push_back(best_dt);
+        }
+    PhaseError e;
+    e.pairs = dts.size();
+    if (dts.empty()) return e;
+    std::sort(dts.begin(), dts.end());
+    e.median = dts[dts.size() / 2];
+    e.p90 = dts[std::min(dts.size() - 1, dts.size() * 9 / 10)];
+    e.max = dts.back();
+    e.over_quarter = double(dts.end() - std::upper_bound(dts.begin(), dts.end(), 0.25)) / double(dts.size());
+    return e;
 }
 
 StretchMeasure measure_stretch(const std::vector<PathDump>& frames) {

@@ -61,6 +61,17 @@ struct SlidingMeasure {
 };
 [[nodiscard]] SlidingMeasure measure_sliding(const std::vector<PathDump>& frames, float match_px = 1.5f);
 
+// How far one frame's parameterization is from a reference render of the same frame (a
+// farm chunk's first frames against one render of the shot): per sample, |Δt| (wrapped to
+// half a period) against T interpolated on the nearest reference path of the same line set
+// within `match_px`.
+struct PhaseError {
+    double median = 0.0, p90 = 0.0, max = 0.0;  // periods
+    double over_quarter = 0.0;                   // share of samples off by more than 0.25 period
+    size_t pairs = 0;
+};
+[[nodiscard]] PhaseError measure_phase_error(const PathDump& frame, const PathDump& reference, float match_px = 1.5f);
+
 struct StretchMeasure {
     double band_low = 0.0;           // the best band is [band_low, 2·band_low) pixels per period
     double share_in_band = 0.0;      // of all samples

@@ -124,14 +124,17 @@ Frame FrameRenderer::render(const CameraMatrices& camera, const glm::vec3& eye, 
     // ComputeSite) by the host while the device draws the surface: lavapipe's vertex stage
     // runs on one thread and leaves the other core to the host extraction.
     const bool host_extraction = draw_lines && extraction_on_host_;
+    // Without drawing, the surface is depth-only: the same vertex stage, so the same depth.
+    SurfaceStyle surface_style = surface;
+    if (!outputs.draw) surface_style.draw_surface = false;
     for (int attempt = 0;; ++attempt) {
         Context::Submission surface_work = ctx_->submit([&](VkCommandBuffer cmd) {
             timer_.reset(cmd);
             timer_.begin(cmd, "surface");
             if (mesh_)
-                surface_pass_.record(cmd, target_, *mesh_, camera, eye, surface);
+                surface_pass_.record(cmd, target_, *mesh_, camera, eye, surface_style);
             else
-                surface_pass_.record_clear(cmd, target_, surface);
+                surface_pass_.record_clear(cmd, target_, surface_style);
             timer_.end(cmd);
             if (draw_lines && !host_extraction) extractor_.record(cmd, eye, extraction, &timer_);
             if (draw_lines || outputs.depth) record_image_to_buffer(cmd, target_.depth, depth_readback);
@@ -162,7 +165,7 @@ Frame FrameRenderer::render(const CameraMatrices& camera, const glm::vec3& eye, 
         const DepthImage depth{int(target_.width), int(target_.height), depth_pixels, camera.znear, camera.zfar};
         frame.screen_paths = compute_visibility(frame.paths, camera, depth, {.sample_spacing_px = lines.sample_spacing_px});
         frame.timings.visibility_ms = visibility.elapsed_ms();
-        prepare_sets(frame, sets, lines, camera, depth, coherence, strokes);
+        prepare_sets(frame, sets, lines, camera, depth, coherence, outputs.draw ? &strokes : nullptr);
     }
 
     // Vector layers: their own trackers and stroke geometry.
@@ -170,6 +173,10 @@ Frame FrameRenderer::render(const CameraMatrices& camera, const glm::vec3& eye, 
         Timer layer_timer;
         frame.layers = layers_->prepare(*layers, coherence != nullptr, lines.sample_spacing_px);
         frame.timings.coherence_ms += layer_timer.elapsed_ms();
+    }
+    if (!outputs.draw) {
+        frame.timings.total_ms = total.elapsed_ms();
+        return frame;
     }
     const bool any_strokes = std::any_of(strokes.begin(), strokes.end(), [](const auto& s) { return !s.empty(); });
     if (!stroke_pass_ && (layers_ || any_strokes)) stroke_pass_ = std::make_unique<StrokePass>(*ctx_, target_.color.format());
@@ -198,7 +205,7 @@ Frame FrameRenderer::render(const CameraMatrices& camera, const glm::vec3& eye, 
 
 void FrameRenderer::prepare_sets(Frame& frame, const std::vector<LineSetDesc>& sets, const LinesDesc& lines,
                                  const CameraMatrices& camera, const DepthImage& depth,
-                                 const CoherenceParams* coherence, std::vector<std::vector<StrokeVertex>>& strokes) {
+                                 const CoherenceParams* coherence, std::vector<std::vector<StrokeVertex>>* strokes) {
     Timer param_timer;
     const SurfaceFrame surface{&line_mesh_->mesh.positions, &line_mesh_->mesh.faces};
     const FaceGroups* groups = groups_.face_group.empty() ? nullptr : &groups_;
@@ -223,7 +230,7 @@ void FrameRenderer::prepare_sets(Frame& frame, const std::vector<LineSetDesc>& s
             for (size_t p = 0; p < out.paths.size(); ++p)
                 if (out.paths[p].visible) out.paths[p] = resample_at_phase(out.paths[p], out.params[p], spacing);
         }
-        if (!set.style.ribbon.empty() || (is_plain_line_set(set.style) && !state.texture)) {
+        if (!strokes || !set.style.ribbon.empty() || (is_plain_line_set(set.style) && !state.texture)) {
             frame.sets.push_back(std::move(out));
             continue;  // ribbons are synthesized over the read-back frame; plain sets by the line pass
         }
@@ -233,7 +240,7 @@ void FrameRenderer::prepare_sets(Frame& frame, const std::vector<LineSetDesc>& s
             const PathParam& param = !out.params.empty() && out.paths[p].visible ? out.params[p] : tiled[p];
             const StrokeParams stroke{.rho = param.rho, .phi = param.phi, .fold = param.fold,
                                       .width = set.style.width, .color = set.style.color};
-            append_styled_stroke(out.paths[p], stroke, set.style, period_px(out.coherence), strokes[i]);
+            append_styled_stroke(out.paths[p], stroke, set.style, period_px(out.coherence), (*strokes)[i]);
         }
         frame.sets.push_back(std::move(out));
     }

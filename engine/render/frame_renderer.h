@@ -56,6 +56,10 @@ struct FrameReadback {
 struct FrameOutputs {
     bool color = true;   // the final image (false: a viewer or a benchmark that shows nothing)
     bool depth = false;  // the depth buffer (EXR output)
+    // false: only what the temporal state needs (depth, lines, visibility, each set's votes,
+    // RANSAC and splat; layers' trackers): no shading, no strokes built or drawn, no colour.
+    // A farm's first phase runs frames so (§4 of the SLAM paper: the state is the splat).
+    bool draw = true;
 };
 
 // One line set's share of a frame.
@@ -156,10 +160,11 @@ private:
         std::unique_ptr<SlamTexture> texture;
     };
     SetState& set_state(size_t set);
-    // Per set: select, parameterize, build stroke geometry (StrokeVertex) for non-plain sets.
+    // Per set: select, parameterize, and (with `strokes`) build stroke geometry (StrokeVertex)
+    // for non-plain sets.
     void prepare_sets(Frame& frame, const std::vector<LineSetDesc>& sets, const LinesDesc& lines,
                       const CameraMatrices& camera, const DepthImage& depth, const CoherenceParams* coherence,
-                      std::vector<std::vector<StrokeVertex>>& strokes);
+                      std::vector<std::vector<StrokeVertex>>* strokes);
     void record_sets(VkCommandBuffer cmd, const Frame& frame, const std::vector<LineSetDesc>& sets,
                      const LinesDesc& lines, const std::vector<std::vector<StrokeVertex>>& strokes,
                      std::vector<Buffer>& keep_alive);

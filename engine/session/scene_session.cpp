@@ -225,9 +225,9 @@ Frame SceneSession::frame(const FrameRequest& request) {
     std::vector<LayerFrame> layer_frames = scene_layer_frames(layers_, request.when.seconds, glm::vec2(width, height),
                                                               desc_.lines.sample_spacing_px);
     // Ribbons are synthesized on the host over the read-back colour.
-    const bool ribbons = has_ribbons() && (request.outputs.color || request.ribbons_to_target);
+    const bool ribbons = has_ribbons() && request.outputs.draw && (request.outputs.color || request.ribbons_to_target);
     FrameOutputs outputs = request.outputs;
-    outputs.color = outputs.color || ribbons;
+    outputs.color = outputs.draw && (outputs.color || ribbons);
     Frame frame = renderer_.render(camera, view.eye, desc_.style, desc_.lines, outputs,
                                    parameterized() ? &options_.coherence : nullptr,
                                    layers_.descs.empty() ? nullptr : &layer_frames);

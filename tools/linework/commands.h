@@ -25,6 +25,7 @@ namespace lw::cli {
 using Runner = std::function<int()>;
 
 Runner add_render_command(CLI::App& app);
+Runner add_farm_command(CLI::App& app);
 Runner add_diff_command(CLI::App& app);
 Runner add_devices_command(CLI::App& app);
 Runner add_slam_pattern_command(CLI::App& app);

@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
         commands.emplace_back(app.get_subcommands({})[before], std::move(runner));
     };
     add(&lw::cli::add_render_command);
+    add(&lw::cli::add_farm_command);
     add(&lw::cli::add_diff_command);
     add(&lw::cli::add_devices_command);
     add(&lw::cli::add_slam_command);

@@ -11,6 +11,7 @@
 #include "commands.h"
 #include "core/timer.h"
 #include "progress.h"
+#include "render_options.h"
 #include "render_output.h"
 #include "render_state.h"
 #include "scene_options.h"
@@ -18,15 +19,6 @@
 namespace lw::cli {
 
 namespace {
-
-struct RenderOptions {
-    SceneOptions scene;
-    std::string output, eye, target, up, shading, svg, hidden, frames, dump_paths;
-    std::optional<float> fov, orbit;
-    bool exr = false, lines_only = false, no_lines = false, resume = false;
-    int warmup = 0;
-    std::string signature;  // the options that shape the frames (--resume checks them)
-};
 
 // Overrides of the scene description. A partial camera (only --eye) keeps the framed target.
 void apply_overrides(const RenderOptions& o, SceneDesc& desc) {
@@ -58,13 +50,175 @@ CameraOverride camera_override(const RenderOptions& o) {
 
 volatile std::sig_atomic_t g_interrupted = 0;
 
-int run_render(const RenderOptions& o) {
-    const std::optional<FrameRange> frames_flag = o.frames.empty() ? std::nullopt : std::optional(parse_frames(o.frames));
+// Ctrl-C (SIGINT), or a scheduler's SIGTERM (scancel, requeue, pre-emption), finishes the
+// frame in hand, writes it and the state, and stops (exit code 130).
+class StopOnSignal {
+public:
+    StopOnSignal() {
+        g_interrupted = 0;
+        int_ = std::signal(SIGINT, [](int) { g_interrupted = 1; });
+        term_ = std::signal(SIGTERM, [](int) { g_interrupted = 1; });
+    }
+    ~StopOnSignal() {
+        std::signal(SIGINT, int_);
+        std::signal(SIGTERM, term_);
+    }
+    StopOnSignal(const StopOnSignal&) = delete;
+    StopOnSignal& operator=(const StopOnSignal&) = delete;
+
+private:
+    void (*int_)(int) = nullptr;
+    void (*term_)(int) = nullptr;
+};
+
+void check_range_options(const RenderOptions& o) {
     if (o.warmup < 0) throw usage_error("--warmup: must be 0 or more");
+    if (o.chunk < 0) throw usage_error("--chunk: must be 1 or more");
+    if (!o.save_states.empty() && o.chunk == 0) throw usage_error("--save-states needs --chunk N (frames per chunk)");
+    if (o.chunk > 0 && o.save_states.empty()) throw usage_error("--chunk is the spacing of --save-states: give both");
+    if (o.state_only && o.save_states.empty())
+        throw usage_error("--state-only writes nothing but the states: add --save-states DIR --chunk N");
+    if (o.state_only && (o.exr || !o.svg.empty())) throw usage_error("--state-only writes no frames: drop --exr and --svg");
+    if (!o.start_state.empty() && o.warmup > 0)
+        throw usage_error("--start-state and --warmup: the saved state already carries what came before");
+    if (o.output.empty() && !o.state_only) throw usage_error("--output (-o) is required");
+}
+
+// The range's chunk start after frame f, when f ends a chunk (state files are named by it).
+bool ends_chunk(int f, FrameRange range, int chunk) {
+    return chunk > 0 && f + 1 > range.first && f + 1 <= range.last && (f + 1 - range.first) % chunk == 0;
+}
+
+std::filesystem::path state_file(const std::string& dir, int start) {
+    char name[40];
+    std::snprintf(name, sizeof name, "state_%04d.lwstate", start);
+    return std::filesystem::path(dir) / name;
+}
+
+// --start-state: read before the session is made, since the line mesh must be built in the
+// pose the state was taken with.
+std::optional<RenderState> read_start_state(const RenderOptions& o) {
+    if (o.start_state.empty()) return std::nullopt;
+    RenderState state = read_render_state(o.start_state);
+    if (state.signature != o.state_signature)
+        throw Error(o.start_state + ": saved by a render with other options (the scene, camera, style and line "
+                                    "options must be the same; only the range and output options may differ)");
+    return state;
+}
+
+// --resume with --state-only: the last saved state of the part, restored; past the part when
+// every state is there.
+int resume_saved_states(const RenderOptions& o, FrameRange range, FrameRange part, SceneSession& session) {
+    for (int f = part.last; f >= part.first; --f) {
+        if (!ends_chunk(f, range, o.chunk) || !std::filesystem::exists(state_file(o.save_states, f + 1))) continue;
+        const RenderState state = read_render_state(state_file(o.save_states, f + 1));
+        if (state.signature != o.state_signature || state.frame != f) continue;  // rewritten below
+        if (f == part.last) return f + 1;
+        session.restore({frame_time(f, range, session.desc().animation.fps).seconds, state.snapshot});
+        std::printf("resuming at frame %d from %s\n", f + 1, state_file(o.save_states, f + 1).string().c_str());
+        return f + 1;
+    }
+    return part.first;
+}
+
+struct Shot {
+    FrameRange range;  // --frames: the camera path and progress span it
+    FrameRange part;   // what this command draws (--part, else the range)
+    int start = 0;     // the first frame drawn: warm-up, resume or saved state included
+};
+
+// The first frame to draw, with the session's state restored where it starts from saved state.
+int first_frame(const RenderOptions& o, const Shot& shot, const FrameFiles& files,
+                const std::optional<RenderState>& start_state, SceneSession& session) {
+    const float fps = session.desc().animation.fps;
+    if (o.state_only && o.resume) return resume_saved_states(o, shot.range, shot.part, session);
+    if (o.resume) {
+        const int resumed = resume_point(o.signature, files, shot.range, shot.part, session);
+        if (resumed > shot.part.first) return resumed;
+    }
+    if (start_state) {
+        if (start_state->frame != shot.part.first - 1)
+            throw Error(o.start_state + ": holds the state after frame " + std::to_string(start_state->frame) +
+                        ", but this part starts at frame " + std::to_string(shot.part.first));
+        session.restore({frame_time(start_state->frame, shot.range, fps).seconds, start_state->snapshot});
+    }
+    return shot.part.first - o.warmup;
+}
+
+void print_header(const RenderOptions& o, const SceneSession& session, const Context& ctx, const Shot& shot,
+                  bool sequence, double load_ms) {
+    const SceneDesc& desc = session.desc();
+    std::printf("scene: %s (%zu triangles, loaded in %.0f ms)\n", o.scene.input.c_str(),
+                session.scene().mesh.triangle_count(), load_ms);
+    std::printf("device: %s\n", ctx.info().describe().c_str());
+    std::printf("size: %dx%d\n", desc.width, desc.height);
+    if (const LineMesh* lm = session.renderer().line_mesh())
+        std::printf("lines: %zu welded vertices, feature size %.4g\n", lm->mesh.positions.size(), double(lm->feature_size));
+    if (!sequence) return;
+    std::printf("frames: %d to %d", shot.range.first, shot.range.last);
+    if (shot.part.first != shot.range.first || shot.part.last != shot.range.last)
+        std::printf(", this part %d to %d", shot.part.first, shot.part.last);
+    if (o.warmup) std::printf(", after %d warm-up frames", o.warmup);
+    std::printf(" at %g fps%s\n", double(desc.animation.fps), o.state_only ? " (temporal state only)" : "");
+}
+
+// Draws shot.start … shot.part.last, writing the part's frames (and their progress state)
+// and the states at chunk starts; 0, or 130 when a signal stopped it.
+int render_frames(const RenderOptions& o, const Shot& shot, const FrameFiles& files, float pose_seconds,
+                  SceneSession& session) {
+    const StopOnSignal stop;
+    const float fps = session.desc().animation.fps;
+    Progress progress(shot.part.last - shot.start + 1, "frame");
+    double total_ms = 0.0;
+    int states = 0;
+    for (int f = shot.start; f <= shot.part.last; ++f) {
+        const bool write = f >= shot.part.first && !o.state_only;
+        const Frame frame = session.frame({.when = frame_time(f, shot.range, fps),
+                                           .outputs = {.color = write, .depth = write && o.exr, .draw = !o.state_only},
+                                           .seed = uint64_t(f) + 1});
+        total_ms += frame.timings.total_ms;
+        progress.update(f - shot.start + 1, f, frame.timings.total_ms);
+        if (write) {
+            write_frame_files(files, session, frame, f);
+            if (files.sequence)
+                write_render_state(files.progress_state, {o.signature, f, pose_seconds, session.snapshot().coherence});
+            else
+                print_frame_report(files, session, frame, f);
+        }
+        if (!o.save_states.empty() && ends_chunk(f, shot.range, o.chunk)) {
+            write_render_state(state_file(o.save_states, f + 1),
+                               {o.state_signature, f, pose_seconds, session.snapshot().coherence});
+            ++states;
+        }
+        if (g_interrupted && f < shot.part.last) {
+            if (!o.state_only) return interrupted(f, shot.part.first);
+            std::fprintf(stderr, "\nlinework: interrupted after frame %d; the states written stay in %s; run the same "
+                                 "command with --resume to go on\n", f, o.save_states.c_str());
+            return 130;
+        }
+    }
+    const int drawn = shot.part.last - shot.start + 1;
+    if (files.sequence) std::printf("time per frame: %.2f ms (mean of %d)\n", total_ms / std::max(drawn, 1), drawn);
+    if (files.sequence && !o.state_only)
+        std::printf("wrote %s/frame_%04d.png … frame_%04d.png\n", o.output.c_str(), shot.part.first, shot.part.last);
+    if (states > 0) std::printf("wrote %d states to %s\n", states, o.save_states.c_str());
+    if (!o.dump_paths.empty() && !o.state_only) std::printf("wrote path dumps to %s\n", o.dump_paths.c_str());
+    return 0;
+}
+
+int run_render(const RenderOptions& o) {
+    check_range_options(o);
+    // Plain values and flags (an optional here sets off GCC 12's -Wmaybe-uninitialized).
+    const bool frames_given = !o.frames.empty(), part_given = !o.part.empty();
+    const FrameRange frames_flag = frames_given ? parse_frames(o.frames) : FrameRange{};
+    const FrameRange part_flag = part_given ? parse_frames(o.part, "--part") : FrameRange{};
     SceneDesc desc = scene_from_options(o.scene);
     apply_overrides(o, desc);
-    FrameFiles files{o.output, o.svg, o.dump_paths, o.exr};
-    create_folders(files);
+    FrameFiles files{o.output, o.svg, o.state_only ? std::string() : o.dump_paths, o.exr};
+    if (o.state_only) files.exr = false;
+    if (!o.state_only) create_folders(files);
+    if (!o.save_states.empty()) create_folders({.out_dir = o.save_states});
+    const std::optional<RenderState> start_state = read_start_state(o);
 
     const bool validation = validation_on(o.scene);
     Context ctx({.device = parse_device_choice(o.scene.device), .validation = validation,
@@ -72,67 +226,39 @@ int run_render(const RenderOptions& o) {
     Timer load_timer;
     SessionOptions options = session_options(o.scene, desc);
     options.coherent = options.coherent || !o.dump_paths.empty();
-    // Frames: the command line, else the scene's, else the clips' length (one frame without).
-    const float fps = desc.animation.fps;
     options.camera = camera_override(o);
-    FrameRange range = desc.animation.frames.value_or(FrameRange{0, 0});
-    if (frames_flag) range = *frames_flag;
-    // The first frame drawn (warm-up included) sets the pose the line mesh is built in.
-    options.start_seconds = frame_time(range.first - o.warmup, {range.first - o.warmup, range.last}, fps).seconds;
+    // Frames: the command line, else the scene's, else the clips' length (one frame without).
+    Shot shot;
+    shot.range = frames_given ? frames_flag : desc.animation.frames.value_or(FrameRange{0, 0});
+    // The first frame drawn (warm-up included) sets the pose the line mesh is built in; a
+    // saved state brings the pose of the render it came from.
+    const int first_drawn = (part_given ? part_flag : shot.range).first - o.warmup;
+    options.start_seconds = start_state ? start_state->pose_seconds
+                                        : frame_time(first_drawn, {first_drawn, first_drawn}, desc.animation.fps).seconds;
     SceneSession session(ctx, desc, options);
-    if (!frames_flag) range = session.default_frames();
-    files.sequence = range.last > range.first || o.warmup > 0 || desc.animation.play ||
+    if (!frames_given) shot.range = session.default_frames();
+    shot.part = part_given ? part_flag : shot.range;
+    if (shot.part.first < shot.range.first || shot.part.last > shot.range.last)
+        throw usage_error("--part " + o.part + " lies outside the range " + std::to_string(shot.range.first) + ":" +
+                          std::to_string(shot.range.last));
+    files.sequence = shot.range.last > shot.range.first || o.warmup > 0 || desc.animation.play ||
                      desc.camera_path.kind != CameraPath::Kind::Fixed;
-    std::printf("scene: %s (%zu triangles, loaded in %.0f ms)\n", o.scene.input.c_str(),
-                session.scene().mesh.triangle_count(), load_timer.elapsed_ms());
-    std::printf("device: %s\n", ctx.info().describe().c_str());
-    std::printf("size: %dx%d\n", desc.width, desc.height);
-    if (const LineMesh* lm = session.renderer().line_mesh())
-        std::printf("lines: %zu welded vertices, feature size %.4g\n", lm->mesh.positions.size(), double(lm->feature_size));
-    if (files.sequence)
-        std::printf("frames: %d to %d%s at %g fps\n", range.first, range.last,
-                    o.warmup ? (", after " + std::to_string(o.warmup) + " warm-up frames").c_str() : "", double(fps));
+    files.progress_state = files.out_dir / (part_given ? ".linework-state-" + std::to_string(shot.part.first) + "-" +
+                                                            std::to_string(shot.part.last)
+                                                      : std::string(".linework-state"));
+    print_header(o, session, ctx, shot, files.sequence, load_timer.elapsed_ms());
 
-    int start = range.first - o.warmup;
-    if (o.resume) {
-        const int resumed = resume_point(o.signature, files, range, session);
-        if (resumed > range.last) {
-            std::printf("all frames %d to %d are already in %s\n", range.first, range.last, o.output.c_str());
-            return 0;
-        }
-        if (resumed > range.first) start = resumed;
+    shot.start = first_frame(o, shot, files, start_state, session);
+    if (shot.start > shot.part.last) {
+        if (o.state_only)
+            std::printf("all states of frames %d to %d are already in %s\n", shot.part.first, shot.part.last,
+                        o.save_states.c_str());
+        else
+            std::printf("all frames %d to %d are already in %s\n", shot.part.first, shot.part.last, o.output.c_str());
+        return 0;
     }
-
-    // Ctrl-C finishes the frame in hand, writes it and the state, and stops (exit code 130).
-    g_interrupted = 0;
-    const auto previous_handler = std::signal(SIGINT, [](int) { g_interrupted = 1; });
-    struct RestoreHandler {
-        decltype(previous_handler) handler;
-        ~RestoreHandler() { std::signal(SIGINT, handler); }
-    } restore_handler{previous_handler};
-
-    Progress progress(range.last - start + 1, "frame");
-    double total_ms = 0.0;
-    for (int f = start; f <= range.last; ++f) {
-        const bool write = f >= range.first;
-        const Frame frame = session.frame({.when = frame_time(f, range, fps),
-                                           .outputs = {.color = write, .depth = write && o.exr},
-                                           .seed = uint64_t(f) + 1});
-        total_ms += frame.timings.total_ms;
-        progress.update(f - start + 1, f, frame.timings.total_ms);
-        if (write) {
-            write_frame_files(files, session, frame, f);
-            if (files.sequence) write_render_state(files.out_dir / ".linework-state", {o.signature, f, session.snapshot().coherence});
-            if (!files.sequence) print_frame_report(files, session, frame, f);
-        }
-        if (g_interrupted && f < range.last) return interrupted(f, range.first);
-    }
-    if (files.sequence) {
-        std::printf("time per frame: %.2f ms (mean of %d)\n", total_ms / std::max(range.last - start + 1, 1),
-                    range.last - start + 1);
-        std::printf("wrote %s/frame_%04d.png … frame_%04d.png\n", o.output.c_str(), range.first, range.last);
-        if (!o.dump_paths.empty()) std::printf("wrote path dumps to %s\n", o.dump_paths.c_str());
-    }
+    const int stopped = render_frames(o, shot, files, options.start_seconds, session);
+    if (stopped != 0) return stopped;
     return exit_code_after_validation(ctx, validation);
 }
 
@@ -144,38 +270,32 @@ Runner add_render_command(CLI::App& app) {
         "render",
         "Render a scene file or a glTF model headlessly to OUT/frame_0000.png.\n"
         "Without a camera in the scene (or --eye/--target), the camera frames the bounding box.");
-    add_scene_options(cmd, o->scene, true);
-    cmd->add_option("-o,--output", o->output, "Output folder (created if missing)")->required();
-    cmd->add_option("--eye", o->eye, "Camera position x,y,z");
-    cmd->add_option("--target", o->target, "Point looked at x,y,z");
-    cmd->add_option("--up", o->up, "Up vector x,y,z (default 0,1,0)");
-    cmd->add_option("--fov", o->fov, "Vertical field of view in degrees (default 40)");
-    cmd->add_option("--shading", o->shading, "Surface shading")->check(CLI::IsMember({"flat", "toon", "unlit", "none"}));
-    cmd->add_flag("--exr", o->exr, "Also write OUT/frame_0000.exr (RGBA + depth channel Z)");
-    cmd->add_flag("--lines-only", o->lines_only, "Draw the lines over the background, without shading");
-    cmd->add_flag("--no-lines", o->no_lines, "Shading only, no feature lines");
-    cmd->add_option("--svg", o->svg, "Also write the visible lines as SVG (pixel coordinates, one <g> per line set)");
-    cmd->add_option("--hidden", o->hidden, "Hidden lines: none (default), dashed or faint")
-        ->check(CLI::IsMember({"none", "dashed", "faint"}));
+    add_frame_options(cmd, *o);
+    cmd->add_option("-o,--output", o->output, "Output folder (created if missing; not with --state-only)");
     cmd->add_option("--frames", o->frames,
                     "Render frames A:B (inclusive) to OUT/frame_NNNN.png (default: the scene's, else one frame)");
-    cmd->add_option("--warmup", o->warmup, "Render K frames before A without writing them, so a range starts coherent");
-    cmd->add_option("--orbit", o->orbit, "Turn the camera DEG degrees about the bounding-box centre over the frames");
-    cmd->add_option("--dump-paths", o->dump_paths,
-                    "Write DIR/frame_NNNN.json per frame: visible paths, their line set, (ρ, φ), level and samples");
+    cmd->add_option("--warmup", o->warmup, "Render K frames before A (or the part) without writing them, so it starts "
+                                           "coherent");
     cmd->add_flag("--resume", o->resume,
                   "Go on with an interrupted sequence: skip the frames already in the output folder and "
                   "restore the parameterization from its .linework-state");
+    // A farm task's options (docs: README "Render farm").
+    cmd->add_option("--part", o->part,
+                    "Render only frames C:D of the --frames range; the camera path and clip still span the range "
+                    "(a farm task)");
+    cmd->add_option("--save-states", o->save_states,
+                    "Write DIR/state_NNNN.lwstate, the temporal state a render of frames NNNN… starts from, at "
+                    "every chunk start NNNN = A+N, A+2N … of the range (with --chunk N)");
+    cmd->add_option("--chunk", o->chunk, "Frames per chunk for --save-states");
+    cmd->add_flag("--state-only", o->state_only,
+                  "Run only what the temporal state needs (lines, visibility, votes, RANSAC, splat): no "
+                  "shading, strokes or frame files; with --save-states");
+    cmd->add_option("--start-state", o->start_state,
+                    "Start the part (or range) from a state written by --save-states: frames identical to a "
+                    "render of the whole range");
     return [o, cmd] {
-        // The options as given, less --resume itself: what a resumed run must repeat.
-        std::string signature;
-        for (const CLI::Option* option : cmd->get_options())
-            if (option->count() > 0 && option->get_name() != "--resume") {
-                signature += option->get_name() + "=";
-                for (const std::string& value : option->results()) signature += value + ";";
-                signature += "\n";
-            }
-        o->signature = signature;
+        o->signature = given_options_signature(*cmd, {"--resume"});
+        o->state_signature = given_options_signature(*cmd, kRangeOptions);
         return run_render(*o);
     };
 }

@@ -11,7 +11,7 @@
 
 namespace lw::cli {
 
-FrameRange parse_frames(const std::string& text) {
+FrameRange parse_frames(const std::string& text, const std::string& option) {
     FrameRange range;
     const auto colon = text.find(':');
     try {
@@ -26,9 +26,9 @@ FrameRange parse_frames(const std::string& text) {
             if (used != text.size() - colon - 1) throw 0;
         }
     } catch (...) {
-        throw usage_error("--frames: expected A:B (inclusive) or N, got \"" + text + "\"");
+        throw usage_error(option + ": expected A:B (inclusive) or N, got \"" + text + "\"");
     }
-    if (range.last < range.first) throw usage_error("--frames: " + text + " ends before it starts");
+    if (range.last < range.first) throw usage_error(option + ": " + text + " ends before it starts");
     return range;
 }
 
@@ -115,12 +115,13 @@ int interrupted(int frame, int first) {
 }
 
 // --resume: the first frame still to render (the state restored), or past the range.
-int resume_point(const std::string& signature, const FrameFiles& files, FrameRange range, SceneSession& session) {
-    int first_missing = range.first;
-    while (first_missing <= range.last && std::filesystem::exists(files.out_dir / frame_name(first_missing, "png")))
+int resume_point(const std::string& signature, const FrameFiles& files, FrameRange range, FrameRange part,
+                 SceneSession& session) {
+    int first_missing = part.first;
+    while (first_missing <= part.last && std::filesystem::exists(files.out_dir / frame_name(first_missing, "png")))
         ++first_missing;
-    if (first_missing > range.last || first_missing == range.first) return first_missing;
-    const std::filesystem::path state_path = files.out_dir / ".linework-state";
+    if (first_missing > part.last || first_missing == part.first) return first_missing;
+    const std::filesystem::path& state_path = files.progress_state;
     const RenderState state = read_render_state(state_path);
     if (state.signature != signature)
         throw Error(state_path.string() + ": written by a render with other options; rerun that command "
@@ -129,7 +130,7 @@ int resume_point(const std::string& signature, const FrameFiles& files, FrameRan
         throw Error(state_path.string() + ": holds the state after frame " + std::to_string(state.frame) +
                     ", but the first missing frame is " + std::to_string(first_missing));
     session.restore({frame_time(first_missing - 1, range, session.desc().animation.fps).seconds, state.snapshot});
-    std::printf("resuming at frame %d (frames %d to %d already written)\n", first_missing, range.first, first_missing - 1);
+    std::printf("resuming at frame %d (frames %d to %d already written)\n", first_missing, part.first, first_missing - 1);
     return first_missing;
 }
 

@@ -13,7 +13,8 @@
 namespace lw::cli {
 
 // "A:B" (inclusive) or "N" (one frame); a usage error otherwise.
-[[nodiscard]] FrameRange parse_frames(const std::string& text);
+// `option` names the flag in the message.
+[[nodiscard]] FrameRange parse_frames(const std::string& text, const std::string& option = "--frames");
 // frame_0007.png
 [[nodiscard]] std::string frame_name(int frame, const char* extension);
 
@@ -23,6 +24,7 @@ struct FrameFiles {
     std::string dump_paths;  // --dump-paths folder
     bool exr = false;
     bool sequence = false;
+    std::filesystem::path progress_state;  // what --resume goes on from (render_state.h)
 };
 
 // Makes the output folder and the dump folder (when asked for); errors name them.
@@ -35,12 +37,14 @@ void write_frame_files(const FrameFiles& files, const SceneSession& session, con
 // One line per frame of a single-frame render: time, GPU passes, lines, files written.
 void print_frame_report(const FrameFiles& files, const SceneSession& session, const Frame& frame, int f);
 
-// --resume: the first frame still to render, its state restored into `session` (past the
-// range when every frame is there). `signature`: the options that shape the frames.
+// --resume: the first frame of `part` still to render, its state restored into `session`
+// from files.progress_state (past the part when every frame is there). `signature`: the
+// options that shape the frames; `range`: the whole range (the camera path's).
 [[nodiscard]] int resume_point(const std::string& signature, const FrameFiles& files, FrameRange range,
-                               SceneSession& session);
+                               FrameRange part, SceneSession& session);
 
-// After Ctrl-C: says what was written and how to go on; returns 130.
+// After Ctrl-C or SIGTERM: says what was written and how to go on (frame < first: nothing
+// written); returns 130.
 int interrupted(int frame, int first);
 
 }  // namespace lw::cli

@@ -11,7 +11,8 @@ namespace lw::cli {
 
 namespace {
 
-constexpr char kMagic[8] = {'L', 'W', 'S', 'T', 'A', 'T', 'E', '2'}; // 2: one tracker per line set;
+// 2: one tracker per line set; 3: the line mesh's pose.
+constexpr char kMagic[8] = {'L', 'W', 'S', 'T', 'A', 'T', 'E', '3'};
 
 class Writer {
 public:
@@ -87,6 +88,7 @@ void write_render_state(const std::filesystem::path& path, const RenderState& st
     w.put(uint32_t(state.signature.size()));
     w.put_bytes(state.signature.data(), state.signature.size());
     w.put(int32_t(state.frame));
+    w.put(state.pose_seconds);
     w.put(uint32_t(state.snapshot.sets.size()));
     for (const auto& set : state.snapshot.sets) put_state(w, set);
     w.put(uint32_t(state.snapshot.layers.size()));
@@ -105,11 +107,14 @@ RenderState read_render_state(const std::filesystem::path& path) {
     Reader r(std::vector<char>(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()), path.string());
     char magic[sizeof(kMagic)];
     r.get_bytes(magic, sizeof(magic));
+    if (std::memcmp(magic, kMagic, 7) == 0 && magic[7] != kMagic[7])
+        throw Error(path.string() + ": a render state of another linework version; remove it to start over");
     if (std::memcmp(magic, kMagic, sizeof(kMagic)) != 0) throw Error(path.string() + ": not a linework render state");
     RenderState state;
     state.signature.resize(r.count(1));
     r.get_bytes(state.signature.data(), state.signature.size());
     state.frame = r.get<int32_t>();
+    state.pose_seconds = r.get<float>();
     const uint32_t sets = r.count(1);
     for (uint32_t i = 0; i < sets; ++i) state.snapshot.sets.push_back(get_state(r));
     const uint32_t layers = r.count(1);

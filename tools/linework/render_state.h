@@ -1,9 +1,10 @@
 // tools/linework/render_state.h — what `linework render --resume` needs to go on where an
 // interrupted sequence stopped, and files that are never seen half-written.
 //
-// OUT/.linework-state (binary, rewritten after every frame): the command's signature (its
-// options, so that a different render does not resume from it), the last frame written,
-// and the coherent parameterization's state after it (FrameRenderer::coherence_snapshot:
+// OUT/.linework-state (binary, rewritten after every frame; .linework-state-C:D for a
+// --part), and a farm's DIR/state_NNNN.lwstate (--save-states): the command's signature
+// (its options, so that a different render does not resume from it), the last frame
+// drawn, the pose the line mesh was built in, and the coherent parameterization's state after it (FrameRenderer::coherence_snapshot:
 // per tracker, the last splat's sprites and camera — tens to hundreds of kB).
 #pragma once
 
@@ -17,7 +18,8 @@ namespace lw::cli {
 
 struct RenderState {
     std::string signature;
-    int frame = 0;
+    int frame = 0;              // the last frame drawn: the state is the one after it
+    float pose_seconds = 0.0f;  // the pose the render's line mesh was built in
     FrameRenderer::CoherenceSnapshot snapshot;
 };
 

@@ -1,0 +1,190 @@
+// `linework farm SCENE -o DIR --frames A:B --chunk N [--exact | --warmup K]` — a shot cut
+// into tasks for a render farm (farm_plan.h), and `linework farm status DIR`: which frames
+// are finished, missing, or left by a failed task.
+#include <cstdio>
+#include <fstream>
+#include <memory>
+
+#include "commands.h"
+#include "farm_plan.h"
+#include "render_options.h"
+#include "render_output.h"
+
+namespace lw::cli {
+
+namespace {
+
+struct FarmOptions {
+    RenderOptions render;  // the frame options handed on to every task
+    std::string dir, frames, status_dir;
+    int chunk = 0, warmup = -1, throttle = 0, cpus_per_task = 1;
+    bool exact = false;
+};
+
+// The options `farm` has itself: not handed on.
+const std::vector<std::string> kFarmOwn = {"--output", "--frames", "--chunk", "--exact",
+                                           "--warmup", "--throttle", "--cpus-per-task"};
+
+std::filesystem::path this_binary() {
+    std::error_code ec;
+    const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+    if (ec) throw Error("farm: cannot find the linework binary (/proc/self/exe: " + ec.message() + ")");
+    return exe;
+}
+
+int run_farm(const FarmOptions& o, const CLI::App& cmd) {
+    if (o.dir.empty()) throw usage_error("farm: --output (-o) DIR is required");
+    if (o.frames.empty()) throw usage_error("farm: --frames A:B is required (the shot)");
+    if (o.chunk < 1) throw usage_error("farm: --chunk N (frames per task, 1 or more) is required");
+    if (o.exact == (o.warmup >= 0)) throw usage_error("farm: choose --exact or --warmup K (one of them)");
+    if (o.throttle < 0) throw usage_error("--throttle: must be 0 (no limit) or more");
+    if (o.cpus_per_task < 1) throw usage_error("--cpus-per-task: must be 1 or more");
+    FarmRequest request{.linework = this_binary(),
+                        .dir = std::filesystem::absolute(o.dir).lexically_normal(),
+                        .working_dir = std::filesystem::current_path(),
+                        .arguments = given_arguments(cmd, kFarmOwn),
+                        .frames = parse_frames(o.frames),
+                        .chunk = o.chunk,
+                        .exact = o.exact,
+                        .warmup = std::max(o.warmup, 0)};
+    if (!std::filesystem::exists(o.render.scene.input))
+        throw Error(o.render.scene.input + ": no such scene file or model");
+    const FarmPlan plan = plan_farm(request);
+    for (const std::filesystem::path& d : {plan.request.dir, plan.logs()}) {
+        std::error_code ec;
+        std::filesystem::create_directories(d, ec);
+        if (ec) throw Error(d.string() + ": cannot create (" + ec.message() + ")");
+    }
+    const std::filesystem::path plan_file = plan.request.dir / "plan.json";
+    {
+        std::ofstream out(plan_file);
+        if (!out || !(out << plan_json(plan).dump(2) << "\n") || !out.flush())
+            throw Error(plan_file.string() + ": cannot write");
+    }
+    write_slurm_scripts(plan, o.throttle, o.cpus_per_task);
+    const int chunks = int(plan.phases.back().tasks.size());
+    std::printf("shot: frames %d to %d in %d chunk(s) of %d, %s\n", request.frames.first, request.frames.last, chunks,
+                request.chunk,
+                o.exact ? "exact (a state phase first)"
+                        : ("each after " + std::to_string(request.warmup) + " warm-up frames").c_str());
+    for (const FarmPhase& phase : plan.phases)
+        std::printf("phase %s: %zu task(s)\n", phase.name.c_str(), phase.tasks.size());
+    std::printf("wrote %s\n", plan_file.string().c_str());
+    std::printf("wrote %s/slurm/submit.sh (run it to submit; then: linework farm status %s)\n",
+                plan.request.dir.string().c_str(), plan.request.dir.string().c_str());
+    return 0;
+}
+
+// "3-5, 9" from a sorted list of frames.
+std::string frame_list(const std::vector<int>& frames) {
+    std::string text;
+    for (size_t i = 0; i < frames.size();) {
+        size_t j = i;
+        while (j + 1 < frames.size() && frames[j + 1] == frames[j] + 1) ++j;
+        if (!text.empty()) text += ", ";
+        text += std::to_string(frames[i]) + (j > i ? "-" + std::to_string(frames[j]) : "");
+        i = j + 1;
+    }
+    return text;
+}
+
+// The last exit status a task's Slurm script recorded (-1: it has not run under it).
+int recorded_exit(const FarmPlan& plan, const std::string& id) {
+    std::ifstream in(plan.logs() / (id + ".rc"));
+    int rc = -1;
+    if (in >> rc) return rc;
+    return -1;
+}
+
+std::filesystem::path state_path(const FarmPlan& plan, int start) {
+    char name[32];
+    std::snprintf(name, sizeof name, "state_%04d.lwstate", start);
+    return plan.states() / name;
+}
+
+// One line per task; returns whether it is finished (every frame, or every state, there).
+bool report_task(const FarmPlan& plan, const FarmPhase& phase, size_t index, std::vector<int>& missing_frames,
+                 int& failed) {
+    const FarmRequest& r = plan.request;
+    const FarmTask& task = phase.tasks[index];
+    std::vector<int> missing;
+    int wanted = 0;
+    if (phase.name == "state") {
+        for (int start = r.frames.first + r.chunk; start <= task.frames.last + 1; start += r.chunk, ++wanted)
+            if (!std::filesystem::exists(state_path(plan, start))) missing.push_back(start);
+    } else {
+        for (int f = task.frames.first; f <= task.frames.last; ++f, ++wanted)
+            if (!std::filesystem::exists(plan.output() / frame_name(f, "png"))) missing.push_back(f);
+        missing_frames.insert(missing_frames.end(), missing.begin(), missing.end());
+    }
+    const int rc = recorded_exit(plan, task.id);
+    const bool task_failed = !missing.empty() && rc > 0;
+    failed += task_failed;
+    std::printf("  %-12s frames %d-%d: ", task.id.c_str(), task.frames.first, task.frames.last);
+    if (missing.empty()) {
+        std::printf("finished\n");
+        return true;
+    }
+    std::printf("%d of %d %s written, missing %s", wanted - int(missing.size()), wanted,
+                phase.name == "state" ? "states (at chunk starts)" : "frames", frame_list(missing).c_str());
+    if (task_failed)
+        std::printf("; failed (exit %d, see %s)", rc,
+                    (plan.logs() / (phase.name + "_" + std::to_string(index) + ".log")).string().c_str());
+    std::printf("\n");
+    return false;
+}
+
+int run_status(const std::string& dir) {
+    const FarmPlan plan = read_plan(dir);
+    const FarmRequest& r = plan.request;
+    std::printf("shot: frames %d to %d, chunks of %d, %s; frames in %s\n", r.frames.first, r.frames.last, r.chunk,
+                r.exact ? "exact" : ("warm-up " + std::to_string(r.warmup)).c_str(), plan.output().string().c_str());
+    std::vector<int> missing;
+    int failed = 0;
+    for (const FarmPhase& phase : plan.phases) {
+        std::printf("phase %s:\n", phase.name.c_str());
+        for (size_t t = 0; t < phase.tasks.size(); ++t) report_task(plan, phase, t, missing, failed);
+    }
+    const int total = r.frames.last - r.frames.first + 1;
+    std::printf("frames: %d of %d finished", total - int(missing.size()), total);
+    if (!missing.empty()) std::printf("; missing %s", frame_list(missing).c_str());
+    if (failed) std::printf("; %d task(s) failed", failed);
+    std::printf("\n");
+    return missing.empty() ? 0 : 3;
+}
+
+}  // namespace
+
+Runner add_farm_command(CLI::App& app) {
+    auto o = std::make_shared<FarmOptions>();
+    CLI::App* cmd = app.add_subcommand(
+        "farm",
+        "Cut a shot into tasks for a render farm: DIR/plan.json (the tasks, plain `linework render` command lines, "
+        "and their dependencies) and DIR/slurm/submit.sh (one Slurm job array per phase).\n"
+        "--exact: a first task runs only the temporal state through the shot and saves it at each chunk start; "
+        "the chunks then restore it and give frames identical to one render of the whole range.\n"
+        "--warmup K: one phase; each chunk draws K frames before its own (close to, not equal to, one render).\n"
+        "Frames go to DIR/frames, logs to DIR/logs. Takes render's options for the frames.");
+    cmd->positionals_at_end(false);
+    add_frame_options(cmd, o->render);
+    cmd->get_option("input")->required(false);  // `farm status DIR` has none; checked below
+    cmd->add_option("-o,--output", o->dir, "Farm folder: plan.json, slurm/, frames/, states/, logs/");
+    cmd->add_option("--frames", o->frames, "The shot, A:B inclusive");
+    cmd->add_option("--chunk", o->chunk, "Frames per task");
+    cmd->add_flag("--exact", o->exact, "Frames identical to one render of the range (a state phase first)");
+    cmd->add_option("--warmup", o->warmup, "Each chunk draws K frames before its own, unwritten (no state phase)");
+    cmd->add_option("--throttle", o->throttle, "At most N tasks of a phase at once (Slurm --array %N; 0: no limit)");
+    cmd->add_option("--cpus-per-task", o->cpus_per_task, "CPUs Slurm gives each task (default 1)");
+
+    CLI::App* status = cmd->add_subcommand("status", "List a farm folder's finished, missing and failed frames "
+                                                     "(exit 0 when every frame is there, 3 when some are missing)");
+    status->add_option("dir", o->status_dir, "Farm folder (made by linework farm)")->required();
+    cmd->require_subcommand(0, 1);
+    return [o, cmd, status] {
+        if (status->parsed()) return run_status(o->status_dir);
+        if (o->render.scene.input.empty()) throw usage_error("farm: a scene file or model is required");
+        return run_farm(*o, *cmd);
+    };
+}
+
+}  // namespace lw::cli

@@ -1,0 +1,50 @@
+// tools/linework/render_options.h — the options of `linework render`, split in two: those
+// that shape the frames (the scene, camera, style, lines, dumps) and those that only choose
+// which frames are drawn and where they go (output folder, range, part, warm-up, saved
+// states). `linework farm` takes the first kind as they are and hands them on to every task.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "scene_options.h"
+
+namespace lw::cli {
+
+struct RenderOptions {
+    SceneOptions scene;
+    // Frame-shaping (add_frame_options).
+    std::string eye, target, up, shading, svg, hidden, dump_paths;
+    std::optional<float> fov, orbit;
+    bool exr = false, lines_only = false, no_lines = false;
+    // Range and output (registered by `render` only).
+    std::string output, frames, part, save_states, start_state;
+    bool resume = false, state_only = false;
+    int warmup = 0, chunk = 0;
+    // The options as given, less --resume: what a resumed run must repeat (--resume checks it).
+    std::string signature;
+    // The options that shape the temporal state, less range and output: what a state saved
+    // by --save-states must have been saved with to start another command (--start-state).
+    std::string state_signature;
+};
+
+// The scene options and every option that shapes the frames, on `cmd` (render and farm).
+void add_frame_options(CLI::App* cmd, RenderOptions& o);
+
+// Options of `cmd` that were given, as "--name=v1;v2;\n" lines in registration order (so
+// the order on the command line does not matter), leaving out those named in `except`.
+[[nodiscard]] std::string given_options_signature(const CLI::App& cmd, const std::vector<std::string>& except);
+
+// The given options of `cmd` again as arguments (the positional first), leaving out those
+// named in `except`: what `farm` puts on each task's command line.
+[[nodiscard]] std::vector<std::string> given_arguments(const CLI::App& cmd, const std::vector<std::string>& except);
+
+// Range and output options: not part of a saved state's signature.
+inline const std::vector<std::string> kRangeOptions = {"--output", "--frames",      "--part",       "--warmup",
+                                                       "--resume", "--state-only",  "--save-states", "--chunk",
+                                                       "--start-state", "--exr",   "--svg"};
+
+}  // namespace lw::cli
