@@ -8,6 +8,16 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 bash tools/bootstrap.sh
+# The farm test's scheduler: a one-node Slurm started and stopped by the test (tests/farm).
+test_packages=(slurm-wlm munge)
+for p in "${test_packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    echo "test: installing ${test_packages[*]}"
+    apt-get update -q
+    DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends "${test_packages[@]}"
+    break
+  fi
+done
 ctest --test-dir build --output-on-failure -j"$(nproc)"
 [ "${1:-}" = "--quick" ] && exit 0
 

@@ -7,12 +7,16 @@
 #include <utility>
 #include <vector>
 
+#include <unistd.h>
+
 #include "commands.h"
 #include "core/error.h"
 #include "core/memory.h"
 
 int main(int argc, char** argv) {
     lw::keep_freed_memory();  // before any thread: lavapipe reallocates megabytes every frame
+    // Line by line into a log (a farm task's): a task killed by SIGKILL keeps what it printed.
+    if (!isatty(fileno(stdout))) std::setvbuf(stdout, nullptr, _IOLBF, 0);
     CLI::App app{"linework — real-time line stylization on Vulkan.\n"
                  "Renders glTF models and scene files headlessly (Mesa lavapipe or a GPU), or in a window (view)."};
     app.require_subcommand(1);

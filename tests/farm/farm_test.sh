@@ -1,0 +1,85 @@
+#!/usr/bin/env bash
+# A shot through a real Slurm (the one-node cluster of slurm.sh, two CPUs, on loopback):
+#  1. --exact, 24 frames of an orbit with SLAM strokes in 4 chunks: every frame identical to
+#     one render of the range (linework diff, max error 0), although one chunk's linework is
+#     SIGKILLed mid-chunk (its task runs again and resumes): every frame there, none
+#     half-written;
+#  2. --warmup 8: each chunk's first frame's phase error against the one render, reported,
+#     and under the README's bound (coherence-report --against --max-p90).
+# Usage: farm_test.sh LINEWORK_BINARY SOURCE_DIR
+set -euo pipefail
+linework=$1 src=$2
+here=$(cd "$(dirname "$0")" && pwd)
+# Short: the munge socket's path must stay under 108 bytes.
+work=$(mktemp -d /tmp/lw-farm.XXXXXX)
+# LW_FARM_KEEP=1 keeps the folder (logs, frames) for a look after a failure.
+cleanup() { bash "$here/slurm.sh" stop "$work/slurm" || true; [[ -n ${LW_FARM_KEEP:-} ]] || rm -rf "$work"; }
+trap cleanup EXIT
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+eval "$(bash "$here/slurm.sh" start "$work/slurm")"
+shot=("$src/tests/data/models/spot/spot.glb" --device cpu --size 160x120 --orbit 90 --slam "$src/scenes/slams/dots.exr")
+
+echo "== one render of the range (the reference)"
+"$linework" render "${shot[@]}" --frames 0:23 -o "$work/one" --dump-paths "$work/one_dumps" > "$work/one.log"
+
+# Waits until none of the jobs named is pending or running (at most $2 seconds).
+wait_jobs() {
+  local jobs=$1 limit=$2 t
+  for ((t = 0; t < limit * 10; t++)); do
+    [[ -z $(squeue -h -j "$jobs" -t PD,R,CG,CF,S -o %i 2>/dev/null) ]] && return 0
+    sleep 0.1
+  done
+  squeue -t all >&2
+  fail "jobs $jobs still queued after $limit s"
+}
+
+submit() {
+  local out
+  out=$(bash "$1/slurm/submit.sh")
+  echo "$out" >&2
+  echo "$out" | sed -n 's/.*job \([0-9]*\).*/\1/p' | paste -sd, -
+}
+
+echo "== --exact through Slurm, one chunk's process killed mid-chunk"
+"$linework" farm "${shot[@]}" --frames 0:23 --chunk 6 --exact -o "$work/exact"
+jobs=$(submit "$work/exact")
+# Chunk 2 (frames 12-17): its linework is stopped (SIGSTOP) as soon as it runs, then let go in
+# 10 ms slices until its first frame is on disk, so that the SIGKILL lands mid-chunk
+# whatever the machine's speed; its job script then runs the task again.
+chunk_frames() { ls "$work/exact/frames" 2>/dev/null | grep -c '^frame_001[2-7].png$' || true; }
+pid=
+for ((t = 0; t < 3000; t++)); do
+  pid=$(pgrep -f -- "--part 12:17" | head -n1 || true)
+  [[ -z $pid ]] || break
+  sleep 0.01
+done
+[[ -n $pid ]] || fail "never saw chunk 12-17 running"
+kill -STOP "$pid"
+for ((t = 0; t < 3000 && $(chunk_frames) == 0; t++)); do
+  kill -CONT "$pid"; sleep 0.01; kill -STOP "$pid"
+done
+written=$(chunk_frames)
+kill -KILL "$pid"
+echo "killed chunk 12-17 (pid $pid) with $written of its 6 frames written"
+((written >= 1 && written < 6)) || fail "the kill did not land mid-chunk ($written of 6 frames written)"
+wait_jobs "$jobs" 300
+"$linework" farm status "$work/exact" || fail "farm status: the shot is not complete"
+grep -q "ended by signal 9; running it again" "$work/exact/logs/frames_2.log" || fail "the killed task was not run again"
+grep -q "resuming at frame" "$work/exact/logs/frames_2.log" || fail "the re-run did not resume"
+if find "$work/exact" -name '*.partial*' | grep -q .; then fail "half-written files left"; fi
+for f in $(seq -f %04g 0 23); do
+  "$linework" diff "$work/one/frame_$f.png" "$work/exact/frames/frame_$f.png" --max-error 0 > "$work/diff.log" ||
+    { cat "$work/diff.log"; fail "frame $f differs from one render"; }
+done
+echo "exact: 24 frames identical to one render (max error 0)"
+
+echo "== --warmup 8 through Slurm"
+"$linework" farm "${shot[@]}" --frames 0:23 --chunk 6 --warmup 8 -o "$work/warm" --dump-paths "$work/warm_dumps"
+jobs=$(submit "$work/warm")
+wait_jobs "$jobs" 300
+"$linework" farm status "$work/warm" || fail "farm status: the warm-up shot is not complete"
+# The README's bound for the 90th percentile of a chunk's first frame (README "Render farm").
+"$linework" coherence-report "$work/warm_dumps" --against "$work/one_dumps" --max-p90 0.45 |
+  grep -E "frame (0|6|12|18):|with p90" || fail "a chunk's first frame is farther from one render than the README says"
+echo "PASS"

@@ -1,0 +1,180 @@
+// `linework farm`: the plan (every frame in exactly one task, dependencies acyclic), the
+// temporal state run alone (its states equal those of a full render), the plan's tasks run
+// here in order giving the frames of one render, and the errors. The same shot through a
+// real Slurm is tests/farm/farm_test.sh.
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "test_support.h"
+
+namespace lw {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string frame_png(int f) {
+    char name[32];
+    std::snprintf(name, sizeof(name), "frame_%04d.png", f);
+    return name;
+}
+
+std::string read_bytes(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+nlohmann::json read_plan(const fs::path& dir) {
+    std::ifstream in(dir / "plan.json");
+    return nlohmann::json::parse(in);
+}
+
+const std::string kShot = test::quote(test::data_dir() / "models/spot/spot.glb") +
+                          " --device cpu --size 96x72 --orbit 60 --slam " +
+                          test::quote(test::source_dir() / "scenes/slams/dots.exr");
+
+// Every frame of the range in exactly one task of the last phase; each task needs only
+// tasks of earlier phases (so the dependencies are acyclic); the commands run this binary.
+void check_plan(const nlohmann::json& plan, int first, int last) {
+    std::map<std::string, size_t> phase_of;
+    std::map<int, int> writers;
+    const auto& phases = plan.at("phases");
+    for (size_t p = 0; p < phases.size(); ++p)
+        for (const auto& task : phases[p].at("tasks")) {
+            const std::string id = task.at("id");
+            EXPECT_FALSE(phase_of.count(id)) << "task id " << id << " twice";
+            phase_of[id] = p;
+            for (const std::string after : task.at("after")) {
+                ASSERT_TRUE(phase_of.count(after)) << id << " needs " << after << ", not an earlier task";
+                EXPECT_LT(phase_of[after], p) << id << " needs " << after << " of its own phase";
+            }
+            EXPECT_EQ(task.at("command").at(0).get<std::string>(), fs::canonical(LW_LINEWORK_EXE).string());
+            if (p + 1 == phases.size())
+                for (int f = task.at("frames").at(0); f <= task.at("frames").at(1).get<int>(); ++f) ++writers[f];
+        }
+    for (int f = first; f <= last; ++f) EXPECT_EQ(writers[f], 1) << "frame " << f << " is written by " << writers[f];
+    EXPECT_EQ(writers.size(), size_t(last - first + 1));
+}
+
+TEST(Farm, PlanHasEveryFrameInExactlyOneTaskAndAcyclicDependencies) {
+    const fs::path dir = test::temp_dir();
+    for (const std::string mode : {"--exact", "--warmup 3"}) {
+        const fs::path farm = dir / (mode == "--exact" ? "exact" : "warmup");
+        const auto made = test::run_linework("farm " + kShot + " --frames 3:25 --chunk 5 " + mode + " -o " +
+                                             test::quote(farm));
+        ASSERT_EQ(made.exit_code, 0) << made.output;
+        const nlohmann::json plan = read_plan(farm);
+        check_plan(plan, 3, 25);
+        const auto& chunks = plan.at("phases").back().at("tasks");
+        ASSERT_EQ(chunks.size(), 5u);  // 3-7, 8-12, 13-17, 18-22, 23-25
+        EXPECT_EQ(chunks.back().at("frames"), nlohmann::json({23, 25}));
+        EXPECT_TRUE(fs::exists(farm / "slurm/submit.sh"));
+        if (mode == "--exact") {
+            ASSERT_EQ(plan.at("phases").size(), 2u);
+            // The state task runs up to the last chunk's start and writes its state there.
+            EXPECT_EQ(plan.at("phases")[0].at("tasks")[0].at("frames"), nlohmann::json({3, 22}));
+            const std::string last = chunks.back().at("shell");
+            EXPECT_NE(last.find("--start-state " + (farm / "states/state_0023.lwstate").string()), std::string::npos)
+                << last;
+        } else {
+            ASSERT_EQ(plan.at("phases").size(), 1u);
+            // Never warmed up before the shot's first frame.
+            EXPECT_EQ(chunks[0].at("shell").get<std::string>().find("--warmup"), std::string::npos);
+            EXPECT_NE(chunks[1].at("shell").get<std::string>().find("--warmup 3"), std::string::npos);
+        }
+    }
+}
+
+TEST(Farm, StateOnlyRunSavesTheStatesOfAFullRender) {
+    const fs::path dir = test::temp_dir();
+    const std::string range = " --frames 0:9 --save-states ";
+    const auto full = test::run_linework("render " + kShot + range + test::quote(dir / "full") + " --chunk 5 -o " +
+                                         test::quote(dir / "frames"));
+    ASSERT_EQ(full.exit_code, 0) << full.output;
+    const auto alone = test::run_linework("render " + kShot + range + test::quote(dir / "alone") +
+                                          " --chunk 5 --state-only");
+    ASSERT_EQ(alone.exit_code, 0) << alone.output;
+    EXPECT_NE(alone.output.find("wrote 1 states"), std::string::npos) << alone.output;
+    const std::string a = read_bytes(dir / "full/state_0005.lwstate"), b = read_bytes(dir / "alone/state_0005.lwstate");
+    EXPECT_GT(a.size(), 1000u);
+    EXPECT_TRUE(a == b) << "the state run alone differs from the full render's";
+}
+
+TEST(Farm, ExactPlanRunHereEqualsOneRender) {
+    const fs::path dir = test::temp_dir();
+    const auto one = test::run_linework("render " + kShot + " --frames 0:11 -o " + test::quote(dir / "one"));
+    ASSERT_EQ(one.exit_code, 0) << one.output;
+    const auto made = test::run_linework("farm " + kShot + " --frames 0:11 --chunk 4 --exact -o " +
+                                         test::quote(dir / "farm"));
+    ASSERT_EQ(made.exit_code, 0) << made.output;
+    const nlohmann::json plan = read_plan(dir / "farm");
+    // Last chunk first: a task needing the state phase must fail cleanly without it.
+    const std::string last = plan.at("phases").back().at("tasks").back().at("shell");
+    const auto early = test::run_command("LINEWORK_VALIDATION=1 " + last + " 2>&1");
+    EXPECT_EQ(early.exit_code, 1) << early.output;
+    EXPECT_NE(early.output.find("state_0008.lwstate: no render state"), std::string::npos) << early.output;
+    for (const auto& phase : plan.at("phases"))
+        for (const auto& task : phase.at("tasks")) {
+            const auto r = test::run_command("LINEWORK_VALIDATION=1 " + task.at("shell").get<std::string>() + " 2>&1");
+            ASSERT_EQ(r.exit_code, 0) << task.at("id") << ": " << r.output;
+        }
+    for (int f = 0; f <= 11; ++f)
+        EXPECT_TRUE(read_bytes(dir / "one" / frame_png(f)) == read_bytes(dir / "farm/frames" / frame_png(f)))
+            << "frame " << f << " differs from one render";
+    // A task run again finds its frames there (idempotent), and status says the shot is done.
+    const auto again = test::run_command("LINEWORK_VALIDATION=1 " +
+                                         plan.at("phases").back().at("tasks")[1].at("shell").get<std::string>() + " 2>&1");
+    EXPECT_EQ(again.exit_code, 0) << again.output;
+    EXPECT_NE(again.output.find("all frames 4 to 7 are already in"), std::string::npos) << again.output;
+    const auto status = test::run_linework("farm status " + test::quote(dir / "farm"));
+    EXPECT_EQ(status.exit_code, 0) << status.output;
+    EXPECT_NE(status.output.find("frames: 12 of 12 finished"), std::string::npos) << status.output;
+    fs::remove(dir / "farm/frames" / frame_png(5));
+    const auto missing = test::run_linework("farm status " + test::quote(dir / "farm"));
+    EXPECT_EQ(missing.exit_code, 3) << missing.output;
+    EXPECT_NE(missing.output.find("3 of 4 frames written, missing 5"), std::string::npos) << missing.output;
+}
+
+TEST(Farm, BadRequestsAreOneClearError) {
+    const fs::path dir = test::temp_dir();
+    const auto neither = test::run_linework("farm " + kShot + " --frames 0:9 --chunk 5 -o " + test::quote(dir / "f"));
+    EXPECT_EQ(neither.exit_code, 2);
+    EXPECT_NE(neither.output.find("choose --exact or --warmup K"), std::string::npos) << neither.output;
+    const auto no_chunk = test::run_linework("farm " + kShot + " --frames 0:9 --exact -o " + test::quote(dir / "f"));
+    EXPECT_EQ(no_chunk.exit_code, 2);
+    EXPECT_NE(no_chunk.output.find("--chunk N"), std::string::npos) << no_chunk.output;
+    const auto no_plan = test::run_linework("farm status " + test::quote(dir));
+    EXPECT_EQ(no_plan.exit_code, 1);
+    EXPECT_NE(no_plan.output.find("plan.json: no farm plan here"), std::string::npos) << no_plan.output;
+    const auto lonely = test::run_linework("render " + kShot + " --frames 0:9 --state-only");
+    EXPECT_EQ(lonely.exit_code, 2);
+    EXPECT_NE(lonely.output.find("--state-only writes nothing but the states"), std::string::npos) << lonely.output;
+    const auto outside = test::run_linework("render " + kShot + " --frames 0:9 --part 5:12 -o " + test::quote(dir / "o"));
+    EXPECT_EQ(outside.exit_code, 2);
+    EXPECT_NE(outside.output.find("--part 5:12 lies outside the range 0:9"), std::string::npos) << outside.output;
+
+    // A state saved with other options, or for another frame, is refused naming the file.
+    ASSERT_EQ(test::run_linework("render " + kShot + " --frames 0:9 --state-only --save-states " +
+                                 test::quote(dir / "s") + " --chunk 5")
+                  .exit_code,
+              0);
+    const std::string state = test::quote(dir / "s/state_0005.lwstate");
+    const auto other = test::run_linework("render " + kShot + " --frames 0:9 --hidden dashed --part 5:9 -o " +
+                                          test::quote(dir / "o") + " --start-state " + state);
+    EXPECT_EQ(other.exit_code, 1);
+    EXPECT_NE(other.output.find("state_0005.lwstate: saved by a render with other options"), std::string::npos)
+        << other.output;
+    const auto wrong = test::run_linework("render " + kShot + " --frames 0:9 --part 6:9 -o " + test::quote(dir / "o") +
+                                          " --start-state " + state);
+    EXPECT_EQ(wrong.exit_code, 1);
+    EXPECT_NE(wrong.output.find("holds the state after frame 4, but this part starts at frame 6"), std::string::npos)
+        << wrong.output;
+}
+
+}  // namespace
+}  // namespace lw
