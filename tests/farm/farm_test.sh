@@ -4,8 +4,8 @@
 #     one render of the range (linework diff, max error 0), although one chunk's linework is
 #     SIGKILLed mid-chunk (its task runs again and resumes): every frame there, none
 #     half-written;
-#  2. --warmup 8: each chunk's first frame's phase error against the one render, reported,
-#     and under the README's bound (coherence-report --against --max-p90).
+#  2. --warmup 8: each chunk's first frame's phase error against the one render reported,
+#     and what warm-up does give checked (below).
 # Usage: farm_test.sh LINEWORK_BINARY SOURCE_DIR
 set -euo pipefail
 linework=$1 src=$2
@@ -79,7 +79,28 @@ echo "== --warmup 8 through Slurm"
 jobs=$(submit "$work/warm")
 wait_jobs "$jobs" 300
 "$linework" farm status "$work/warm" || fail "farm status: the warm-up shot is not complete"
-# The README's bound for the 90th percentile of a chunk's first frame (README "Render farm").
-"$linework" coherence-report "$work/warm_dumps" --against "$work/one_dumps" --max-p90 0.45 |
-  grep -E "frame (0|6|12|18):|with p90" || fail "a chunk's first frame is farther from one render than the README says"
+# Reported: each chunk's first frame against one render. Warm-up gives no bound on the phase
+# (README "Render farm": a chunk's own history sets it, p90 ≈ 0.45 period for any K); what
+# it gives is checked: a chunk no further than K from the shot's start starts where one
+# render does (frames 6-11 identical), and a chunk's first frames slide no more than one
+# render's (first → second frame, worst chunk, within 1.5×).
+"$linework" coherence-report "$work/warm_dumps" --against "$work/one_dumps" | grep -E "against|frame (0|6|12|18):"
+for f in $(seq -f %04g 6 11); do
+  "$linework" diff "$work/one/frame_$f.png" "$work/warm/frames/frame_$f.png" --max-error 0 > /dev/null ||
+    fail "warm-up chunk 6-11 (warmed up from frame 0) differs from one render at frame $f"
+done
+# Median |dt| from frame $2 to $2+1 of dump folder $1.
+slide() {
+  local tmp
+  tmp=$(mktemp -d "$work/slide.XXXX")
+  ln -s "$1/frame_$(printf %04d "$2").json" "$tmp/frame_0000.json"
+  ln -s "$1/frame_$(printf %04d $(($2 + 1))).json" "$tmp/frame_0001.json"
+  "$linework" coherence-report "$tmp" | sed -n 's/.*sliding: median |dt| \([0-9.]*\).*/\1/p' | head -n1
+}
+for c in 12 18; do
+  warm=$(slide "$work/warm_dumps" $c) one=$(slide "$work/one_dumps" $c)
+  echo "sliding from frame $c to $((c + 1)): warm-up chunk $warm, one render $one periods"
+  awk -v w="$warm" -v o="$one" 'BEGIN { exit !(w <= 1.5 * o + 1e-4) }' ||
+    fail "the warm-up chunk at $c still settles (slides $warm against one render's $one)"
+done
 echo "PASS"

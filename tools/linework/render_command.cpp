@@ -132,10 +132,9 @@ int first_frame(const RenderOptions& o, const Shot& shot, const FrameFiles& file
                 const std::optional<RenderState>& start_state, SceneSession& session) {
     const float fps = session.desc().animation.fps;
     if (o.state_only && o.resume) return resume_saved_states(o, shot.range, shot.part, session);
-    if (o.resume) {
-        const int resumed = resume_point(o.signature, files, shot.range, shot.part, session);
-        if (resumed > shot.part.first) return resumed;
-    }
+    if (o.resume)
+        if (const std::optional<int> resumed = resume_point(o.signature, files, shot.range, shot.part, session))
+            return *resumed;
     if (start_state) {
         if (start_state->frame != shot.part.first - 1)
             throw Error(o.start_state + ": holds the state after frame " + std::to_string(start_state->frame) +
@@ -173,6 +172,10 @@ int render_frames(const RenderOptions& o, const Shot& shot, const FrameFiles& fi
     int states = 0;
     for (int f = shot.start; f <= shot.part.last; ++f) {
         const bool write = f >= shot.part.first && !o.state_only;
+        // The state before the part's first frame: from the first PNG on, a state is there
+        // for --resume (render_output.h).
+        if (write && f == shot.part.first && files.sequence)
+            write_render_state(files.progress_state, {o.signature, f - 1, pose_seconds, session.snapshot().coherence});
         const Frame frame = session.frame({.when = frame_time(f, shot.range, fps),
                                            .outputs = {.color = write, .depth = write && o.exr, .draw = !o.state_only},
                                            .seed = uint64_t(f) + 1});

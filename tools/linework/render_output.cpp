@@ -114,24 +114,31 @@ int interrupted(int frame, int first) {
     return 130;
 }
 
-// --resume: the first frame still to render (the state restored), or past the range.
-int resume_point(const std::string& signature, const FrameFiles& files, FrameRange range, FrameRange part,
-                 SceneSession& session) {
+// --resume: the first frame still to render (the state restored), or past the range. The
+// state is written after each frame's PNG (and once before the part's first frame), so a
+// render killed between the two leaves it one frame behind: that frame is drawn again.
+std::optional<int> resume_point(const std::string& signature, const FrameFiles& files, FrameRange range,
+                                FrameRange part, SceneSession& session) {
     int first_missing = part.first;
     while (first_missing <= part.last && std::filesystem::exists(files.out_dir / frame_name(first_missing, "png")))
         ++first_missing;
-    if (first_missing > part.last || first_missing == part.first) return first_missing;
+    if (first_missing == part.first) return std::nullopt;
+    if (first_missing > part.last) return first_missing;
     const std::filesystem::path& state_path = files.progress_state;
     const RenderState state = read_render_state(state_path);
     if (state.signature != signature)
         throw Error(state_path.string() + ": written by a render with other options; rerun that command "
                                           "with --resume, or remove the file to start over");
-    if (state.frame != first_missing - 1)
+    if (state.frame != first_missing - 1 && state.frame != first_missing - 2)
         throw Error(state_path.string() + ": holds the state after frame " + std::to_string(state.frame) +
                     ", but the first missing frame is " + std::to_string(first_missing));
-    session.restore({frame_time(first_missing - 1, range, session.desc().animation.fps).seconds, state.snapshot});
-    std::printf("resuming at frame %d (frames %d to %d already written)\n", first_missing, part.first, first_missing - 1);
-    return first_missing;
+    session.restore({frame_time(state.frame, range, session.desc().animation.fps).seconds, state.snapshot});
+    const int start = state.frame + 1;
+    if (start < first_missing)
+        std::printf("resuming at frame %d (drawn again: it was written, its state was not)\n", start);
+    else
+        std::printf("resuming at frame %d (frames %d to %d already written)\n", start, part.first, start - 1);
+    return start;
 }
 
 }  // namespace lw::cli

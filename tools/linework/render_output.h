@@ -4,6 +4,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include "render/frame_renderer.h"
@@ -38,10 +39,11 @@ void write_frame_files(const FrameFiles& files, const SceneSession& session, con
 void print_frame_report(const FrameFiles& files, const SceneSession& session, const Frame& frame, int f);
 
 // --resume: the first frame of `part` still to render, its state restored into `session`
-// from files.progress_state (past the part when every frame is there). `signature`: the
-// options that shape the frames; `range`: the whole range (the camera path's).
-[[nodiscard]] int resume_point(const std::string& signature, const FrameFiles& files, FrameRange range,
-                               FrameRange part, SceneSession& session);
+// from files.progress_state (past the part when every frame is there; nothing when no frame
+// of the part is written yet). `signature`: the options that shape the frames; `range`: the
+// whole range (the camera path's).
+[[nodiscard]] std::optional<int> resume_point(const std::string& signature, const FrameFiles& files, FrameRange range,
+                                              FrameRange part, SceneSession& session);
 
 // After Ctrl-C or SIGTERM: says what was written and how to go on (frame < first: nothing
 // written); returns 130.
