@@ -118,10 +118,12 @@ TEST(Farm, ExactPlanRunHereEqualsOneRender) {
     const auto early = test::run_command("LINEWORK_VALIDATION=1 " + last + " 2>&1");
     EXPECT_EQ(early.exit_code, 1) << early.output;
     EXPECT_NE(early.output.find("state_0008.lwstate: no render state"), std::string::npos) << early.output;
+    // Each task as a scheduler without our scripts runs it: `farm task DIR PHASE I`.
     for (const auto& phase : plan.at("phases"))
-        for (const auto& task : phase.at("tasks")) {
-            const auto r = test::run_command("LINEWORK_VALIDATION=1 " + task.at("shell").get<std::string>() + " 2>&1");
-            ASSERT_EQ(r.exit_code, 0) << task.at("id") << ": " << r.output;
+        for (size_t i = 0; i < phase.at("tasks").size(); ++i) {
+            const auto r = test::run_linework("farm task " + test::quote(dir / "farm") + " " +
+                                              phase.at("name").get<std::string>() + " " + std::to_string(i));
+            ASSERT_EQ(r.exit_code, 0) << phase.at("tasks")[i].at("id") << ": " << r.output;
         }
     for (int f = 0; f <= 11; ++f)
         EXPECT_TRUE(read_bytes(dir / "one" / frame_png(f)) == read_bytes(dir / "farm/frames" / frame_png(f)))
@@ -148,6 +150,9 @@ TEST(Farm, BadRequestsAreOneClearError) {
     const auto no_chunk = test::run_linework("farm " + kShot + " --frames 0:9 --exact -o " + test::quote(dir / "f"));
     EXPECT_EQ(no_chunk.exit_code, 2);
     EXPECT_NE(no_chunk.output.find("--chunk N"), std::string::npos) << no_chunk.output;
+    const auto no_task = test::run_linework("farm task " + test::quote(dir) + " frames 0");
+    EXPECT_EQ(no_task.exit_code, 1);
+    EXPECT_NE(no_task.output.find("plan.json: no farm plan here"), std::string::npos) << no_task.output;
     const auto no_plan = test::run_linework("farm status " + test::quote(dir));
     EXPECT_EQ(no_plan.exit_code, 1);
     EXPECT_NE(no_plan.output.find("plan.json: no farm plan here"), std::string::npos) << no_plan.output;

@@ -1,9 +1,14 @@
 // `linework farm SCENE -o DIR --frames A:B --chunk N [--exact | --warmup K]` — a shot cut
 // into tasks for a render farm (farm_plan.h), and `linework farm status DIR`: which frames
 // are finished, missing, or left by a failed task.
+#include <algorithm>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <memory>
+
+#include <unistd.h>
 
 #include "commands.h"
 #include "farm_plan.h"
@@ -16,7 +21,8 @@ namespace {
 
 struct FarmOptions {
     RenderOptions render;  // the frame options handed on to every task
-    std::string dir, frames, status_dir;
+    std::string dir, frames, status_dir, task_dir, task_phase;
+    int task_index = -1;
     int chunk = 0, warmup = -1, throttle = 0, cpus_per_task = 1;
     bool exact = false;
 };
@@ -153,6 +159,31 @@ int run_status(const std::string& dir) {
     return missing.empty() ? 0 : 3;
 }
 
+// `farm task DIR PHASE I`: runs task I of the phase in the plan's working folder, in place of
+// this process (its exit code is the task's), so that a scheduler that hands out numbered
+// tasks (OpenCue's frames of a layer, Deadline's frames of a job) needs no script of ours.
+int run_task(const FarmOptions& o) {
+    const FarmPlan plan = read_plan(o.task_dir);
+    const auto phase = std::find_if(plan.phases.begin(), plan.phases.end(),
+                                    [&](const FarmPhase& p) { return p.name == o.task_phase; });
+    if (phase == plan.phases.end())
+        throw usage_error("farm task: the plan in " + o.task_dir + " has no phase \"" + o.task_phase + "\"");
+    if (o.task_index < 0 || size_t(o.task_index) >= phase->tasks.size())
+        throw usage_error("farm task: phase " + o.task_phase + " has tasks 0 to " +
+                          std::to_string(phase->tasks.size() - 1) + ", not " + std::to_string(o.task_index));
+    const FarmTask& task = phase->tasks[size_t(o.task_index)];
+    std::error_code ec;
+    std::filesystem::current_path(plan.request.working_dir, ec);
+    if (ec) throw Error(plan.request.working_dir.string() + ": cannot run the task there (" + ec.message() + ")");
+    std::printf("linework farm: task %s: %s\n", task.id.c_str(), shell_line(task.command).c_str());
+    std::fflush(stdout);
+    std::vector<char*> argv;
+    for (const std::string& a : task.command) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    execv(argv[0], argv.data());
+    throw Error(task.command[0] + ": cannot run (" + std::strerror(errno) + ")");
+}
+
 }  // namespace
 
 Runner add_farm_command(CLI::App& app) {
@@ -179,9 +210,15 @@ Runner add_farm_command(CLI::App& app) {
     CLI::App* status = cmd->add_subcommand("status", "List a farm folder's finished, missing and failed frames "
                                                      "(exit 0 when every frame is there, 3 when some are missing)");
     status->add_option("dir", o->status_dir, "Farm folder (made by linework farm)")->required();
+    CLI::App* task = cmd->add_subcommand("task", "Run task I of a phase of the plan (for schedulers that hand out "
+                                                 "numbered tasks: OpenCue, Deadline; README \"Render farm\")");
+    task->add_option("dir", o->task_dir, "Farm folder (made by linework farm)")->required();
+    task->add_option("phase", o->task_phase, "Phase: state or frames")->required();
+    task->add_option("index", o->task_index, "Task number within the phase, from 0")->required();
     cmd->require_subcommand(0, 1);
-    return [o, cmd, status] {
+    return [o, cmd, status, task] {
         if (status->parsed()) return run_status(o->status_dir);
+        if (task->parsed()) return run_task(*o);
         if (o->render.scene.input.empty()) throw usage_error("farm: a scene file or model is required");
         return run_farm(*o, *cmd);
     };
