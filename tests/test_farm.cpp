@@ -107,12 +107,15 @@ TEST(Farm, StateOnlyRunSavesTheStatesOfAFullRender) {
 
 TEST(Farm, ExactPlanRunHereEqualsOneRender) {
     const fs::path dir = test::temp_dir();
-    const auto one = test::run_linework("render " + kShot + " --frames 0:11 -o " + test::quote(dir / "one"));
+    const auto one = test::run_linework("render " + kShot + " --frames 0:11 -o " + test::quote(dir / "one") +
+                                        " --dump-paths " + test::quote(dir / "one_dumps"));
     ASSERT_EQ(one.exit_code, 0) << one.output;
-    const auto made = test::run_linework("farm " + kShot + " --frames 0:11 --chunk 4 --exact -o " +
-                                         test::quote(dir / "farm"));
+    // --exr=false is given but off: it must not reach the tasks as --exr.
+    const auto made = test::run_linework("farm " + kShot + " --frames 0:11 --chunk 4 --exact --exr=false -o " +
+                                         test::quote(dir / "farm") + " --dump-paths " + test::quote(dir / "dumps"));
     ASSERT_EQ(made.exit_code, 0) << made.output;
     const nlohmann::json plan = read_plan(dir / "farm");
+    for (const std::string a : plan.at("arguments")) EXPECT_NE(a, "--exr");
     // Last chunk first: a task needing the state phase must fail cleanly without it.
     const std::string last = plan.at("phases").back().at("tasks").back().at("shell");
     const auto early = test::run_command("LINEWORK_VALIDATION=1 " + last + " 2>&1");
@@ -128,6 +131,21 @@ TEST(Farm, ExactPlanRunHereEqualsOneRender) {
     for (int f = 0; f <= 11; ++f)
         EXPECT_TRUE(read_bytes(dir / "one" / frame_png(f)) == read_bytes(dir / "farm/frames" / frame_png(f)))
             << "frame " << f << " differs from one render";
+    // The parameterization too: no phase error against one render's dumps, and a nonzero
+    // one against another shot's (the measure can fail).
+    const auto against = test::run_linework("coherence-report " + test::quote(dir / "dumps") + " --against " +
+                                            test::quote(dir / "one_dumps") + " --max-p90 0");
+    EXPECT_EQ(against.exit_code, 0) << against.output;
+    EXPECT_NE(against.output.find("0 frame(s) with p90 over 0 periods"), std::string::npos) << against.output;
+    ASSERT_EQ(test::run_linework("render " + kShot + " --frames 0:11 --param arclength -o " +
+                                 test::quote(dir / "arclength") + " --dump-paths " + test::quote(dir / "arclength_dumps"))
+                  .exit_code,
+              0);
+    const auto other = test::run_linework("coherence-report " + test::quote(dir / "arclength_dumps") + " --against " +
+                                          test::quote(dir / "one_dumps") + " --max-p90 0.01");
+    EXPECT_EQ(other.exit_code, 1) << other.output;
+    EXPECT_NE(other.output.find("OVER THE BOUND"), std::string::npos) << other.output;
+
     // A task run again finds its frames there (idempotent), and status says the shot is done.
     const auto again = test::run_command("LINEWORK_VALIDATION=1 " +
                                          plan.at("phases").back().at("tasks")[1].at("shell").get<std::string>() + " 2>&1");
@@ -136,6 +154,17 @@ TEST(Farm, ExactPlanRunHereEqualsOneRender) {
     const auto status = test::run_linework("farm status " + test::quote(dir / "farm"));
     EXPECT_EQ(status.exit_code, 0) << status.output;
     EXPECT_NE(status.output.find("frames: 12 of 12 finished"), std::string::npos) << status.output;
+    // The same plan again is fine; another shot in the same folder is refused (its tasks
+    // would take these frames for theirs).
+    EXPECT_EQ(test::run_linework("farm " + kShot + " --frames 0:11 --chunk 4 --exact --exr=false -o " +
+                                 test::quote(dir / "farm") + " --dump-paths " + test::quote(dir / "dumps"))
+                  .exit_code,
+              0);
+    const auto replanned = test::run_linework("farm " + kShot + " --frames 0:11 --chunk 4 --exact --hidden faint -o " +
+                                              test::quote(dir / "farm"));
+    EXPECT_EQ(replanned.exit_code, 1) << replanned.output;
+    EXPECT_NE(replanned.output.find("plan.json: the folder holds another shot's plan"), std::string::npos)
+        << replanned.output;
     fs::remove(dir / "farm/frames" / frame_png(5));
     const auto missing = test::run_linework("farm status " + test::quote(dir / "farm"));
     EXPECT_EQ(missing.exit_code, 3) << missing.output;
@@ -147,6 +176,10 @@ TEST(Farm, BadRequestsAreOneClearError) {
     const auto neither = test::run_linework("farm " + kShot + " --frames 0:9 --chunk 5 -o " + test::quote(dir / "f"));
     EXPECT_EQ(neither.exit_code, 2);
     EXPECT_NE(neither.output.find("choose --exact or --warmup K"), std::string::npos) << neither.output;
+    const auto bad_size = test::run_linework("farm " + kShot + " --frames 0:9 --chunk 5 --exact --size 1x1x1 -o " +
+                                             test::quote(dir / "f"));
+    EXPECT_NE(bad_size.exit_code, 0) << "a bad frame option must fail at planning, not on the farm";
+    EXPECT_FALSE(fs::exists(dir / "f/plan.json"));
     const auto no_chunk = test::run_linework("farm " + kShot + " --frames 0:9 --exact -o " + test::quote(dir / "f"));
     EXPECT_EQ(no_chunk.exit_code, 2);
     EXPECT_NE(no_chunk.output.find("--chunk N"), std::string::npos) << no_chunk.output;

@@ -50,18 +50,30 @@ TEST(Resume, InterruptedAndResumedSequenceEqualsAnUnbrokenOne) {
     for (const auto& entry : fs::directory_iterator(broken))
         EXPECT_EQ(entry.path().string().find(".partial"), std::string::npos) << entry.path();
 
-    // A render killed after a frame's PNG and before its state (SIGKILL between the two
-    // renames) leaves the state one frame behind: that frame is drawn again.
-    fs::copy_file(dir / "whole" / frame_png(written), broken / frame_png(written));
+    const fs::path interrupted_state = dir / "interrupted-state";
+    fs::copy_file(broken / ".linework-state", interrupted_state);
     const auto resumed = test::run_linework("render " + args + " -o " + test::quote(broken) + " --resume");
     ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
-    EXPECT_NE(resumed.output.find("resuming at frame " + std::to_string(written) + " (drawn again"), std::string::npos)
+    EXPECT_NE(resumed.output.find("resuming at frame " + std::to_string(written) + " (frames 0 to"), std::string::npos)
         << resumed.output;
-    for (int f = 0; f <= last; ++f) {
-        const ImageRGBA8 a = read_image_rgba8(dir / "whole" / frame_png(f));
-        const ImageRGBA8 b = read_image_rgba8(broken / frame_png(f));
-        EXPECT_TRUE(a.pixels == b.pixels) << "frame " << f << " differs from the unbroken run";
-    }
+    const auto same_as_whole = [&] {
+        for (int f = 0; f <= last; ++f) {
+            const ImageRGBA8 a = read_image_rgba8(dir / "whole" / frame_png(f));
+            const ImageRGBA8 b = read_image_rgba8(broken / frame_png(f));
+            EXPECT_TRUE(a.pixels == b.pixels) << "frame " << f << " differs from the unbroken run";
+        }
+    };
+    same_as_whole();
+
+    // A render killed after a frame's PNG and before its state (SIGKILL between the two
+    // renames) leaves the state one frame behind: that frame is drawn again.
+    for (int f = written + 1; f <= last; ++f) fs::remove(broken / frame_png(f));
+    fs::copy_file(interrupted_state, broken / ".linework-state", fs::copy_options::overwrite_existing);
+    const auto lagging = test::run_linework("render " + args + " -o " + test::quote(broken) + " --resume");
+    ASSERT_EQ(lagging.exit_code, 0) << lagging.output;
+    EXPECT_NE(lagging.output.find("resuming at frame " + std::to_string(written) + " (drawn again"), std::string::npos)
+        << lagging.output;
+    same_as_whole();
 
     // Resuming with other options is refused, naming the state file.
     fs::remove(broken / frame_png(last));

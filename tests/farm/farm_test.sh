@@ -17,7 +17,9 @@ cleanup() { bash "$here/slurm.sh" stop "$work/slurm" || true; [[ -n ${LW_FARM_KE
 trap cleanup EXIT
 fail() { echo "FAIL: $*" >&2; exit 1; }
 
-eval "$(bash "$here/slurm.sh" start "$work/slurm")"
+# (eval "$(…)" would not stop on a failed start.)
+env=$(bash "$here/slurm.sh" start "$work/slurm") || fail "the local Slurm did not start (tools/test.sh installs slurm-wlm and munge)"
+eval "$env"
 shot=("$src/tests/data/models/spot/spot.glb" --device cpu --size 160x120 --orbit 90 --slam "$src/scenes/slams/dots.exr")
 
 echo "== one render of the range (the reference)"

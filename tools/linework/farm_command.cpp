@@ -1,6 +1,6 @@
 // `linework farm SCENE -o DIR --frames A:B --chunk N [--exact | --warmup K]` — a shot cut
-// into tasks for a render farm (farm_plan.h), and `linework farm status DIR`: which frames
-// are finished, missing, or left by a failed task.
+// into tasks for a render farm (farm_plan.h); `linework farm status DIR`: which frames are
+// finished, missing, or left by a failed task; `linework farm task DIR PHASE I`: one task.
 #include <algorithm>
 #include <cerrno>
 #include <cstdio>
@@ -14,6 +14,7 @@
 #include "farm_plan.h"
 #include "render_options.h"
 #include "render_output.h"
+#include "render_state.h"
 
 namespace lw::cli {
 
@@ -42,6 +43,8 @@ int run_farm(const FarmOptions& o, const CLI::App& cmd) {
     if (o.dir.empty()) throw usage_error("farm: --output (-o) DIR is required");
     if (o.frames.empty()) throw usage_error("farm: --frames A:B is required (the shot)");
     if (o.chunk < 1) throw usage_error("farm: --chunk N (frames per task, 1 or more) is required");
+    if (o.warmup < -1 || (o.warmup == -1 && cmd.count("--warmup") > 0))
+        throw usage_error("--warmup: must be 0 or more");
     if (o.exact == (o.warmup >= 0)) throw usage_error("farm: choose --exact or --warmup K (one of them)");
     if (o.throttle < 0) throw usage_error("--throttle: must be 0 (no limit) or more");
     if (o.cpus_per_task < 1) throw usage_error("--cpus-per-task: must be 1 or more");
@@ -53,20 +56,28 @@ int run_farm(const FarmOptions& o, const CLI::App& cmd) {
                         .chunk = o.chunk,
                         .exact = o.exact,
                         .warmup = std::max(o.warmup, 0)};
-    if (!std::filesystem::exists(o.render.scene.input))
-        throw Error(o.render.scene.input + ": no such scene file or model");
+    // The frame options are checked here, once, rather than by every task on the farm.
+    SceneDesc desc = scene_from_options(o.render.scene);
+    apply_frame_overrides(o.render, desc);
+    (void)camera_override(o.render);
     const FarmPlan plan = plan_farm(request);
+    const std::filesystem::path plan_file = plan.request.dir / "plan.json";
+    const std::string text = plan_json(plan).dump(2) + "\n";
+    // The tasks resume what they find, so another shot's frames in the folder would pass
+    // for this one's: a folder holds one plan (the same plan again is fine).
+    if (std::filesystem::exists(plan_file)) {
+        std::ifstream in(plan_file, std::ios::binary);
+        const std::string old((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        if (old != text)
+            throw Error(plan_file.string() + ": the folder holds another shot's plan; choose another -o folder, or "
+                                             "remove this one to start over");
+    }
     for (const std::filesystem::path& d : {plan.request.dir, plan.logs()}) {
         std::error_code ec;
         std::filesystem::create_directories(d, ec);
         if (ec) throw Error(d.string() + ": cannot create (" + ec.message() + ")");
     }
-    const std::filesystem::path plan_file = plan.request.dir / "plan.json";
-    {
-        std::ofstream out(plan_file);
-        if (!out || !(out << plan_json(plan).dump(2) << "\n") || !out.flush())
-            throw Error(plan_file.string() + ": cannot write");
-    }
+    write_text_atomically(plan_file, text);
     write_slurm_scripts(plan, o.throttle, o.cpus_per_task);
     const int chunks = int(plan.phases.back().tasks.size());
     std::printf("shot: frames %d to %d in %d chunk(s) of %d, %s\n", request.frames.first, request.frames.last, chunks,
@@ -102,12 +113,6 @@ int recorded_exit(const FarmPlan& plan, const std::string& id) {
     return -1;
 }
 
-std::filesystem::path state_path(const FarmPlan& plan, int start) {
-    char name[32];
-    std::snprintf(name, sizeof name, "state_%04d.lwstate", start);
-    return plan.states() / name;
-}
-
 // One line per task; returns whether it is finished (every frame, or every state, there).
 bool report_task(const FarmPlan& plan, const FarmPhase& phase, size_t index, std::vector<int>& missing_frames,
                  int& failed) {
@@ -117,7 +122,7 @@ bool report_task(const FarmPlan& plan, const FarmPhase& phase, size_t index, std
     int wanted = 0;
     if (phase.name == "state") {
         for (int start = r.frames.first + r.chunk; start <= task.frames.last + 1; start += r.chunk, ++wanted)
-            if (!std::filesystem::exists(state_path(plan, start))) missing.push_back(start);
+            if (!std::filesystem::exists(saved_state_path(plan.states(), start))) missing.push_back(start);
     } else {
         for (int f = task.frames.first; f <= task.frames.last; ++f, ++wanted)
             if (!std::filesystem::exists(plan.output() / frame_name(f, "png"))) missing.push_back(f);
@@ -194,7 +199,8 @@ Runner add_farm_command(CLI::App& app) {
         "and their dependencies) and DIR/slurm/submit.sh (one Slurm job array per phase).\n"
         "--exact: a first task runs only the temporal state through the shot and saves it at each chunk start; "
         "the chunks then restore it and give frames identical to one render of the whole range.\n"
-        "--warmup K: one phase; each chunk draws K frames before its own (close to, not equal to, one render).\n"
+        "--warmup K: one phase; each chunk draws K frames before its own: a settled start, but the strokes' phase "
+        "restarts at each chunk (README \"Render farm\"): for untextured lines.\n"
         "Frames go to DIR/frames, logs to DIR/logs. Takes render's options for the frames.");
     cmd->positionals_at_end(false);
     add_frame_options(cmd, o->render);

@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "core/error.h"
+#include "render_state.h"
 
 namespace lw::cli {
 
@@ -74,7 +75,7 @@ FarmPlan plan_farm(const FarmRequest& request) {
         task.command = render_command(r, {"--part", range_text(c), "-o", frames, "--resume"});
         if (r.exact && k > 0) {
             task.command.push_back("--start-state");
-            task.command.push_back((plan.states() / ("state_" + padded(c.first) + ".lwstate")).string());
+            task.command.push_back(saved_state_path(plan.states(), c.first).string());
             task.after = {"state"};
         } else if (!r.exact && r.warmup > 0 && k > 0) {
             // Never before the shot's first frame: a chunk that close starts where one render does.
@@ -139,6 +140,13 @@ FarmPlan read_plan(const std::filesystem::path& dir) {
                                        .command = t.at("command").get<std::vector<std::string>>(),
                                        .after = t.at("after").get<std::vector<std::string>>()});
             plan.phases.push_back(std::move(phase));
+        }
+        if (r.chunk < 1 || r.frames.last < r.frames.first || plan.phases.empty())
+            throw Error(file.string() + ": not a farm plan (chunk, frames or phases out of range)");
+        for (const FarmPhase& phase : plan.phases) {
+            if (phase.tasks.empty()) throw Error(file.string() + ": phase " + phase.name + " has no tasks");
+            for (const FarmTask& t : phase.tasks)
+                if (t.command.empty()) throw Error(file.string() + ": task " + t.id + " has no command");
         }
         return plan;
     } catch (const nlohmann::json::exception& e) {

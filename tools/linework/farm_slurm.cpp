@@ -3,20 +3,17 @@
 // arrays with afterok. Tasks are resumable (`render --resume`), so a requeued or re-run
 // task goes on from the frames and state it wrote.
 #include <cstdio>
-#include <fstream>
 
 #include "core/error.h"
 #include "farm_plan.h"
+#include "render_state.h"
 
 namespace lw::cli {
 
 namespace {
 
 void write_script(const std::filesystem::path& path, const std::string& text) {
-    {
-        std::ofstream out(path, std::ios::binary);
-        if (!out || !(out << text) || !out.flush()) throw Error(path.string() + ": cannot write");
-    }
+    write_text_atomically(path, text);
     using std::filesystem::perms;
     std::error_code ec;
     std::filesystem::permissions(path, perms::owner_exec | perms::group_exec | perms::others_exec,
@@ -29,8 +26,8 @@ std::string phase_script(const FarmPlan& plan, size_t index, int throttle, int c
     const std::string logs = plan.logs().string();
     const std::string shot = plan.request.dir.filename().string();
     std::string s = "#!/usr/bin/env bash\n";
-    s += "# Phase " + std::to_string(index + 1) + " of the shot in " + plan.request.dir.string() + "/plan.json: \"" +
-         phase.name + "\", " + std::to_string(phase.tasks.size()) + " task(s); array task i runs task i.\n";
+    s += "# Phase " + std::to_string(index + 1) + " of the shot's plan.json: \"" + phase.name + "\", " +
+         std::to_string(phase.tasks.size()) + " task(s); array task i runs task i.\n";
     s += "#SBATCH --job-name=" + shell_line({"lw-" + shot + "-" + phase.name}) + "\n";
     s += "#SBATCH --array=0-" + std::to_string(phase.tasks.size() - 1) +
          (throttle > 0 ? "%" + std::to_string(throttle) : std::string()) + "\n";
@@ -86,7 +83,7 @@ void write_slurm_scripts(const FarmPlan& plan, int throttle, int cpus_per_task) 
                   " task(s))\"\n";
         submit += "previous=$job\n";
     }
-    submit += "echo \"follow it with: squeue; linework farm status " + plan.request.dir.string() + "\"\n";
+    submit += "echo " + shell_line({"follow it with: squeue; linework farm status " + plan.request.dir.string()}) + "\n";
     write_script(dir / "submit.sh", submit);
 }
 

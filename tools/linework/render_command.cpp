@@ -20,34 +20,6 @@ namespace lw::cli {
 
 namespace {
 
-// Overrides of the scene description. A partial camera (only --eye) keeps the framed target.
-void apply_overrides(const RenderOptions& o, SceneDesc& desc) {
-    if (o.fov) {
-        if (!(*o.fov > 0.0f && *o.fov < 180.0f)) throw usage_error("--fov: must be between 0 and 180 degrees");
-        desc.fov_deg = *o.fov;
-        if (desc.camera) desc.camera->fov_deg = *o.fov;
-    }
-    if (!o.shading.empty()) {
-        desc.style.draw_surface = o.shading != "none";
-        desc.style.shading = o.shading == "flat" ? Shading::Flat : o.shading == "unlit" ? Shading::Unlit : Shading::Toon;
-    }
-    if (o.lines_only && o.no_lines) throw usage_error("--lines-only and --no-lines leave nothing to draw");
-    if (o.lines_only) desc.style.draw_surface = false;
-    if (o.no_lines) desc.lines.enabled = false;
-    if (!o.hidden.empty())
-        desc.lines.hidden = o.hidden == "dashed" ? HiddenLines::Dashed : o.hidden == "faint" ? HiddenLines::Faint : HiddenLines::None;
-    if (!o.svg.empty() && !desc.lines.enabled) throw usage_error("--svg needs lines (drop --no-lines)");
-    if (o.orbit) desc.camera_path = CameraPath{.kind = CameraPath::Kind::Orbit, .orbit = {.degrees = *o.orbit}};
-}
-
-CameraOverride camera_override(const RenderOptions& o) {
-    CameraOverride c;
-    if (!o.eye.empty()) c.eye = parse_vec3(o.eye, "--eye");
-    if (!o.target.empty()) c.target = parse_vec3(o.target, "--target");
-    if (!o.up.empty()) c.up = parse_vec3(o.up, "--up");
-    return c;
-}
-
 volatile std::sig_atomic_t g_interrupted = 0;
 
 // Ctrl-C (SIGINT), or a scheduler's SIGTERM (scancel, requeue, pre-emption), finishes the
@@ -89,12 +61,6 @@ bool ends_chunk(int f, FrameRange range, int chunk) {
     return chunk > 0 && f + 1 > range.first && f + 1 <= range.last && (f + 1 - range.first) % chunk == 0;
 }
 
-std::filesystem::path state_file(const std::string& dir, int start) {
-    char name[40];
-    std::snprintf(name, sizeof name, "state_%04d.lwstate", start);
-    return std::filesystem::path(dir) / name;
-}
-
 // --start-state: read before the session is made, since the line mesh must be built in the
 // pose the state was taken with.
 std::optional<RenderState> read_start_state(const RenderOptions& o) {
@@ -110,12 +76,12 @@ std::optional<RenderState> read_start_state(const RenderOptions& o) {
 // every state is there.
 int resume_saved_states(const RenderOptions& o, FrameRange range, FrameRange part, SceneSession& session) {
     for (int f = part.last; f >= part.first; --f) {
-        if (!ends_chunk(f, range, o.chunk) || !std::filesystem::exists(state_file(o.save_states, f + 1))) continue;
-        const RenderState state = read_render_state(state_file(o.save_states, f + 1));
+        if (!ends_chunk(f, range, o.chunk) || !std::filesystem::exists(saved_state_path(o.save_states, f + 1))) continue;
+        const RenderState state = read_render_state(saved_state_path(o.save_states, f + 1));
         if (state.signature != o.state_signature || state.frame != f) continue;  // rewritten below
         if (f == part.last) return f + 1;
         session.restore({frame_time(f, range, session.desc().animation.fps).seconds, state.snapshot});
-        std::printf("resuming at frame %d from %s\n", f + 1, state_file(o.save_states, f + 1).string().c_str());
+        std::printf("resuming at frame %d from %s\n", f + 1, saved_state_path(o.save_states, f + 1).string().c_str());
         return f + 1;
     }
     return part.first;
@@ -189,7 +155,7 @@ int render_frames(const RenderOptions& o, const Shot& shot, const FrameFiles& fi
                 print_frame_report(files, session, frame, f);
         }
         if (!o.save_states.empty() && ends_chunk(f, shot.range, o.chunk)) {
-            write_render_state(state_file(o.save_states, f + 1),
+            write_render_state(saved_state_path(o.save_states, f + 1),
                                {o.state_signature, f, pose_seconds, session.snapshot().coherence});
             ++states;
         }
@@ -216,11 +182,15 @@ int run_render(const RenderOptions& o) {
     const FrameRange frames_flag = frames_given ? parse_frames(o.frames) : FrameRange{};
     const FrameRange part_flag = part_given ? parse_frames(o.part, "--part") : FrameRange{};
     SceneDesc desc = scene_from_options(o.scene);
-    apply_overrides(o, desc);
+    apply_frame_overrides(o, desc);
     FrameFiles files{o.output, o.svg, o.state_only ? std::string() : o.dump_paths, o.exr};
     if (o.state_only) files.exr = false;
     if (!o.state_only) create_folders(files);
-    if (!o.save_states.empty()) create_folders({.out_dir = o.save_states});
+    if (!o.save_states.empty()) {
+        std::error_code ec;
+        std::filesystem::create_directories(o.save_states, ec);
+        if (ec) throw Error(o.save_states + ": cannot create the --save-states folder (" + ec.message() + ")");
+    }
     const std::optional<RenderState> start_state = read_start_state(o);
 
     const bool validation = validation_on(o.scene);

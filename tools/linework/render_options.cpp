@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "commands.h"
+
 namespace lw::cli {
 
 void add_frame_options(CLI::App* cmd, RenderOptions& o) {
@@ -20,6 +22,33 @@ void add_frame_options(CLI::App* cmd, RenderOptions& o) {
     cmd->add_option("--orbit", o.orbit, "Turn the camera DEG degrees about the bounding-box centre over the frames");
     cmd->add_option("--dump-paths", o.dump_paths,
                     "Write DIR/frame_NNNN.json per frame: visible paths, their line set, (ρ, φ), level and samples");
+}
+
+void apply_frame_overrides(const RenderOptions& o, SceneDesc& desc) {
+    if (o.fov) {
+        if (!(*o.fov > 0.0f && *o.fov < 180.0f)) throw usage_error("--fov: must be between 0 and 180 degrees");
+        desc.fov_deg = *o.fov;
+        if (desc.camera) desc.camera->fov_deg = *o.fov;
+    }
+    if (!o.shading.empty()) {
+        desc.style.draw_surface = o.shading != "none";
+        desc.style.shading = o.shading == "flat" ? Shading::Flat : o.shading == "unlit" ? Shading::Unlit : Shading::Toon;
+    }
+    if (o.lines_only && o.no_lines) throw usage_error("--lines-only and --no-lines leave nothing to draw");
+    if (o.lines_only) desc.style.draw_surface = false;
+    if (o.no_lines) desc.lines.enabled = false;
+    if (!o.hidden.empty())
+        desc.lines.hidden = o.hidden == "dashed" ? HiddenLines::Dashed : o.hidden == "faint" ? HiddenLines::Faint : HiddenLines::None;
+    if (!o.svg.empty() && !desc.lines.enabled) throw usage_error("--svg needs lines (drop --no-lines)");
+    if (o.orbit) desc.camera_path = CameraPath{.kind = CameraPath::Kind::Orbit, .orbit = {.degrees = *o.orbit}};
+}
+
+CameraOverride camera_override(const RenderOptions& o) {
+    CameraOverride c;
+    if (!o.eye.empty()) c.eye = parse_vec3(o.eye, "--eye");
+    if (!o.target.empty()) c.target = parse_vec3(o.target, "--target");
+    if (!o.up.empty()) c.up = parse_vec3(o.up, "--up");
+    return c;
 }
 
 namespace {
@@ -49,9 +78,9 @@ std::vector<std::string> given_arguments(const CLI::App& cmd, const std::vector<
             for (const std::string& value : option->results()) positionals.push_back(value);
             continue;
         }
-        // A flag takes no value: CLI11 records "true" (or a count) for it.
+        // A flag takes no value; `--exr=false` is given but off, and stays out.
         if (option->get_items_expected_max() == 0) {
-            named.push_back(option->get_name());
+            if (option->as<bool>()) named.push_back(option->get_name());
             continue;
         }
         for (const std::string& value : option->results()) {

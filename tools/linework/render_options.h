@@ -42,9 +42,15 @@ void add_frame_options(CLI::App* cmd, RenderOptions& o);
 // named in `except`: what `farm` puts on each task's command line.
 [[nodiscard]] std::vector<std::string> given_arguments(const CLI::App& cmd, const std::vector<std::string>& except);
 
-// Range and output options: not part of a saved state's signature.
-inline const std::vector<std::string> kRangeOptions = {"--output", "--frames",      "--part",       "--warmup",
-                                                       "--resume", "--state-only",  "--save-states", "--chunk",
-                                                       "--start-state", "--exr",   "--svg"};
+// Which frames are drawn and where they go: not part of a saved state's signature. The
+// range (--frames) is: the camera path's progress and the state's history span it.
+inline const std::vector<std::string> kRangeOptions = {"--output",      "--part",  "--warmup",     "--resume",
+                                                       "--state-only",  "--save-states", "--chunk", "--start-state",
+                                                       "--exr",         "--svg"};
+
+// The overrides of the scene description the frame options make (a partial camera, only
+// --eye, keeps the framed target); usage errors name the flag.
+void apply_frame_overrides(const RenderOptions& o, SceneDesc& desc);
+[[nodiscard]] CameraOverride camera_override(const RenderOptions& o);
 
 }  // namespace lw::cli

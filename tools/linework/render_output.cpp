@@ -40,11 +40,6 @@ std::string frame_name(int frame, const char* extension) {
 
 namespace {
 
-void write_text(const std::filesystem::path& path, const std::string& text) {
-    std::ofstream out(path, std::ios::binary);
-    if (!out || !(out << text) || !out.flush()) throw Error(path.string() + ": cannot write");
-}
-
 std::filesystem::path svg_path(const FrameFiles& files, int f) {
     std::filesystem::path svg(files.svg);
     if (files.sequence) svg = svg.parent_path() / (svg.stem().string() + "_" + frame_name(f, "svg").substr(6));
@@ -75,11 +70,8 @@ void write_frame_files(const FrameFiles& files, const SceneSession& session, con
             write_lines_svg(file, desc.width, desc.height, session.svg_groups(frame));
         });
     if (!files.dump_paths.empty())
-        write_atomically(std::filesystem::path(files.dump_paths) / frame_name(f, "json"),
-                         [&](const std::filesystem::path& file) {
-                             write_text(file, path_dump_json(f, desc.width, desc.height, session.dump_groups(frame),
-                                                             frame.layers));
-                         });
+        write_text_atomically(std::filesystem::path(files.dump_paths) / frame_name(f, "json"),
+                              path_dump_json(f, desc.width, desc.height, session.dump_groups(frame), frame.layers));
     write_atomically(files.out_dir / frame_name(f, "png"),
                      [&](const std::filesystem::path& file) { write_png(file, frame.image.color); });
 }
@@ -123,12 +115,15 @@ std::optional<int> resume_point(const std::string& signature, const FrameFiles& 
     while (first_missing <= part.last && std::filesystem::exists(files.out_dir / frame_name(first_missing, "png")))
         ++first_missing;
     if (first_missing == part.first) return std::nullopt;
-    if (first_missing > part.last) return first_missing;
     const std::filesystem::path& state_path = files.progress_state;
+    // Frames there by another command (other options) are not this render's: even when
+    // every frame is there, the state says whose they are.
+    if (first_missing > part.last && !std::filesystem::exists(state_path)) return first_missing;
     const RenderState state = read_render_state(state_path);
     if (state.signature != signature)
         throw Error(state_path.string() + ": written by a render with other options; rerun that command "
                                           "with --resume, or remove the file to start over");
+    if (first_missing > part.last) return first_missing;
     if (state.frame != first_missing - 1 && state.frame != first_missing - 2)
         throw Error(state_path.string() + ": holds the state after frame " + std::to_string(state.frame) +
                     ", but the first missing frame is " + std::to_string(first_missing));

@@ -1,5 +1,6 @@
 #include "render_state.h"
 
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <iterator>
@@ -80,6 +81,19 @@ void write_atomically(const std::filesystem::path& path, const std::function<voi
     std::error_code ec;
     std::filesystem::rename(temporary, path, ec);
     if (ec) throw Error(path.string() + ": cannot write (" + ec.message() + ")");
+}
+
+void write_text_atomically(const std::filesystem::path& path, const std::string& text) {
+    write_atomically(path, [&](const std::filesystem::path& file) {
+        std::ofstream out(file, std::ios::binary);
+        if (!out || !(out << text) || !out.flush()) throw Error(path.string() + ": cannot write");
+    });
+}
+
+std::filesystem::path saved_state_path(const std::filesystem::path& dir, int start) {
+    char name[40];
+    std::snprintf(name, sizeof name, "state_%04d.lwstate", start);
+    return dir / name;
 }
 
 void write_render_state(const std::filesystem::path& path, const RenderState& state) {
