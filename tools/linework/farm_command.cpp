@@ -79,6 +79,9 @@ int run_farm(const FarmOptions& o, const CLI::App& cmd) {
     }
     write_text_atomically(plan_file, text);
     write_slurm_scripts(plan, o.throttle, o.cpus_per_task);
+    if (o.exact && o.render.scene.device == "auto")
+        std::printf("note: --device auto: nodes with different devices (a GPU, lavapipe) give frames that differ in "
+                    "the last bits; pin --device cpu or gpu for identical frames\n");
     const int chunks = int(plan.phases.back().tasks.size());
     std::printf("shot: frames %d to %d in %d chunk(s) of %d, %s\n", request.frames.first, request.frames.last, chunks,
                 request.chunk,

@@ -68,7 +68,7 @@ std::optional<RenderState> read_start_state(const RenderOptions& o) {
     RenderState state = read_render_state(o.start_state);
     if (state.signature != o.state_signature)
         throw Error(o.start_state + ": saved by a render with other options (the scene, camera, style and line "
-                                    "options must be the same; only the range and output options may differ)");
+                                    "options must be the same; only the part, output and warm-up options may differ)");
     return state;
 }
 
