@@ -18,12 +18,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string frame_png(int f) {
-    char name[32];
-    std::snprintf(name, sizeof(name), "frame_%04d.png", f);
-    return name;
-}
-
 std::string read_bytes(const fs::path& file) {
     std::ifstream in(file, std::ios::binary);
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
@@ -129,7 +123,7 @@ TEST(Farm, ExactPlanRunHereEqualsOneRender) {
             ASSERT_EQ(r.exit_code, 0) << phase.at("tasks")[i].at("id") << ": " << r.output;
         }
     for (int f = 0; f <= 11; ++f)
-        EXPECT_TRUE(read_bytes(dir / "one" / frame_png(f)) == read_bytes(dir / "farm/frames" / frame_png(f)))
+        EXPECT_TRUE(read_bytes(dir / "one" / test::frame_png(f)) == read_bytes(dir / "farm/frames" / test::frame_png(f)))
             << "frame " << f << " differs from one render";
     // The parameterization too: no phase error against one render's dumps, and a nonzero
     // one against another shot's (the measure can fail).
@@ -165,7 +159,7 @@ TEST(Farm, ExactPlanRunHereEqualsOneRender) {
     EXPECT_EQ(replanned.exit_code, 1) << replanned.output;
     EXPECT_NE(replanned.output.find("plan.json: the folder holds another shot's plan"), std::string::npos)
         << replanned.output;
-    fs::remove(dir / "farm/frames" / frame_png(5));
+    fs::remove(dir / "farm/frames" / test::frame_png(5));
     const auto missing = test::run_linework("farm status " + test::quote(dir / "farm"));
     EXPECT_EQ(missing.exit_code, 3) << missing.output;
     EXPECT_NE(missing.output.find("3 of 4 frames written, missing 5"), std::string::npos) << missing.output;

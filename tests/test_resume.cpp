@@ -15,12 +15,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string frame_png(int f) {
-    char name[32];
-    std::snprintf(name, sizeof(name), "frame_%04d.png", f);
-    return name;
-}
-
 TEST(Resume, InterruptedAndResumedSequenceEqualsAnUnbrokenOne) {
     const fs::path dir = test::temp_dir();
     const int last = 23;
@@ -34,7 +28,7 @@ TEST(Resume, InterruptedAndResumedSequenceEqualsAnUnbrokenOne) {
     const fs::path broken = dir / "broken";
     const std::string exe = LW_LINEWORK_EXE;
     const std::string script = "LINEWORK_VALIDATION=1 '" + exe + "' render " + args + " -o " + test::quote(broken) +
-                               " > /dev/null 2>&1 & pid=$!; while [ ! -f " + test::quote(broken / frame_png(2)) +
+                               " > /dev/null 2>&1 & pid=$!; while [ ! -f " + test::quote(broken / test::frame_png(2)) +
                                " ]; do sleep 0.01; if ! kill -0 $pid 2>/dev/null; then break; fi; done; "
                                "kill -INT $pid; wait $pid; echo $?";
     FILE* pipe = popen(script.c_str(), "r");
@@ -44,7 +38,7 @@ TEST(Resume, InterruptedAndResumedSequenceEqualsAnUnbrokenOne) {
     pclose(pipe);
     ASSERT_EQ(std::string(buffer), "130\n") << "the render was not interrupted (exit " << buffer << ")";
     int written = 0;
-    while (fs::exists(broken / frame_png(written))) ++written;
+    while (fs::exists(broken / test::frame_png(written))) ++written;
     ASSERT_LT(written, last + 1) << "every frame was written before the interrupt arrived";
     EXPECT_GE(written, 3);
     for (const auto& entry : fs::directory_iterator(broken))
@@ -58,8 +52,8 @@ TEST(Resume, InterruptedAndResumedSequenceEqualsAnUnbrokenOne) {
         << resumed.output;
     const auto same_as_whole = [&] {
         for (int f = 0; f <= last; ++f) {
-            const ImageRGBA8 a = read_image_rgba8(dir / "whole" / frame_png(f));
-            const ImageRGBA8 b = read_image_rgba8(broken / frame_png(f));
+            const ImageRGBA8 a = read_image_rgba8(dir / "whole" / test::frame_png(f));
+            const ImageRGBA8 b = read_image_rgba8(broken / test::frame_png(f));
             EXPECT_TRUE(a.pixels == b.pixels) << "frame " << f << " differs from the unbroken run";
         }
     };
@@ -67,7 +61,7 @@ TEST(Resume, InterruptedAndResumedSequenceEqualsAnUnbrokenOne) {
 
     // A render killed after a frame's PNG and before its state (SIGKILL between the two
     // renames) leaves the state one frame behind: that frame is drawn again.
-    for (int f = written + 1; f <= last; ++f) fs::remove(broken / frame_png(f));
+    for (int f = written + 1; f <= last; ++f) fs::remove(broken / test::frame_png(f));
     fs::copy_file(interrupted_state, broken / ".linework-state", fs::copy_options::overwrite_existing);
     const auto lagging = test::run_linework("render " + args + " -o " + test::quote(broken) + " --resume");
     ASSERT_EQ(lagging.exit_code, 0) << lagging.output;
@@ -76,7 +70,7 @@ TEST(Resume, InterruptedAndResumedSequenceEqualsAnUnbrokenOne) {
     same_as_whole();
 
     // Resuming with other options is refused, naming the state file.
-    fs::remove(broken / frame_png(last));
+    fs::remove(broken / test::frame_png(last));
     std::string other_args = args;
     other_args.replace(other_args.find("--orbit 90"), 10, "--orbit 45");
     const auto other = test::run_linework("render " + other_args + " -o " + test::quote(broken) + " --resume");

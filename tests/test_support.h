@@ -68,6 +68,13 @@ inline CommandResult run_linework(const std::string& args) {
     return run_command("LINEWORK_VALIDATION=1 '" + std::string(LW_LINEWORK_EXE) + "' " + args + " 2>&1");
 }
 
+// frame_0007.png: the name `linework render` gives frame 7 of a sequence.
+inline std::string frame_png(int f) {
+    char name[32];
+    std::snprintf(name, sizeof(name), "frame_%04d.png", f);
+    return name;
+}
+
 // Shell-quoted path (built with +=: GCC 12 warns falsely, -Wrestrict, about "'" + std::string&&).
 inline std::string quote(const std::filesystem::path& p) {
     std::string q = "'";
