@@ -86,17 +86,27 @@ TEST(Farm, PlanHasEveryFrameInExactlyOneTaskAndAcyclicDependencies) {
 
 TEST(Farm, StateOnlyRunSavesTheStatesOfAFullRender) {
     const fs::path dir = test::temp_dir();
-    const std::string range = " --frames 0:9 --save-states ";
-    const auto full = test::run_linework("render " + kShot + range + test::quote(dir / "full") + " --chunk 5 -o " +
+    const std::string range = " --frames 0:14 --chunk 5 --save-states ";
+    const auto full = test::run_linework("render " + kShot + range + test::quote(dir / "full") + " -o " +
                                          test::quote(dir / "frames"));
     ASSERT_EQ(full.exit_code, 0) << full.output;
-    const auto alone = test::run_linework("render " + kShot + range + test::quote(dir / "alone") +
-                                          " --chunk 5 --state-only");
-    ASSERT_EQ(alone.exit_code, 0) << alone.output;
-    EXPECT_NE(alone.output.find("wrote 1 states"), std::string::npos) << alone.output;
-    const std::string a = read_bytes(dir / "full/state_0005.lwstate"), b = read_bytes(dir / "alone/state_0005.lwstate");
-    EXPECT_GT(a.size(), 1000u);
-    EXPECT_TRUE(a == b) << "the state run alone differs from the full render's";
+    const std::string alone = "render " + kShot + range + test::quote(dir / "alone") + " --state-only --resume";
+    const auto first = test::run_linework(alone);
+    ASSERT_EQ(first.exit_code, 0) << first.output;
+    EXPECT_NE(first.output.find("wrote 2 states"), std::string::npos) << first.output;
+    for (const char* name : {"state_0005.lwstate", "state_0010.lwstate"}) {
+        const std::string a = read_bytes(dir / "full" / name), b = read_bytes(dir / "alone" / name);
+        EXPECT_GT(a.size(), 1000u);
+        EXPECT_TRUE(a == b) << name << ": the state run alone differs from the full render's";
+    }
+    // Resumed, it goes on from the last state there, and writes the same bytes again.
+    fs::remove(dir / "alone/state_0010.lwstate");
+    const auto resumed = test::run_linework(alone);
+    ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
+    EXPECT_NE(resumed.output.find("resuming at frame 5 from"), std::string::npos) << resumed.output;
+    EXPECT_TRUE(read_bytes(dir / "full/state_0010.lwstate") == read_bytes(dir / "alone/state_0010.lwstate"));
+    const auto done = test::run_linework(alone);
+    EXPECT_NE(done.output.find("all states of frames 0 to 9 are already in"), std::string::npos) << done.output;
 }
 
 TEST(Farm, ExactPlanRunHereEqualsOneRender) {

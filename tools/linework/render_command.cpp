@@ -73,8 +73,8 @@ std::optional<RenderState> read_start_state(const RenderOptions& o) {
 }
 
 // --resume with --state-only: the last saved state of the part, restored; past the part when
-// every state is there.
-int resume_saved_states(const RenderOptions& o, FrameRange range, FrameRange part, SceneSession& session) {
+// every state is there; nothing when none is.
+std::optional<int> resume_saved_states(const RenderOptions& o, FrameRange range, FrameRange part, SceneSession& session) {
     for (int f = part.last; f >= part.first; --f) {
         if (!ends_chunk(f, range, o.chunk) || !std::filesystem::exists(saved_state_path(o.save_states, f + 1))) continue;
         const RenderState state = read_render_state(saved_state_path(o.save_states, f + 1));
@@ -84,7 +84,7 @@ int resume_saved_states(const RenderOptions& o, FrameRange range, FrameRange par
         std::printf("resuming at frame %d from %s\n", f + 1, saved_state_path(o.save_states, f + 1).string().c_str());
         return f + 1;
     }
-    return part.first;
+    return std::nullopt;
 }
 
 struct Shot {
@@ -97,10 +97,12 @@ struct Shot {
 int first_frame(const RenderOptions& o, const Shot& shot, const FrameFiles& files,
                 const std::optional<RenderState>& start_state, SceneSession& session) {
     const float fps = session.desc().animation.fps;
-    if (o.state_only && o.resume) return resume_saved_states(o, shot.range, shot.part, session);
-    if (o.resume)
-        if (const std::optional<int> resumed = resume_point(o.signature, files, shot.range, shot.part, session))
-            return *resumed;
+    if (o.resume) {
+        const std::optional<int> resumed = o.state_only
+                                               ? resume_saved_states(o, shot.range, shot.part, session)
+                                               : resume_point(o.signature, files, shot.range, shot.part, session);
+        if (resumed) return *resumed;
+    }
     if (start_state) {
         if (start_state->frame != shot.part.first - 1)
             throw Error(o.start_state + ": holds the state after frame " + std::to_string(start_state->frame) +
@@ -214,6 +216,16 @@ int run_render(const RenderOptions& o) {
     if (shot.part.first < shot.range.first || shot.part.last > shot.range.last)
         throw usage_error("--part " + o.part + " lies outside the range " + std::to_string(shot.range.first) + ":" +
                           std::to_string(shot.range.last));
+    if (o.state_only) {
+        // Frames after the last chunk start leave no state: not drawn.
+        int last = shot.part.last;
+        while (last >= shot.part.first && !ends_chunk(last, shot.range, o.chunk)) --last;
+        if (last < shot.part.first)
+            throw usage_error("--state-only: no chunk of " + std::to_string(o.chunk) + " frames starts within frames " +
+                              std::to_string(shot.part.first + 1) + " to " + std::to_string(shot.part.last + 1) +
+                              ": there is no state to save");
+        shot.part.last = last;
+    }
     files.sequence = shot.range.last > shot.range.first || o.warmup > 0 || desc.animation.play ||
                      desc.camera_path.kind != CameraPath::Kind::Fixed;
     files.progress_state = files.out_dir / (part_given ? ".linework-state-" + std::to_string(shot.part.first) + "-" +
