@@ -223,7 +223,7 @@ pyb::object ribbon(const pyb::object& exemplar_value, const pyb::object& curve_v
     desc.params.piece = piece.value_or(std::max(1.0f, std::round(desc.params.width / 2.0f)));
     desc.seed = seed;
     desc.stitch = stitch;
-    desc.reference = reference;
+    if (reference) desc.site = ComputeSite::Host;  // else the device's choice: the host on CPU devices
     const Ribbon built = arguments_named(kRibbonNames, [&] { return build_ribbon(curve, desc.params); });
     if (!size) {
         const glm::vec2 hi = built.max_corner();
@@ -329,7 +329,7 @@ scene files can name as a style's "slam"; exemplar_name and seed go into its met
           R"(A structured pattern synthesized along a curve (Zhou, Lasram & Lefebvre 2013), as
 `linework ribbon` makes it. The ribbon of width b around the curve is cut into pieces of
 length δ; each piece copies a part of the exemplar (rotated to follow the curve, never
-stretched), chosen by dynamic programming (on the GPU unless reference) so that
+stretched), chosen by dynamic programming (on the host on CPU devices such as lavapipe, else on the GPU) so that
 neighbouring pieces match along their shared edge; where the ribbon folds over or overlaps
 itself the pattern is kept out.
 
@@ -344,7 +344,7 @@ stitch: deform pieces so that their edges align better (§3.2, P = 32).
 size: output (width, height) (default: the ribbon's extent from the origin).
 avoid: H×W(×4) uint8 avoidance map of the output size (or a PNG): alpha ≥ 128 is forbidden (§3.1).
 transparent: keep the transparent background (default: composited over white).
-reference: run the DP and stitching with the plain C++ reference instead of the device.
+reference: run the DP and stitching with the plain C++ reference whatever the device.
 device: 'auto', 'cpu' (lavapipe), 'gpu' or a device index.
 
 Returns the H×W×4 uint8 image `linework ribbon` writes to its PNG; with return_info, a tuple

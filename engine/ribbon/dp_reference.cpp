@@ -1,6 +1,7 @@
 #include "ribbon/dp_reference.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <string>
 
@@ -54,45 +55,82 @@ std::vector<uint32_t> extract_columns(const DpProblem& problem, size_t row, cons
     return columns;
 }
 
+namespace {
+
+// Texels of edges unpacked for ξ, by sample k then edge j (index k·count + j), so that the
+// cost table's inner loop runs over positions with unit stride and the compiler vectorizes
+// it (sqrt without errno: CMakeLists.txt). Each table entry still sums its C terms in k
+// order, so the table is bit-identical to the scalar loop and to the GPU pass.
+struct EdgeTexels {
+    size_t count = 0;
+    std::vector<float> r, g, b, opaque;
+    void resize(size_t c, size_t samples) {
+        count = c;
+        for (std::vector<float>* v : {&r, &g, &b, &opaque}) v->assign(c * samples, 0.0f);
+    }
+    void set(size_t k, size_t j, uint32_t t) {
+        const size_t i = k * count + j;
+        r[i] = float(t & 0xffu);
+        g[i] = float((t >> 8) & 0xffu);
+        b[i] = float((t >> 16) & 0xffu);
+        opaque[i] = texel_opaque(t) ? 1.0f : 0.0f;
+    }
+};
+
+}  // namespace
+
 std::vector<float> compute_cost_table(const DpProblem& problem, const std::vector<uint32_t>& right_edges,
                                       const std::vector<uint32_t>& valid) {
     const size_t C = size_t(problem.samples);
     const size_t prev_count = right_edges.size() / C, count = valid.size();
     // Left edges L̄ of the new piece: column x of E from row y, at the left-edge offsets.
-    std::vector<uint32_t> left(count * C);
+    EdgeTexels left;
+    left.resize(count, C);
     for (size_t u = 0; u < count; ++u) {
         const glm::ivec2 p = problem.position(valid[u]);
-        for (size_t k = 0; k < C; ++k) left[u * C + k] = problem.exemplar->at(p.x, p.y + problem.left_dy[k]);
+        for (size_t k = 0; k < C; ++k) left.set(k, u, problem.exemplar->at(p.x, p.y + problem.left_dy[k]));
     }
-    std::vector<float> table(prev_count * count);
+    std::vector<float> table(prev_count * count, 0.0f);
     parallel_for(prev_count, 16, [&](size_t begin, size_t end, size_t) {
-        for (size_t v = begin; v < end; ++v)
-            for (size_t u = 0; u < count; ++u) {
-                float d = 0.0f;
-                for (size_t k = 0; k < C; ++k) d += xi(right_edges[v * C + k], left[u * C + k]);
-                table[v * count + u] = d;
+        for (size_t v = begin; v < end; ++v) {
+            float* row = table.data() + v * count;
+            for (size_t k = 0; k < C; ++k) {
+                // ξ(q, L̄_u[k]) for every u: the same terms as xi(), in the same order per entry.
+                const uint32_t q = right_edges[v * C + k];
+                const float qr = float(q & 0xffu), qg = float((q >> 8) & 0xffu), qb = float((q >> 16) & 0xffu);
+                const float qo = texel_opaque(q) ? 1.0f : 0.0f;
+                const float* lr = left.r.data() + k * count;
+                const float* lg = left.g.data() + k * count;
+                const float* lb = left.b.data() + k * count;
+                const float* lo = left.opaque.data() + k * count;
+                for (size_t u = 0; u < count; ++u) {
+                    const float dr = qr - lr[u], dg = qg - lg[u], db = qb - lb[u];
+                    const float distance = std::sqrt(dr * dr + dg * dg + db * db);
+                    row[u] += lo[u] == qo ? distance : kRibbonGamma;
+                }
             }
+        }
     });
     return table;
 }
 
 void update_table_row(const std::vector<float>& prev_costs, const std::vector<float>& table, size_t count,
                       std::vector<float>& costs, std::vector<uint32_t>& back) {
-    costs.assign(count, 0.0f);
+    costs.assign(count, std::numeric_limits<float>::infinity());
     back.assign(count, 0u);
-    parallel_for(count, 64, [&](size_t begin, size_t end, size_t) {
-        for (size_t u = begin; u < end; ++u) {
-            float best = std::numeric_limits<float>::infinity();
-            uint32_t arg = 0;
-            for (size_t v = 0; v < prev_costs.size(); ++v) {
-                const float c = prev_costs[v] + table[v * count + u];
-                if (c < best) {
-                    best = c;
-                    arg = uint32_t(v);
+    // Rows of the table in order (unit stride), each thread its own span of u; the strict <
+    // keeps the first v of equal costs, as a loop over v per u does.
+    parallel_for(count, 256, [&](size_t begin, size_t end, size_t) {
+        for (size_t v = 0; v < prev_costs.size(); ++v) {
+            const float base = prev_costs[v];
+            const float* row = table.data() + v * count;
+            for (size_t u = begin; u < end; ++u) {
+                const float c = base + row[u];
+                if (c < costs[u]) {
+                    costs[u] = c;
+                    back[u] = uint32_t(v);
                 }
             }
-            costs[u] = best;
-            back[u] = arg;
         }
     });
 }

@@ -22,8 +22,10 @@ RibbonSynthesis synthesize_ribbon(const Context& ctx, const Exemplar& exemplar, 
     const DpProblem problem = build_problem(exemplar, out.ribbon, &out.forbidden);
 
     Timer dp_timer;
-    RibbonDpGpu gpu(ctx);
-    const DpRunner runner = desc.reference ? DpRunner(run_dp_reference) : gpu.runner();
+    const bool host = desc.site.value_or(ctx.preferred_compute_site()) == ComputeSite::Host;
+    std::optional<RibbonDpGpu> gpu;  // its pipelines only when it runs
+    if (!host) gpu.emplace(ctx);
+    const DpRunner runner = host ? DpRunner(run_dp_reference) : gpu->runner();
     DpRunOptions options;
     options.progress = desc.progress;
     // The valid lists for the baselines: the runner keeps them in its tables, so run through
@@ -36,13 +38,14 @@ RibbonSynthesis synthesize_ribbon(const Context& ctx, const Exemplar& exemplar, 
     };
     out.solution = solve_ribbon(problem, remembering, desc.seed, options);
     out.dp_ms = dp_timer.elapsed_ms();
+    out.dp_on_host = host;
 
     out.greedy_cost = path_cost(problem, greedy_positions(problem, valid, out.solution.positions.front()));
     out.random_cost = path_cost(problem, random_positions(problem, valid, desc.seed));
 
     if (desc.stitch) {
         Timer stitch_timer;
-        out.stitch = desc.reference ? stitch_reference(problem, out.solution.positions)
+        out.stitch = host ? stitch_reference(problem, out.solution.positions)
                                     : RibbonStitcherGpu(ctx).stitch(problem, out.solution.positions);
         out.stitch_ms = stitch_timer.elapsed_ms();
     }

@@ -3,8 +3,11 @@
 //
 //   curve → ribbon of width b sliced every δ (§1.2) → avoidance map drawn off-screen from
 //   fold-overs and self-overlaps, merged with the user's map (§3.1) → probes per piece →
-//   DP on the GPU (§1.4, §2) with the closed-curve search (§1.5) → greedy and random
-//   baselines → optional stitching on the GPU (§3.2) → drawing with the deformation.
+//   DP (§1.4, §2) with the closed-curve search (§1.5) → greedy and random baselines →
+//   optional stitching (§3.2) → drawing with the deformation. The DP and the stitching run
+//   as Vulkan compute or as their plain C++ references (identical results, tests/
+//   test_ribbon_gpu.cpp), by default where the context prefers: the host on CPU devices,
+//   where the threaded C++ DP is faster than lavapipe's compute (docs/BENCHMARKS.md).
 #pragma once
 
 #include <cstdint>
@@ -26,7 +29,9 @@ struct RibbonSynthesisDesc {
     bool stitch = false;
     bool avoid_overlaps = true;               // §3.1 avoidance of fold-overs and self-overlaps
     const ForbiddenMask* user_forbidden = nullptr;  // the user's avoidance map (canvas size)
-    bool reference = false;                   // run the DP and stitching with the C++ reference
+    // Where the DP and stitching run: Host is the C++ reference; nullopt: the context's
+    // preferred site (ContextDesc::compute_site, else the host on CPU devices).
+    std::optional<ComputeSite> site;
     std::function<void(size_t, size_t, uint32_t)> progress;  // (row, rows, valid positions)
 };
 
@@ -38,6 +43,7 @@ struct RibbonSynthesis {
     std::optional<StitchResult> stitch;
     ImageRGBA8 image;                 // RGBA, transparent background
     double dp_ms = 0.0, stitch_ms = 0.0, draw_ms = 0.0;
+    bool dp_on_host = false;          // the C++ DP ran (else the device's)
 };
 
 [[nodiscard]] RibbonSynthesis synthesize_ribbon(const Context& ctx, const Exemplar& exemplar,

@@ -26,7 +26,7 @@ namespace {
 
 struct RibbonOptions {
     std::string exemplar, curve, output, dump, avoid, size;
-    std::string device = "auto";
+    std::string device = "auto", compute = "auto";
     bool closed = false, stitch = false, transparent = false, reference = false, validation = false;
     std::optional<float> piece, width, scale;
     uint64_t seed = 1;
@@ -61,6 +61,9 @@ int run_ribbon(const RibbonOptions& o) {
     std::optional<glm::ivec2> size;
     if (!o.size.empty()) size = parse_size(o.size, "--size");
     const DeviceChoice device = parse_device_choice(o.device);
+    // --reference is --compute host; auto: the context's choice (the host on CPU devices).
+    if (o.reference && o.compute == "device") throw usage_error("--reference and --compute device contradict");
+    const std::optional<ComputeSite> site = o.reference ? ComputeSite::Host : parse_compute_site(o.compute);
 
     const ImageRGBA8 image = read_image_rgba8(o.exemplar);
     const Exemplar exemplar = make_exemplar(image, o.exemplar);
@@ -74,7 +77,7 @@ int run_ribbon(const RibbonOptions& o) {
     desc.params.piece = o.piece.value_or(std::max(1.0f, std::round(desc.params.width / 2.0f)));
     desc.seed = o.seed;
     desc.stitch = o.stitch;
-    desc.reference = o.reference;
+    desc.site = site;
     const Ribbon ribbon = build_ribbon(curve, desc.params);
     if (!size) {
         const glm::vec2 hi = ribbon.max_corner();
@@ -94,7 +97,7 @@ int run_ribbon(const RibbonOptions& o) {
     }
 
     const bool validation = o.validation || validation_from_environment();
-    Context ctx({.device = device, .validation = validation});
+    Context ctx({.device = device, .validation = validation, .compute_site = site});
     std::printf("device: %s\n", ctx.info().describe().c_str());
     std::printf("exemplar: %s (%dx%d), curve: %s (%.1f px, %s)\n", o.exemplar.c_str(), exemplar.width,
                 exemplar.height, o.curve.c_str(), double(curve.length()), curve.closed() ? "closed" : "open");
@@ -118,7 +121,7 @@ int run_ribbon(const RibbonOptions& o) {
     if (!s.solution.row_ms.empty()) mean_row /= double(s.solution.row_ms.size());
     std::printf("avoidance: %zu forbidden pixels\n", s.forbidden.count());
     std::printf("dp (%s): %.0f ms, %.2f ms per row; seam cost %.1f (greedy %.1f, random %.1f)%s\n",
-                o.reference ? "C++ reference" : "GPU", s.dp_ms, mean_row, double(s.solution.total_cost),
+                s.dp_on_host ? "C++, on the host" : "Vulkan compute", s.dp_ms, mean_row, double(s.solution.total_cost),
                 double(s.greedy_cost), double(s.random_cost),
                 curve.closed() ? (s.solution.closed_by_first_dp ? "; cycle from one DP" : "; cycle from a fixed-start DP")
                                : "");
@@ -205,7 +208,11 @@ Runner add_ribbon_command(CLI::App& app) {
                     "greedy_cost, random_cost, valid_counts, row_ms");
     cmd->add_option("--avoid", o->avoid, "Avoidance map (PNG of the output size): alpha >= 128 is forbidden (§3.1)");
     cmd->add_flag("--transparent", o->transparent, "Keep the transparent background (default: over white)");
-    cmd->add_flag("--reference", o->reference, "Run the DP and stitching with the plain C++ reference instead");
+    cmd->add_option("--compute", o->compute,
+                    "Where the DP and stitching run: auto (the host on CPU devices such as lavapipe, where the "
+                    "threaded C++ DP is faster; the device on GPUs), device (Vulkan compute), or host (C++)")
+        ->capture_default_str();
+    cmd->add_flag("--reference", o->reference, "The same as --compute host: the plain C++ DP and stitching");
     cmd->add_option("--device", o->device, "auto, cpu (lavapipe), gpu, or an index from `linework devices`")
         ->capture_default_str();
     cmd->add_flag("--validation", o->validation, "Enable the Khronos validation layer (also LINEWORK_VALIDATION=1)");
