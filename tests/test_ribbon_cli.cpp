@@ -67,6 +67,28 @@ TEST(RibbonCli, SynthesizesAndDumpsTheDp) {
     EXPECT_LE(d["total_cost"].get<double>(), d["random_cost"].get<double>());
 }
 
+// On a CPU device `auto` runs the C++ DP and stitching; `--compute device` the Vulkan
+// kernels; the two give the same pixels and the same DP.
+TEST(RibbonCli, AutoTakesTheHostOnCpuDevicesWithTheKernelsResults) {
+    const RibbonFiles f;
+    std::string dumps[2];
+    const char* sites[2] = {"auto", "device"};
+    for (int i = 0; i < 2; ++i) {
+        const fs::path out = f.dir / (std::string(sites[i]) + ".png"), dump = f.dir / (std::string(sites[i]) + ".json");
+        const auto r = run_linework("ribbon " + quote(f.exemplar) + " --curve " + quote(f.curve) + " -o " + quote(out) +
+                                    " --piece 4 --stitch --seed 5 --device cpu --compute " + sites[i] + " --dump-dp " +
+                                    quote(dump));
+        ASSERT_EQ(r.exit_code, 0) << r.output;
+        EXPECT_NE(r.output.find(i == 0 ? "dp (C++, on the host)" : "dp (Vulkan compute)"), std::string::npos)
+            << r.output;
+        auto d = nlohmann::json::parse(std::ifstream(dump));
+        d.erase("row_ms");
+        dumps[i] = d.dump();
+    }
+    EXPECT_EQ(dumps[0], dumps[1]);
+    EXPECT_TRUE(read_image_rgba8(f.dir / "auto.png").pixels == read_image_rgba8(f.dir / "device.png").pixels);
+}
+
 TEST(RibbonCli, ClosedSvgCurveEndsWhereItStarts) {
     const RibbonFiles f;
     const fs::path svg = f.dir / "loop.svg", dump = f.dir / "dp.json";
