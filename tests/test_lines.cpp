@@ -1,6 +1,7 @@
 // Feature lines: analytic checks, GPU against the CPU reference, SVG output.
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <regex>
 #include <sstream>
 
@@ -204,6 +205,25 @@ TEST_F(LinesTest, HiddenLinesAreHiddenAndCanBeDrawn) {
         return n;
     };
     EXPECT_GT(ink(dashed.image.color), ink(frame.image.color) + 20);
+}
+
+// Threads over face blocks merge in face order: the same segments, bit for bit, in the same
+// order, at any thread count (blocks of 4096 faces and up: 2 to 4 blocks here).
+TEST(LinesThreads, SameSegmentsInTheSameOrderAtAnyThreadCount) {
+    const LoadedScene scene = load_scene(scene_for_model(test::data_dir() / "models/LeePerrySmith/LeePerrySmith.glb"));
+    const LineMesh lm = build_line_mesh(scene.mesh, 30.0f);
+    LineParams params;
+    params.creases = params.borders = true;
+    const std::vector<LineSegment> one = extract_lines_reference(lm, scene.camera.eye, params, 1);
+    size_t suggestive = 0;
+    for (const LineSegment& s : one) suggestive += s.type == uint32_t(LineType::Suggestive);
+    ASSERT_GT(one.size(), 200u);
+    EXPECT_GT(suggestive, 10u);
+    for (size_t threads : {2u, 3u, 7u}) {
+        const std::vector<LineSegment> many = extract_lines_reference(lm, scene.camera.eye, params, threads);
+        ASSERT_EQ(many.size(), one.size()) << threads << " threads";
+        EXPECT_EQ(std::memcmp(many.data(), one.data(), one.size() * sizeof(LineSegment)), 0) << threads << " threads";
+    }
 }
 
 }  // namespace

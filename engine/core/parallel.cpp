@@ -10,8 +10,9 @@ namespace lw {
 size_t worker_count() { return std::max<size_t>(1, std::thread::hardware_concurrency()); }
 
 size_t parallel_for(size_t count, size_t min_chunk,
-                    const std::function<void(size_t begin, size_t end, size_t chunk)>& body) {
-    const size_t chunks = std::clamp<size_t>(count / std::max<size_t>(min_chunk, 1), 1, worker_count());
+                    const std::function<void(size_t begin, size_t end, size_t chunk)>& body, size_t max_chunks) {
+    const size_t chunks =
+        std::clamp<size_t>(count / std::max<size_t>(min_chunk, 1), 1, max_chunks > 0 ? max_chunks : worker_count());
     if (chunks == 1) {
         body(0, count, 0);
         return 1;

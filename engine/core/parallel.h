@@ -13,8 +13,8 @@ namespace lw {
 
 size_t worker_count();  // std::thread::hardware_concurrency, at least 1
 
-// Returns the number of chunks used (≤ worker_count()).
+// Returns the number of chunks used (≤ max_chunks, 0: ≤ worker_count()).
 size_t parallel_for(size_t count, size_t min_chunk,
-                    const std::function<void(size_t begin, size_t end, size_t chunk)>& body);
+                    const std::function<void(size_t begin, size_t end, size_t chunk)>& body, size_t max_chunks = 0);
 
 }  // namespace lw

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 
+#include "core/parallel.h"
 #include "lines/view_quantities.h"
 
 namespace lw {
@@ -128,17 +129,12 @@ void feature_edges(const LineMesh& lm, uint32_t f, const LineParams& params, std
 
 }  // namespace
 
-std::vector<LineSegment> extract_lines_reference(const LineMesh& lm, const glm::vec3& eye, const LineParams& params) {
-    const ScaledThresholds thresholds = scaled_thresholds(params, lm.feature_size);
-    const auto& curv = lm.curvature;
-    const size_t nv = lm.mesh.positions.size();
-    std::vector<VertexView> view(nv);
-    for (size_t i = 0; i < nv; ++i)
-        view[i] = vertex_view(lm.mesh.positions[i], curv.normals[i], curv.pdir1[i], curv.pdir2[i], curv.k1[i],
-                              curv.k2[i], curv.dcurv[i], eye, thresholds.sug_thresh);
+namespace {
 
-    std::vector<LineSegment> segments;
-    for (uint32_t f = 0; f < lm.mesh.faces.size(); ++f) {
+// Faces [begin, end) in order: what one block appends.
+void extract_faces(const LineMesh& lm, const std::vector<VertexView>& view, const LineParams& params,
+                   const ScaledThresholds& thresholds, uint32_t begin, uint32_t end, std::vector<LineSegment>& segments) {
+    for (uint32_t f = begin; f < end; ++f) {
         const glm::uvec3 c = lm.mesh.faces[f];
         const VertexView& v0 = view[c[0]];
         const VertexView& v1 = view[c[1]];
@@ -165,6 +161,40 @@ std::vector<LineSegment> extract_lines_reference(const LineMesh& lm, const glm::
         }
         if (params.creases || params.borders) feature_edges(lm, f, params, segments);
     }
+}
+
+}  // namespace
+
+std::vector<LineSegment> extract_lines_reference(const LineMesh& lm, const glm::vec3& eye, const LineParams& params,
+                                                 size_t threads) {
+    const ScaledThresholds thresholds = scaled_thresholds(params, lm.feature_size);
+    const auto& curv = lm.curvature;
+    const size_t nv = lm.mesh.positions.size();
+    threads = std::max<size_t>(threads, 1);
+    std::vector<VertexView> view(nv);
+    parallel_for(
+        nv, 4096,
+        [&](size_t begin, size_t end, size_t) {
+            for (size_t i = begin; i < end; ++i)
+                view[i] = vertex_view(lm.mesh.positions[i], curv.normals[i], curv.pdir1[i], curv.pdir2[i], curv.k1[i],
+                                      curv.k2[i], curv.dcurv[i], eye, thresholds.sug_thresh);
+        },
+        threads);
+
+    const size_t faces = lm.mesh.faces.size();
+    std::vector<std::vector<LineSegment>> blocks(threads);
+    const size_t used = parallel_for(
+        faces, 4096,
+        [&](size_t begin, size_t end, size_t block) {
+            extract_faces(lm, view, params, thresholds, uint32_t(begin), uint32_t(end), blocks[block]);
+        },
+        threads);
+    if (used == 1) return std::move(blocks[0]);
+    size_t total = 0;
+    for (const auto& b : blocks) total += b.size();
+    std::vector<LineSegment> segments;
+    segments.reserve(total);
+    for (const auto& b : blocks) segments.insert(segments.end(), b.begin(), b.end());
     return segments;
 }
 

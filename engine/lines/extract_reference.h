@@ -19,8 +19,12 @@
 
 namespace lw {
 
+// `threads` > 1 splits the vertices and the faces into that many contiguous blocks and
+// concatenates the blocks' segments in face order: the same segments in the same order
+// whatever the count. Frames extract on one thread (1, the default): the other core is
+// lavapipe's while it draws the surface (frame_renderer.cpp).
 [[nodiscard]] std::vector<LineSegment> extract_lines_reference(const LineMesh& mesh, const glm::vec3& eye,
-                                                               const LineParams& params);
+                                                               const LineParams& params, size_t threads = 1);
 
 // The scaled thresholds both implementations use: sug_thresh/fs² and (fade on) 0.03/fs².
 struct ScaledThresholds {

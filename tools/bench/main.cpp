@@ -37,6 +37,7 @@
 #include "scene/scene.h"
 #include "stroke/slam.h"
 #include "pattern_bench.h"
+#include "extract_bench.h"
 #include "ribbon_bench.h"
 #include "slam_bench.h"
 
@@ -52,6 +53,10 @@ struct BenchOptions {
     bool shaded = false;     // lines: toon shading under the lines (default: depth only)
     bool coherence = false;  // lines: parameterize every visible path (splat, votes, RANSAC)
     bool strokes = false;    // lines: draw silhouettes and suggestive contours as SLAM strokes (implies coherence)
+    lw::bench::CameraFlags camera;  // over the framing camera
+    bool extract_only = false;      // lines: the host extraction alone (extract_bench.h)
+    std::string types;
+    int threads = 1, repeat = 50;
 };
 
 struct Series {
@@ -86,6 +91,7 @@ BenchScene prepare(const BenchOptions& b, const lw::Context& ctx) {
     s.scene = lw::load_scene(desc);
     lw::Timer subdivide_timer;
     s.scene.mesh = lw::subdivide_midpoint(s.scene.mesh, b.subdivide);
+    lw::bench::apply_camera_flags(s.scene.camera, b.camera);
     s.camera = lw::camera_matrices(s.scene.camera, float(s.width) / float(s.height), s.scene.bounds);
     std::printf("device: %s\n", ctx.info().describe().c_str());
     std::printf("mesh: %s subdivided %dx: %zu triangles (%.0f ms to build)\n", b.model.c_str(), b.subdivide,
@@ -227,6 +233,10 @@ void add_options(CLI::App* cmd, BenchOptions& o) {
     cmd->add_option("--frames", o.frames, "Timed frames")->check(CLI::Range(1, 100000))->capture_default_str();
     cmd->add_option("--device", o.device, "auto, cpu, gpu or an index")->capture_default_str();
     cmd->add_option("--compute", o.compute, lw::kComputeSiteHelp)->capture_default_str();
+    cmd->add_option("--eye", o.camera.eye, "Camera position x,y,z (default: the camera framing the model)");
+    cmd->add_option("--target", o.camera.target, "Point looked at x,y,z");
+    cmd->add_option("--up", o.camera.up, "Up vector x,y,z");
+    cmd->add_option("--fov", o.camera.fov, "Vertical field of view in degrees");
 }
 
 }  // namespace
@@ -241,6 +251,14 @@ int main(int argc, char** argv) {
     CLI::App* lines_cmd = app.add_subcommand("lines", "The whole line frame and its stages.");
     add_options(lines_cmd, lines);
     lines_cmd->add_flag("--shaded", lines.shaded, "Draw the lines over toon shading instead of the background");
+    lines_cmd->add_flag("--extract-only", lines.extract_only,
+                        "Time the host extraction alone (no device): one line `extract: median X ms`, to set beside "
+                        "rtsc's per-view extraction");
+    lines_cmd->add_option("--threads", lines.threads, "--extract-only: threads over face blocks")->capture_default_str();
+    lines_cmd->add_option("--types", lines.types,
+                          "--extract-only: line types, e.g. silhouette,suggestive (default: the four default types)");
+    lines_cmd->add_option("--repeat", lines.repeat, "--extract-only: timed runs (after one warm-up)")
+        ->capture_default_str();
     lw::bench::RibbonBenchOptions ribbon;
     CLI::App* ribbon_cmd = lw::bench::add_ribbon_bench(app, ribbon);
     lw::bench::PatternBenchOptions pattern;
@@ -264,6 +282,10 @@ int main(int argc, char** argv) {
     }
     try {
         if (surface_cmd->parsed()) return run_surface(surface);
+        if (lines_cmd->parsed() && lines.extract_only)
+            return lw::bench::run_extract_bench({.model = lines.model, .subdivide = lines.subdivide,
+                                                 .camera = lines.camera, .types = lines.types,
+                                                 .threads = lines.threads, .repeat = lines.repeat});
         if (lines_cmd->parsed()) return run_lines(lines);
         if (ribbon_cmd->parsed()) return lw::bench::run_ribbon_bench(ribbon);
         if (pattern_cmd->parsed()) return lw::bench::run_pattern_bench(pattern);

@@ -1,0 +1,82 @@
+#include "extract_bench.h"
+
+#include <cstdio>
+#include <sstream>
+#include <vector>
+
+#include "core/error.h"
+#include "core/timer.h"
+#include "geometry/subdivide.h"
+#include "lines/extract_reference.h"
+#include "lines/line_mesh.h"
+#include "scene/scene.h"
+#include "scene/scene_file.h"
+#include "stats.h"
+
+namespace lw::bench {
+
+namespace {
+
+glm::vec3 vec3_flag(const std::string& text, const char* flag) {
+    glm::vec3 v;
+    char rest = 0;
+    if (std::sscanf(text.c_str(), "%f,%f,%f%c", &v.x, &v.y, &v.z, &rest) != 3)
+        throw usage_error(std::string(flag) + ": expected x,y,z, got \"" + text + "\"");
+    return v;
+}
+
+LineParams types_flag(const std::string& types) {
+    LineParams params;
+    if (types.empty()) return params;
+    params.silhouettes = params.suggestive = params.creases = params.borders = false;
+    std::stringstream list(types);
+    for (std::string t; std::getline(list, t, ',');) {
+        if (t == "silhouette") params.silhouettes = true;
+        else if (t == "suggestive") params.suggestive = true;
+        else if (t == "crease") params.creases = true;
+        else if (t == "border") params.borders = true;
+        else throw usage_error("--types: unknown line type \"" + t + "\" (silhouette, suggestive, crease, border)");
+    }
+    return params;
+}
+
+}  // namespace
+
+void apply_camera_flags(ViewCamera& camera, const CameraFlags& flags) {
+    if (!flags.eye.empty()) camera.eye = vec3_flag(flags.eye, "--eye");
+    if (!flags.target.empty()) camera.target = vec3_flag(flags.target, "--target");
+    if (!flags.up.empty()) camera.up = vec3_flag(flags.up, "--up");
+    if (flags.fov) {
+        if (!(*flags.fov > 0.0f && *flags.fov < 180.0f)) throw usage_error("--fov: must be between 0 and 180 degrees");
+        camera.fov_deg = *flags.fov;
+    }
+}
+
+int run_extract_bench(const ExtractBenchOptions& o) {
+    if (o.threads < 1) throw usage_error("--threads: must be 1 or more");
+    if (o.repeat < 1) throw usage_error("--repeat: must be 1 or more");
+    const LineParams params = types_flag(o.types);
+    LoadedScene scene = load_scene(scene_for_model(o.model));
+    scene.mesh = subdivide_midpoint(scene.mesh, o.subdivide);
+    ViewCamera camera = scene.camera;
+    apply_camera_flags(camera, o.camera);
+    Timer build;
+    const LineMesh lm = build_line_mesh(scene.mesh, params.crease_angle_deg);
+    std::printf("mesh: %s subdivided %dx: %zu triangles, %zu welded vertices (line mesh %.0f ms)\n", o.model.c_str(),
+                o.subdivide, lm.mesh.faces.size(), lm.mesh.positions.size(), build.elapsed_ms());
+    std::printf("eye: %g,%g,%g; types: %s; %d thread(s)\n", double(camera.eye.x), double(camera.eye.y),
+                double(camera.eye.z), o.types.empty() ? "the defaults" : o.types.c_str(), o.threads);
+    std::vector<double> ms;
+    size_t segments = 0;
+    for (int r = -1; r < o.repeat; ++r) {  // one warm-up run
+        Timer t;
+        segments = extract_lines_reference(lm, camera.eye, params, size_t(o.threads)).size();
+        if (r >= 0) ms.push_back(t.elapsed_ms());
+    }
+    const Stats s = stats(ms);
+    std::printf("extract: median %.3f ms (min %.3f, max %.3f) over %d runs, %zu segments\n", s.median, s.min, s.max,
+                o.repeat, segments);
+    return 0;
+}
+
+}  // namespace lw::bench
