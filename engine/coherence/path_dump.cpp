@@ -1,9 +1,9 @@
 #include "coherence/path_dump.h"
 
 #include <algorithm>
-#include <optional>
 #include <cmath>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <unordered_map>
 
@@ -106,22 +106,17 @@ struct SampleGrid {
                     if (glm::length(e.sample().pixel - p) <= radius) f(e);
             }
     }
+    // The nearest sample within `radius` (of equally near ones, the last visited).
     std::optional<Entry> nearest(glm::vec2 p, float radius) const {
         std::optional<Entry> best;
         float best_d = radius;
-        const int cx = int(std::floor(p.x / cell)), cy = int(std::floor(p.y / cell));
-        for (int y = cy - 1; y <= cy + 1; ++y)
-            for (int x = cx - 1; x <= cx + 1; ++x) {
-                const auto it = buckets.find(key(x, y));
-                if (it == buckets.end()) continue;
-                for (const Entry& e : it->second) {
-                    const float d = glm::length(e.sample().pixel - p);
-                    if (d <= best_d) {
-                        best_d = d;
-                        best = e;
-                    }
-                }
+        for_each_within(p, radius, [&](const Entry& e) {
+            const float d = glm::length(e.sample().pixel - p);
+            if (d <= best_d) {
+                best_d = d;
+                best = e;
             }
+        });
         return best;
     }
 };

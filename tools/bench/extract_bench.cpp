@@ -9,6 +9,7 @@
 #include "geometry/subdivide.h"
 #include "lines/extract_reference.h"
 #include "lines/line_mesh.h"
+#include "lines/line_types.h"
 #include "scene/scene.h"
 #include "scene/scene_file.h"
 #include "stats.h"
@@ -28,14 +29,12 @@ glm::vec3 vec3_flag(const std::string& text, const char* flag) {
 LineParams types_flag(const std::string& types) {
     LineParams params;
     if (types.empty()) return params;
-    params.silhouettes = params.suggestive = params.creases = params.borders = false;
+    for (int t = 0; t < kLineTypeCount; ++t) set_line_type_enabled(params, LineType(t), false);
     std::stringstream list(types);
-    for (std::string t; std::getline(list, t, ',');) {
-        if (t == "silhouette") params.silhouettes = true;
-        else if (t == "suggestive") params.suggestive = true;
-        else if (t == "crease") params.creases = true;
-        else if (t == "border") params.borders = true;
-        else throw usage_error("--types: unknown line type \"" + t + "\" (silhouette, suggestive, crease, border)");
+    for (std::string name; std::getline(list, name, ',');) {
+        const std::optional<LineType> type = line_type_from_name(name);
+        if (!type) throw usage_error("--types: unknown line type \"" + name + "\" (silhouette, suggestive, crease, border)");
+        set_line_type_enabled(params, *type, true);
     }
     return params;
 }

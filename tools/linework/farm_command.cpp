@@ -32,6 +32,12 @@ struct FarmOptions {
 const std::vector<std::string> kFarmOwn = {"--output", "--frames", "--chunk", "--exact",
                                            "--warmup", "--throttle", "--cpus-per-task"};
 
+const std::vector<std::string> kStateTaskLeavesOut = [] {
+    std::vector<std::string> names = kFarmOwn;
+    names.insert(names.end(), {"--svg", "--exr"});
+    return names;
+}();
+
 std::filesystem::path this_binary() {
     std::error_code ec;
     const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
@@ -52,6 +58,7 @@ int run_farm(const FarmOptions& o, const CLI::App& cmd) {
                         .dir = std::filesystem::absolute(o.dir).lexically_normal(),
                         .working_dir = std::filesystem::current_path(),
                         .arguments = given_arguments(cmd, kFarmOwn),
+                        .state_arguments = given_arguments(cmd, kStateTaskLeavesOut),
                         .frames = parse_frames(o.frames),
                         .chunk = o.chunk,
                         .exact = o.exact,
@@ -72,11 +79,8 @@ int run_farm(const FarmOptions& o, const CLI::App& cmd) {
             throw Error(plan_file.string() + ": the folder holds another shot's plan; choose another -o folder, or "
                                              "remove this one to start over");
     }
-    for (const std::filesystem::path& d : {plan.request.dir, plan.logs()}) {
-        std::error_code ec;
-        std::filesystem::create_directories(d, ec);
-        if (ec) throw Error(d.string() + ": cannot create (" + ec.message() + ")");
-    }
+    create_folder(plan.request.dir, "farm");
+    create_folder(plan.logs(), "log");
     write_text_atomically(plan_file, text);
     write_slurm_scripts(plan, o.throttle, o.cpus_per_task);
     if (o.exact && o.render.scene.device == "auto")

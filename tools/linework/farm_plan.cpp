@@ -29,18 +29,6 @@ std::vector<std::string> render_command(const FarmRequest& r, std::initializer_l
     return argv;
 }
 
-// The state task draws no frames: --svg and --exr are refused with --state-only. The other
-// frame options stay, so that its states carry the chunks' signature.
-std::vector<std::string> without_file_options(std::vector<std::string> arguments) {
-    for (const char* option : {"--svg", "--exr"}) {
-        const auto at = std::find(arguments.begin(), arguments.end(), option);
-        if (at == arguments.end()) continue;
-        const bool has_value = std::string(option) == "--svg" && at + 1 != arguments.end();
-        arguments.erase(at, at + (has_value ? 2 : 1));
-    }
-    return arguments;
-}
-
 }  // namespace
 
 FarmPlan plan_farm(const FarmRequest& request) {
@@ -58,7 +46,7 @@ FarmPlan plan_farm(const FarmRequest& request) {
         // Through the frame before the last chunk: its state is the last one needed.
         const FrameRange drawn{r.frames.first, chunks.back().first - 1};
         FarmRequest state_request = r;
-        state_request.arguments = without_file_options(r.arguments);
+        state_request.arguments = r.state_arguments;
         plan.phases.push_back(
             {"state",
              {{.id = "state",

@@ -41,6 +41,9 @@ struct FarmRequest {
     std::filesystem::path dir;         // the farm folder (absolute)
     std::filesystem::path working_dir; // where the tasks run: relative paths in `arguments` hold there
     std::vector<std::string> arguments;  // the frame-shaping render arguments, the scene first
+    // The same less --svg and --exr, which --state-only refuses: the state task's. The other
+    // frame options stay, so that its states carry the chunks' signature.
+    std::vector<std::string> state_arguments;
     FrameRange frames;
     int chunk = 0;
     bool exact = true;

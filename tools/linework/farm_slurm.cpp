@@ -62,9 +62,7 @@ std::string phase_script(const FarmPlan& plan, size_t index, int throttle, int c
 
 void write_slurm_scripts(const FarmPlan& plan, int throttle, int cpus_per_task) {
     const std::filesystem::path dir = plan.request.dir / "slurm";
-    std::error_code ec;
-    std::filesystem::create_directories(dir, ec);
-    if (ec) throw Error(dir.string() + ": cannot create (" + ec.message() + ")");
+    create_folder(dir, "Slurm script");
     std::string submit =
         "#!/usr/bin/env bash\n"
         "# Submits the shot of plan.json to Slurm: one job array per phase, each phase after the one\n"

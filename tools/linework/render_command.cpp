@@ -76,12 +76,14 @@ std::optional<RenderState> read_start_state(const RenderOptions& o) {
 // every state is there; nothing when none is.
 std::optional<int> resume_saved_states(const RenderOptions& o, FrameRange range, FrameRange part, SceneSession& session) {
     for (int f = part.last; f >= part.first; --f) {
-        if (!ends_chunk(f, range, o.chunk) || !std::filesystem::exists(saved_state_path(o.save_states, f + 1))) continue;
-        const RenderState state = read_render_state(saved_state_path(o.save_states, f + 1));
+        if (!ends_chunk(f, range, o.chunk)) continue;
+        const std::filesystem::path file = saved_state_path(o.save_states, f + 1);
+        if (!std::filesystem::exists(file)) continue;
+        const RenderState state = read_render_state(file);
         if (state.signature != o.state_signature || state.frame != f) continue;  // rewritten below
         if (f == part.last) return f + 1;
-        session.restore({frame_time(f, range, session.desc().animation.fps).seconds, state.snapshot});
-        std::printf("resuming at frame %d from %s\n", f + 1, saved_state_path(o.save_states, f + 1).string().c_str());
+        restore_render_state(session, state, range);
+        std::printf("resuming at frame %d from %s\n", f + 1, file.string().c_str());
         return f + 1;
     }
     return std::nullopt;
@@ -96,7 +98,6 @@ struct Shot {
 // The first frame to draw, with the session's state restored where it starts from saved state.
 int first_frame(const RenderOptions& o, const Shot& shot, const FrameFiles& files,
                 const std::optional<RenderState>& start_state, SceneSession& session) {
-    const float fps = session.desc().animation.fps;
     if (o.resume) {
         const std::optional<int> resumed = o.state_only
                                                ? resume_saved_states(o, shot.range, shot.part, session)
@@ -107,7 +108,7 @@ int first_frame(const RenderOptions& o, const Shot& shot, const FrameFiles& file
         if (start_state->frame != shot.part.first - 1)
             throw Error(o.start_state + ": holds the state after frame " + std::to_string(start_state->frame) +
                         ", but this part starts at frame " + std::to_string(shot.part.first));
-        session.restore({frame_time(start_state->frame, shot.range, fps).seconds, start_state->snapshot});
+        restore_render_state(session, *start_state, shot.range);
     }
     return shot.part.first - o.warmup;
 }
@@ -186,13 +187,8 @@ int run_render(const RenderOptions& o) {
     SceneDesc desc = scene_from_options(o.scene);
     apply_frame_overrides(o, desc);
     FrameFiles files{o.output, o.svg, o.state_only ? std::string() : o.dump_paths, o.exr};
-    if (o.state_only) files.exr = false;
     if (!o.state_only) create_folders(files);
-    if (!o.save_states.empty()) {
-        std::error_code ec;
-        std::filesystem::create_directories(o.save_states, ec);
-        if (ec) throw Error(o.save_states + ": cannot create the --save-states folder (" + ec.message() + ")");
-    }
+    if (!o.save_states.empty()) create_folder(o.save_states, "the --save-states");
     const std::optional<RenderState> start_state = read_start_state(o);
 
     const bool validation = validation_on(o.scene);

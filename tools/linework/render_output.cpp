@@ -49,14 +49,8 @@ std::filesystem::path svg_path(const FrameFiles& files, int f) {
 }  // namespace
 
 void create_folders(const FrameFiles& files) {
-    for (const std::filesystem::path& dir : {files.out_dir, std::filesystem::path(files.dump_paths)}) {
-        if (dir.empty()) continue;
-        std::error_code ec;
-        std::filesystem::create_directories(dir, ec);
-        if (ec || !std::filesystem::is_directory(dir))
-            throw Error(dir.string() + ": cannot create " + (dir == files.out_dir ? "output" : "dump") + " folder" +
-                        (ec ? " (" + ec.message() + ")" : ""));
-    }
+    if (!files.out_dir.empty()) create_folder(files.out_dir, "output");
+    if (!files.dump_paths.empty()) create_folder(files.dump_paths, "dump");
 }
 
 void write_frame_files(const FrameFiles& files, const SceneSession& session, const Frame& frame, int f) {
@@ -106,6 +100,10 @@ int interrupted(int frame, int first) {
     return 130;
 }
 
+void restore_render_state(SceneSession& session, const RenderState& state, FrameRange range) {
+    session.restore({frame_time(state.frame, range, session.desc().animation.fps).seconds, state.snapshot});
+}
+
 // --resume: the first frame still to render (the state restored), or past the range. The
 // state is written after each frame's PNG (and once before the part's first frame), so a
 // render killed between the two leaves it one frame behind: that frame is drawn again.
@@ -127,7 +125,7 @@ std::optional<int> resume_point(const std::string& signature, const FrameFiles& 
     if (state.frame != first_missing - 1 && state.frame != first_missing - 2)
         throw Error(state_path.string() + ": holds the state after frame " + std::to_string(state.frame) +
                     ", but the first missing frame is " + std::to_string(first_missing));
-    session.restore({frame_time(state.frame, range, session.desc().animation.fps).seconds, state.snapshot});
+    restore_render_state(session, state, range);
     const int start = state.frame + 1;
     if (start < first_missing)
         std::printf("resuming at frame %d (drawn again: it was written, its state was not)\n", start);

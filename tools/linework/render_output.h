@@ -8,6 +8,7 @@
 #include <string>
 
 #include "render/frame_renderer.h"
+#include "render_state.h"
 #include "scene/camera_path.h"
 #include "session/scene_session.h"
 
@@ -37,6 +38,9 @@ void write_frame_files(const FrameFiles& files, const SceneSession& session, con
 
 // One line per frame of a single-frame render: time, GPU passes, lines, files written.
 void print_frame_report(const FrameFiles& files, const SceneSession& session, const Frame& frame, int f);
+
+// The state after frame state.frame into `session`, posed at that frame's time in `range`.
+void restore_render_state(SceneSession& session, const RenderState& state, FrameRange range);
 
 // --resume: the first frame of `part` still to render, its state restored into `session`
 // from files.progress_state (past the part when every frame is there; nothing when no frame

@@ -83,6 +83,13 @@ void write_atomically(const std::filesystem::path& path, const std::function<voi
     if (ec) throw Error(path.string() + ": cannot write (" + ec.message() + ")");
 }
 
+void create_folder(const std::filesystem::path& dir, const std::string& what) {
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec || !std::filesystem::is_directory(dir))
+        throw Error(dir.string() + ": cannot create " + what + " folder" + (ec ? " (" + ec.message() + ")" : ""));
+}
+
 void write_text_atomically(const std::filesystem::path& path, const std::string& text) {
     write_atomically(path, [&](const std::filesystem::path& file) {
         std::ofstream out(file, std::ios::binary);

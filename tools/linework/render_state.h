@@ -31,6 +31,9 @@ void write_render_state(const std::filesystem::path& path, const RenderState& st
 // still see the extension) and renames the result onto `path`: a reader, or a render killed
 // mid-write, never leaves a half-written file under the final name.
 void write_atomically(const std::filesystem::path& path, const std::function<void(const std::filesystem::path&)>& write);
+// Makes `dir` (and its parents); "DIR: cannot create WHAT folder (reason)" otherwise.
+void create_folder(const std::filesystem::path& dir, const std::string& what);
+
 // `text` into `path` the same way; errors name the file.
 void write_text_atomically(const std::filesystem::path& path, const std::string& text);
 
