@@ -1,7 +1,7 @@
 // slam_synth/small_linalg.h — the few dense operations the texture model needs on matrices
 // of at most a few dozen rows (correlation matrices, the autocorrelation solve): symmetric
-// eigen-decomposition (cyclic Jacobi), matrix functions of symmetric matrices, and a linear
-// solve with partial pivoting. All in double precision.
+// eigen-decomposition, matrix functions of symmetric matrices, and a linear solve with
+// partial pivoting. All in double precision, computed by Eigen 3.4 on views of Matrix.
 #pragma once
 
 #include <cstddef>
@@ -21,7 +21,8 @@ struct Matrix {
 [[nodiscard]] Matrix multiply(const Matrix& x, const Matrix& y);
 [[nodiscard]] Matrix transpose(const Matrix& x);
 
-// Eigenvalues (any order) and eigenvectors (columns) of a symmetric matrix.
+// Eigenvalues (any order; Eigen gives them ascending) and orthonormal eigenvectors (columns,
+// signs arbitrary) of a symmetric matrix; m is symmetrized first, (m + mᵀ)/2.
 void symmetric_eigen(const Matrix& m, std::vector<double>& values, Matrix& vectors);
 
 // V·diag(λ^power)·Vᵀ of a symmetric matrix. Eigenvalues at or below `floor` × the largest

@@ -16,6 +16,7 @@ packages=(
   xvfb xauth                                # viewer tests: xvfb-run, a display without a screen
   libcgal-dev                               # Delaunay triangulations of the stroke-pattern synthesizer
   libfftw3-dev                              # FFTs of the SLAM synthesizer (fftw3f)
+  libeigen3-dev                             # its small dense linear algebra (eigen-decompositions, solves)
   libgtest-dev libbenchmark-dev
   python3-dev python3-pybind11 python3-numpy  # the Python module (python/) and its arrays
   python3-pytest                            # its tests (tests/python)
