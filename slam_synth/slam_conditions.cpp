@@ -25,12 +25,26 @@ double mean_level_step(const Slam& slam) {
     return count ? sum / double(count) : 0.0;
 }
 
+double level_rmse(const Slam& slam, int d) {
+    double sum = 0.0;
+    size_t count = 0;
+    for (int i = 0; i + d < slam.levels; ++i)
+        for (int r = 0; r < slam.height; ++r)
+            for (int x = 0; x < slam.length; ++x, ++count) {
+                const double e = double(slam.at(i + d, r, x)) - double(slam.at(i, r, x));
+                sum += e * e;
+            }
+    return count ? std::sqrt(sum / double(count)) : 0.0;
+}
+
 SlamConditions measure_slam_conditions(const SlamSynthesis& s) {
     const Slam& slam = s.slam;
     SlamConditions c;
     c.top_periodicity = top_level_periodicity(s.levels.back());
     c.self_similarity = slam_self_similarity_error(slam);
     c.mean_level_step = mean_level_step(slam);
+    c.rmse_adjacent = level_rmse(slam, 1);
+    c.rmse_ends = level_rmse(slam, slam.levels - 1);
     std::vector<double> step(static_cast<size_t>(slam.length), 0.0);  // d(x), x + 1 taken modulo L
     for (int i = 0; i < slam.levels; ++i)
         for (int r = 0; r < slam.height; ++r)

@@ -14,6 +14,10 @@
 //   wrap is an ordinary column, not the largest). Every seed W_l takes the same value at
 //   x = 0, so the wrap is one location seen by all levels: compare it with the interior's
 //   spread (its largest column step), not only with its mean.
+// - level_rmse(d): the RMS difference between stored levels d apart, over texels and every
+//   pair (i, i + d). Smooth variation is rmse(1) small against rmse(N − 1), the distance from
+//   A_0.5 to A_1.0: their ratio is what a finer level step buys (it does not depend on how
+//   far the synthesis moved every level from its seed, which rmse(1) alone does).
 #pragma once
 
 #include "slam_builder.h"
@@ -26,10 +30,12 @@ struct SlamConditions {
     double mean_level_step = 0;
     double wrap_difference = 0, interior_difference = 0, interior_max = 0;
     double wrap_rank = 0;  // share of interior columns with a smaller step than the wrap
+    double rmse_adjacent = 0, rmse_ends = 0;  // level_rmse(1), level_rmse(N − 1)
 };
 
 [[nodiscard]] double top_level_periodicity(const Plane& top);
 [[nodiscard]] double mean_level_step(const Slam& slam);
+[[nodiscard]] double level_rmse(const Slam& slam, int d);
 [[nodiscard]] SlamConditions measure_slam_conditions(const SlamSynthesis& s);
 
 // How close level `index` and its seed come to the exemplar's statistics, per group

@@ -1,5 +1,6 @@
 // `linework slam EXEMPLAR.png -o OUT.exr` — a self-similar line artmap synthesized from one
 // exemplar (Bénard et al. 2010 §3.2: Portilla–Simoncelli synthesis on a seed pyramid).
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -12,6 +13,7 @@
 #include "progress.h"
 #include "slam_synth/slam_builder.h"
 #include "slam_synth/slam_conditions.h"
+#include "slam_synth/slam_fidelity.h"
 
 namespace lw::cli {
 
@@ -29,6 +31,31 @@ std::string decibels(double db) {
     if (std::isinf(db)) return db > 0 ? "inf" : "-inf";
     std::snprintf(text, sizeof text, "%.1f", db);
     return text;
+}
+
+void print_fidelity_row(const char* name, double grain, double exemplar_grain, const synth::ElementStatistics& e,
+                        const char* stray) {
+    std::printf("  %-14s %8.4f %6.2fx %8.2f %8.1f %7.3f %5d %s\n", name, grain, grain / std::max(exemplar_grain, 1e-12),
+                e.per_100_texels, e.mean_area, e.area_cv, e.holes, stray);
+}
+
+// Fidelity to the exemplar (slam_fidelity.h): grain along the length, elements, stray ink.
+void print_fidelity(const synth::SlamSynthesis& s, const synth::Plane& exemplar) {
+    const double exemplar_grain = synth::grain(exemplar, false);
+    std::printf("fidelity to the exemplar (each level at its synthesized length):\n");
+    std::printf("  %-14s %8s %7s %8s %8s %7s %5s %s\n", "", "grain", "/ exem.", "elem/100", "area", "area cv", "holes",
+                "stray ink in empty rows");
+    print_fidelity_row("exemplar", exemplar_grain, exemplar_grain, synth::element_statistics(exemplar, false), "");
+    double worst = 0.0;
+    for (size_t i = 0; i < s.levels.size(); ++i) {
+        const synth::LevelFidelity f = synth::level_fidelity(exemplar, s.levels[i]);
+        worst = std::max(worst, f.grain);
+        char name[32], stray[64];
+        std::snprintf(name, sizeof name, "level %.3f", s.slam.level_value(int(i)));
+        std::snprintf(stray, sizeof stray, "%.3f %% of %d rows", 100.0 * f.stray.share, f.stray.empty_rows);
+        print_fidelity_row(name, f.grain, exemplar_grain, f.elements, stray);
+    }
+    std::printf("  largest grain over all levels: %.4f (%.2fx the exemplar's)\n", worst, worst / std::max(exemplar_grain, 1e-12));
 }
 
 void print_report(const synth::SlamSynthesis& s, const synth::SlamSynthesisDesc& desc) {
@@ -78,9 +105,14 @@ int run_slam(const SlamOptions& o) {
                 c.top_periodicity);
     std::printf("self-similarity error (A_1.0 vs [A_0.5 A_0.5], as stored): %.3g\n", c.self_similarity);
     std::printf("mean |A_l - A_l+| between adjacent levels: %.4f\n", c.mean_level_step);
+    std::printf("RMS difference of adjacent levels %.4f, of A_0.5 and A_1.0 %.4f: ratio %.3f\n", c.rmse_adjacent,
+                c.rmse_ends, c.rmse_ends > 0 ? c.rmse_adjacent / c.rmse_ends : 0.0);
     std::printf("tiling: wrap-around column step %.4f; interior mean %.4f, largest %.4f (the wrap ranks above %.0f %% of them)\n",
                 c.wrap_difference, c.interior_difference, c.interior_max, 100.0 * c.wrap_rank);
-    if (o.report) print_report(s, desc);
+    if (o.report) {
+        print_report(s, desc);
+        print_fidelity(s, ink);
+    }
 
     write_slam(o.output, s.slam);
     std::printf("wrote %s\n", o.output.c_str());
@@ -125,7 +157,9 @@ Runner add_slam_command(CLI::App& app) {
         ->check(CLI::Range(0, 256));
     cmd->add_flag("--global", o->global, "Impose every statistic per texture (the 1D model), not mean/variance per row");
     cmd->add_flag("--report", o->report,
-                  "Print the SNR of each statistic group (as textureSynth) of levels 0.5 and 1.0 and their seeds");
+                  "Print the SNR of each statistic group (as textureSynth) of levels 0.5 and 1.0 and their seeds,\n"
+                  "and the fidelity to the exemplar: grain along the length, elements (ink > 0.5: count per 100\n"
+                  "texels, area, its coefficient of variation, hollow elements) and stray ink in empty rows");
     return [o] { return run_slam(*o); };
 }
 
