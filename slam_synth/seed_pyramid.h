@@ -1,8 +1,9 @@
 // slam_synth/seed_pyramid.h — the synthesis seeds of a SLAM (Bénard et al. 2010 §3.2.1).
 //
 // W_source: uniform white noise, `rows` × `length` (Lmax). W_f: W_source filtered along the
-// length only by a Gaussian of width 5 texels (σ = 1, taps −2 … 2, periodic: it keeps
-// the seeds from aliasing when they are scaled), then histogram-matched back to uniform on
+// length only by a Gaussian of width 5 texels, its full width at half maximum (σ = 5 /
+// (2√(2 ln 2)) ≈ 2.12, taps out to 3σ, periodic: it keeps the seeds from aliasing when they
+// are scaled), then histogram-matched back to uniform on
 // (0, 1) (rank r of n ↦ (r + ½)/n). W_0.5: W_f scaled to half its length; W_1.0 = [W_0.5 W_0.5];
 // W_l = α·W_1.0 + (1 − α)·W_0.5 with α = 2l − 1, both scaled to the level's length. Scaling is
 // band-limited (FFT) resampling, so one seed at two lengths is one periodic function (below

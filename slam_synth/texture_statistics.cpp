@@ -93,12 +93,15 @@ TextureStatistics analyze_texture(const Plane& image, const PyramidGeometry& g, 
     t.lowpass_skewness.assign(size_t(scales) + 1, 0.0);
     t.lowpass_kurtosis.assign(size_t(scales) + 1, 3.0);
     t.lowpass_autocorrelation.resize(size_t(scales) + 1);
+    t.lowpass_row_mean.resize(size_t(scales) + 1);
+    t.lowpass_row_variance.resize(size_t(scales) + 1);
     auto lowpass_statistics = [&](int s) {
         const PyramidGrid& grid = g.grids[size_t(s)];
         t.lowpass_autocorrelation[size_t(s)] =
             central_autocorrelation(spectrum, grid.rows, grid.cols, autocorrelation_half(grid.rows, grid.cols, limit));
-        lowpass_marginals(inverse(spectrum, grid.rows, grid.cols), t.pixel.variance, t.lowpass_skewness[size_t(s)],
-                          t.lowpass_kurtosis[size_t(s)]);
+        const Plane lowpass = inverse(spectrum, grid.rows, grid.cols);
+        row_moments(lowpass, t.lowpass_row_mean[size_t(s)], t.lowpass_row_variance[size_t(s)]);
+        lowpass_marginals(lowpass, t.pixel.variance, t.lowpass_skewness[size_t(s)], t.lowpass_kurtosis[size_t(s)]);
     };
     lowpass_statistics(scales);
 

@@ -6,7 +6,9 @@
 // - pixel marginals: mean, variance, skewness, kurtosis, min, max; and per row mean and
 //   variance (the 1.5D statistics of Bénard et al. 2010 §3.2.2);
 // - per scale s = scales … 0 of the partially reconstructed low-pass image (low-pass
-//   residual plus the bands of scales ≥ s): skewness, kurtosis and central autocorrelation;
+//   residual plus the bands of scales ≥ s): skewness, kurtosis and central autocorrelation,
+//   and its per-row mean and variance (1.5D: imposed wherever the model imposes a variance,
+//   texture_synthesis.h);
 // - per band: the mean of the magnitudes and the central autocorrelation of the
 //   mean-removed magnitudes;
 // - per scale: the cross-orientation correlation of magnitudes; the cross-scale correlation
@@ -33,6 +35,7 @@ struct TextureStatistics {
     std::vector<double> row_mean, row_variance;  // [row]
     std::vector<double> lowpass_skewness, lowpass_kurtosis;  // [scale], scales + 1
     std::vector<Autocorrelation> lowpass_autocorrelation;    // [scale], scales + 1
+    std::vector<std::vector<double>> lowpass_row_mean, lowpass_row_variance;  // [scale][row of that grid]
     std::vector<double> magnitude_means;                     // [s * orientations + o]
     std::vector<Autocorrelation> magnitude_autocorrelation;  // [s * orientations + o]
     std::vector<Matrix> cross_orientation;  // [s], orientations²

@@ -6,10 +6,26 @@
 // row count and model), a seed of the geometry's size, and the iteration count. Output: the
 // synthesized image, the seed's size.
 //
+// Two departures from textureSynth, both measured (docs/research/slam-fidelity.md):
+// - The high-pass residual takes part in the last iteration only. The model constrains it
+//   by its variance alone, from above; carried from iteration to iteration it keeps what
+//   the pixel steps' clamps and polynomials leave above the bands (ringing, period-2
+//   speckle), which the next pixel step amplifies, and the levels came out grainy (2–3×
+//   the exemplar's second differences along the length on thin strokes). Synthesizing the
+//   band-limited image and restoring the residual once, from the image's own high
+//   frequencies lowered to the target variance, keeps the residual within its constraint
+//   (at most the target; it ends below it, softer edges) and gives 0.8–1.4× the
+//   exemplar's grain.
+// - No accelerator (textureSynth's x + 0.8 (x − x_prev) between iterations): it converges
+//   faster, but each level then moves further from its seed and adjacent levels differ
+//   up to twice as much against the ends (RMSE(1)/RMSE(16)): the smooth variation the SLAM
+//   needs (§3.2) matters more here than the last dB of statistics.
+//
 // Scope (Bénard et al. 2010 §3.2.2): `Global` is the model as published (the 1D case of
-// the paper: every statistic per texture). `Rows` is the paper's 1.5D modification, as the
-// authors' code does it: the final mean/variance step is done per row (so rows keep the
-// exemplar's profile across the stroke, and the zero padding stays empty); skewness,
+// the paper: every statistic per texture). `Rows` is the paper's 1.5D modification: the
+// mean and variance per row, at each scale's low-pass image and at the final mean/variance
+// step (so rows keep the exemplar's profile across the stroke, and the zero padding stays
+// empty); skewness,
 // kurtosis and range are then still imposed globally — followed here by three alternations
 // of range and per-row mean/variance, which keep every row within 5 % of the exemplar's
 // (the range clamp alone moves inky rows by up to 10 %). The output is then not clamped to
