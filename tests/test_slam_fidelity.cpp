@@ -1,0 +1,185 @@
+// SLAM fidelity (slam_synth/slam_fidelity.h): the measures on planes whose answer is known,
+// the exemplar as a fixed point of the synthesis, and every exemplar of scenes/exemplars
+// synthesized as `linework slam` does (17 levels, Lmax 1024, 15 iterations, seed 1) against
+// its own grain, elements and empty rows, and against the smooth variation of before.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "io/image_io.h"
+#include "slam_synth/slam_builder.h"
+#include "slam_synth/slam_conditions.h"
+#include "slam_synth/slam_fidelity.h"
+#include "test_support.h"
+
+using namespace lw::synth;
+
+namespace {
+
+void disc(Plane& p, double cx, double cy, double r, float ink = 1.0f) {
+    for (int y = 0; y < p.rows; ++y)
+        for (int x = 0; x < p.cols; ++x)
+            if ((x - cx) * (x - cx) + (y - cy) * (y - cy) <= r * r) p.at(y, x) = ink;
+}
+
+Plane exemplar(const std::string& name) {
+    return exemplar_ink(lw::read_image_rgba8((lw::test::source_dir() / "scenes/exemplars" / ("slam-" + name + ".png")).string()));
+}
+
+}  // namespace
+
+TEST(SlamFidelityMeasures, GrainOfASineIsItsSecondDifference) {
+    // I(x) = c + A sin(2πx/P): I(x−1) − 2I(x) + I(x+1) = −4 sin²(π/P)·A sin(2πx/P), and the
+    // mean of |sin(2πx/P)| over the P samples of a period is (2/P)·cot(π/P).
+    constexpr int rows = 3, period = 32, cols = 8 * period;
+    constexpr double amplitude = 0.4;
+    Plane p(rows, cols);
+    for (int r = 0; r < rows; ++r)
+        for (int x = 0; x < cols; ++x) p.at(r, x) = float(0.5 + amplitude * std::sin(2 * std::numbers::pi * x / period));
+    const double expected = 4 * std::pow(std::sin(std::numbers::pi / period), 2) * amplitude * (2.0 / period) /
+                            std::tan(std::numbers::pi / period);
+    EXPECT_NEAR(grain(p, true), expected, 1e-3 * expected);
+    // Not periodic: the first and last columns have no neighbour and are left out (the
+    // sine's values there add nothing of their own).
+    EXPECT_NEAR(grain(p, false), expected, 0.02 * expected);
+    EXPECT_EQ(grain(Plane(rows, cols, 0.7f), true), 0.0);
+}
+
+TEST(SlamFidelityMeasures, ElementsCountAreasAndHoles) {
+    Plane p(16, 128);
+    disc(p, 20, 8, 4);
+    disc(p, 60, 8, 4);
+    disc(p, 100, 8, 5);
+    disc(p, 100, 8, 2, 0.0f);  // a hollow dot: paper enclosed by ink
+    const ElementStatistics e = element_statistics(p, true);
+    EXPECT_EQ(e.count, 3);
+    EXPECT_EQ(e.holes, 1);
+    EXPECT_NEAR(e.per_100_texels, 300.0 / 128, 1e-9);
+    // Areas: the discs' texel counts, counted here independently.
+    std::vector<double> areas(3, 0.0);
+    for (int y = 0; y < p.rows; ++y)
+        for (int x = 0; x < p.cols; ++x)
+            if (p.at(y, x) > kElementInk) areas[size_t(x < 40 ? 0 : x < 80 ? 1 : 2)] += 1;
+    const double mean = (areas[0] + areas[1] + areas[2]) / 3;
+    double variance = 0;
+    for (double a : areas) variance += (a - mean) * (a - mean) / 3;
+    EXPECT_NEAR(e.mean_area, mean, 1e-9);
+    EXPECT_NEAR(e.area_cv, std::sqrt(variance) / mean, 1e-9);
+
+    // Across the wrap: one element when periodic, two cut ones (left out) when not.
+    Plane wrap(16, 64);
+    disc(wrap, 0, 8, 4);
+    disc(wrap, 64, 8, 4);
+    EXPECT_EQ(element_statistics(wrap, true).count, 1);
+    EXPECT_EQ(element_statistics(wrap, false).count, 0);
+    // Paper touching the first or last row is not a hole, whatever it is surrounded by.
+    Plane band(8, 32, 1.0f);
+    for (int x = 10; x < 14; ++x) band.at(0, x) = 0.0f;
+    EXPECT_EQ(element_statistics(band, true).holes, 0);
+}
+
+TEST(SlamFidelityMeasures, StrayInkCountsSpecksInTheExemplarsEmptyRows) {
+    Plane ex(8, 64);
+    for (int r = 2; r < 6; ++r)
+        for (int x = 0; x < 64; ++x) ex.at(r, x) = 1.0f;
+    ex.at(0, 5) = 0.5f * kEmptyRowInk;  // below the threshold: row 0 is still empty
+    Plane level(8, 100);
+    level.at(0, 3) = 0.5f;
+    level.at(7, 40) = 0.2f;
+    level.at(1, 41) = 0.5f * kStrayInk;  // too faint to count
+    level.at(3, 10) = 1.0f;              // ink in an inky row is no stray
+    const StrayInk s = stray_ink(ex, level);
+    EXPECT_EQ(s.empty_rows, 4);
+    EXPECT_NEAR(s.share, 2.0 / 400.0, 1e-12);
+}
+
+// The exemplar has the target statistics, so one iteration from it must leave it almost
+// unchanged. Reconstructing the high-pass residual through H once (not H²) let the
+// transition band through with a gain above 1: 3e-3 in mean on this exemplar, 0.07 at worst.
+TEST(SlamFidelitySynthesis, ExemplarIsAFixedPoint) {
+    const Plane ink = exemplar("wedges");
+    const SlamModel m = slam_model(ink.rows, "wedges");
+    const int cols = ink.cols / m.unit * m.unit;
+    const Plane padded = pad_exemplar(ink, m, cols);
+    const PyramidGeometry g = make_pyramid_geometry(m.padded_rows, cols, m.scales, 4);
+    const Plane out = synthesize_texture(analyze_texture(padded, g, 9), padded, g, {.iterations = 1});
+    double sum = 0, worst = 0;
+    for (size_t i = 0; i < out.size(); ++i) {
+        const double d = std::abs(double(out.v[i]) - double(padded.v[i]));
+        sum += d;
+        worst = std::max(worst, d);
+    }
+    std::printf("  one iteration from the exemplar: mean |change| %.5f, largest %.4f\n", sum / double(out.size()), worst);
+    EXPECT_LT(sum / double(out.size()), 1e-3);
+    EXPECT_LT(worst, 0.03);
+}
+
+// Every SLAM exemplar, as `linework slam` makes it. Bounds: grain of level 1.0 ≤ 1.5× the
+// exemplar's; stray ink ≤ 0.2 % of the empty rows; RMSE(1)/RMSE(16) no worse than 1.05×
+// what the synthesis gave before this change (seed 1; across seeds 1–4 the ratio varies by
+// ±5 %, docs/research/slam-fidelity.md); for the identical dots, as many elements as the
+// exemplar within 10 % and an area spread under 0.2 (0.151 measured).
+struct ExemplarCase {
+    const char* name;
+    double ratio_before;  // RMSE(1)/RMSE(16) at 17 levels, seed 1, before (commit 00e9fc5)
+};
+class SlamFidelityExemplar : public ::testing::TestWithParam<ExemplarCase> {};
+
+// Sanitized builds run about ten times slower and check memory, not figures: there the
+// three stroke widths (8, 16 and 32 rows) stand for all.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kSanitized = true;
+#else
+constexpr bool kSanitized = false;
+#endif
+
+TEST_P(SlamFidelityExemplar, ResemblesItsExemplar) {
+    const ExemplarCase c = GetParam();
+    const std::string name = c.name;
+    if (kSanitized && name != "wedges" && name != "wobble" && name != "beads")
+        GTEST_SKIP() << "sanitized build: the 8-, 16- and 32-row exemplars only";
+    const Plane ink = exemplar(c.name);
+    const SlamSynthesis s = synthesize_slam(ink, {.exemplar_name = c.name});
+    const SlamConditions conditions = measure_slam_conditions(s);
+    const double ratio = conditions.rmse_adjacent / conditions.rmse_ends;
+    const double exemplar_grain = grain(ink, false);
+    const LevelFidelity top = level_fidelity(ink, s.levels.back());
+    const ElementStatistics own = element_statistics(ink, false);
+    std::printf("  %s: grain %.4f (exemplar %.4f, %.2fx), ratio %.3f (before %.3f), elements %.2f/100 (exemplar %.2f), "
+                "area cv %.3f, holes %d, stray %.4f %%\n",
+                c.name, top.grain, exemplar_grain, top.grain / exemplar_grain, ratio, c.ratio_before,
+                top.elements.per_100_texels, own.per_100_texels, top.elements.area_cv, top.elements.holes,
+                100 * top.stray.share);
+    EXPECT_LE(top.grain, 1.5 * exemplar_grain);
+    EXPECT_LE(top.stray.share, 0.002);
+    EXPECT_LE(ratio, 1.05 * c.ratio_before);
+    EXPECT_EQ(conditions.self_similarity, 0.0);
+    if (name == "beads") {
+        EXPECT_NEAR(top.elements.per_100_texels, own.per_100_texels, 0.1 * own.per_100_texels);
+        EXPECT_LT(top.elements.area_cv, 0.2);
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Exemplars, SlamFidelityExemplar,
+                         ::testing::Values(ExemplarCase{"beads", 0.392}, ExemplarCase{"brush", 0.185},
+                                           ExemplarCase{"dashes", 0.352}, ExemplarCase{"dots", 0.318},
+                                           ExemplarCase{"lattice", 0.396}, ExemplarCase{"pencil", 0.242},
+                                           ExemplarCase{"scribble", 0.366}, ExemplarCase{"spatter", 0.254},
+                                           ExemplarCase{"wedges", 0.201}, ExemplarCase{"wobble", 0.453}),
+                         [](const ::testing::TestParamInfo<ExemplarCase>& p) { return std::string(p.param.name); });
+
+// The list above is every exemplar there is: a new one must be added to it.
+TEST(SlamFidelitySynthesis, EveryExemplarIsMeasured) {
+    int count = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(lw::test::source_dir() / "scenes/exemplars")) {
+        const std::string name = entry.path().filename().string();
+        count += name.rfind("slam-", 0) == 0 && entry.path().extension() == ".png";
+    }
+    EXPECT_EQ(count, 10);
+}
