@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <numbers>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -129,6 +130,8 @@ struct ExemplarCase {
     const char* name;
     double ratio_before;  // RMSE(1)/RMSE(16) at 17 levels, seed 1, before (commit 00e9fc5)
 };
+// Printed by name (gtest's default prints the bytes, a pointer among them, into test names).
+void PrintTo(const ExemplarCase& c, std::ostream* os) { *os << c.name; }
 class SlamFidelityExemplar : public ::testing::TestWithParam<ExemplarCase> {};
 
 // Sanitized builds run about ten times slower and check memory, not figures: there the
