@@ -16,25 +16,27 @@ double top_level_periodicity(const Plane& top) {
     return worst;
 }
 
-double mean_level_step(const Slam& slam) {
-    double sum = 0.0;
-    size_t count = 0;
-    for (int i = 0; i + 1 < slam.levels; ++i)
-        for (int r = 0; r < slam.height; ++r)
-            for (int x = 0; x < slam.length; ++x, ++count) sum += std::abs(slam.at(i + 1, r, x) - slam.at(i, r, x));
-    return count ? sum / double(count) : 0.0;
-}
+namespace {
 
-double level_rmse(const Slam& slam, int d) {
+// Mean of f(A_{i+d} − A_i) over texels and every pair (i, i + d) of stored levels.
+template <class F>
+double mean_over_level_pairs(const Slam& slam, int d, F f) {
     double sum = 0.0;
     size_t count = 0;
     for (int i = 0; i + d < slam.levels; ++i)
         for (int r = 0; r < slam.height; ++r)
-            for (int x = 0; x < slam.length; ++x, ++count) {
-                const double e = double(slam.at(i + d, r, x)) - double(slam.at(i, r, x));
-                sum += e * e;
-            }
-    return count ? std::sqrt(sum / double(count)) : 0.0;
+            for (int x = 0; x < slam.length; ++x, ++count) sum += f(double(slam.at(i + d, r, x)) - double(slam.at(i, r, x)));
+    return count ? sum / double(count) : 0.0;
+}
+
+}  // namespace
+
+double mean_level_step(const Slam& slam) {
+    return mean_over_level_pairs(slam, 1, [](double e) { return std::abs(e); });
+}
+
+double level_rmse(const Slam& slam, int d) {
+    return std::sqrt(mean_over_level_pairs(slam, d, [](double e) { return e * e; }));
 }
 
 SlamConditions measure_slam_conditions(const SlamSynthesis& s) {

@@ -16,8 +16,9 @@
 //   spread (its largest column step), not only with its mean.
 // - level_rmse(d): the RMS difference between stored levels d apart, over texels and every
 //   pair (i, i + d). Smooth variation is rmse(1) small against rmse(N − 1), the distance from
-//   A_0.5 to A_1.0: their ratio is what a finer level step buys (it does not depend on how
-//   far the synthesis moved every level from its seed, which rmse(1) alone does).
+//   A_0.5 to A_1.0: their ratio normalizes rmse(1) for how far apart the synthesis puts
+//   the levels overall (a synthesis that moves every level further from its seed raises
+//   both, and the ratio only if adjacent levels drift apart faster).
 #pragma once
 
 #include "slam_builder.h"

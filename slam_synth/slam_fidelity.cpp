@@ -4,6 +4,8 @@
 #include <cmath>
 #include <vector>
 
+#include "core/error.h"
+
 namespace lw::synth {
 
 namespace {
@@ -12,13 +14,16 @@ struct Component {
     int area = 0;
     bool touches_ends = false;   // first or last column of a non-periodic plane
     bool touches_edges = false;  // first or last row
+    bool wraps = false;          // periodic: goes all the way round the length (a band, not a blob)
 };
 
 // Connected components of the texels where `inside` holds, by flood fill; 8- or
-// 4-connected, wrapping along the length when periodic.
+// 4-connected, wrapping along the length when periodic. Each texel keeps the unwrapped
+// column it was reached at: a component that reaches a texel again a whole length away
+// goes round the strip.
 template <class Inside>
 std::vector<Component> components(const Plane& p, bool periodic, bool diagonal, Inside inside) {
-    std::vector<int> label(p.size(), -1);
+    std::vector<int> label(p.size(), -1), unwrapped(p.size(), 0);
     std::vector<Component> out;
     std::vector<int> stack;
     for (int start = 0; start < int(p.size()); ++start) {
@@ -26,11 +31,12 @@ std::vector<Component> components(const Plane& p, bool periodic, bool diagonal, 
         const int id = int(out.size());
         Component c;
         label[size_t(start)] = id;
+        unwrapped[size_t(start)] = start % p.cols;
         stack.assign(1, start);
         while (!stack.empty()) {
             const int i = stack.back();
             stack.pop_back();
-            const int r = i / p.cols, x = i % p.cols;
+            const int r = i / p.cols, x = i % p.cols, u = unwrapped[size_t(i)];
             ++c.area;
             c.touches_edges = c.touches_edges || r == 0 || r == p.rows - 1;
             c.touches_ends = c.touches_ends || (!periodic && (x == 0 || x == p.cols - 1));
@@ -45,8 +51,13 @@ std::vector<Component> components(const Plane& p, bool periodic, bool diagonal, 
                         xx = (xx + p.cols) % p.cols;
                     }
                     const int j = rr * p.cols + xx;
-                    if (label[size_t(j)] >= 0 || !inside(p.v[size_t(j)])) continue;
+                    if (!inside(p.v[size_t(j)])) continue;
+                    if (label[size_t(j)] >= 0) {
+                        c.wraps = c.wraps || unwrapped[size_t(j)] != u + dx;
+                        continue;
+                    }
                     label[size_t(j)] = id;
+                    unwrapped[size_t(j)] = u + dx;
                     stack.push_back(j);
                 }
         }
@@ -74,7 +85,7 @@ ElementStatistics element_statistics(const Plane& ink, bool periodic) {
     ElementStatistics e;
     std::vector<double> areas;
     for (const Component& c : components(ink, periodic, true, [](float v) { return v > kElementInk; }))
-        if (!c.touches_ends) areas.push_back(double(c.area));  // elements cut by the exemplar's ends are partial
+        if (!c.touches_ends && !c.wraps) areas.push_back(double(c.area));  // cut by the ends, or a line: not an element
     e.count = int(areas.size());
     e.per_100_texels = 100.0 * double(e.count) / double(ink.cols);
     if (!areas.empty()) {
@@ -85,14 +96,15 @@ ElementStatistics element_statistics(const Plane& ink, bool periodic) {
         e.area_cv = std::sqrt(variance) / e.mean_area;
     }
     for (const Component& c : components(ink, periodic, false, [](float v) { return v <= kElementInk; }))
-        e.holes += !c.touches_edges && !c.touches_ends;
+        e.holes += !c.touches_edges && !c.touches_ends && !c.wraps;
     return e;
 }
 
 StrayInk stray_ink(const Plane& exemplar, const Plane& level) {
+    if (exemplar.rows != level.rows) throw Error("stray_ink: the level and the exemplar have different row counts");
     StrayInk s;
     size_t texels = 0, stray = 0;
-    for (int r = 0; r < std::min(exemplar.rows, level.rows); ++r) {
+    for (int r = 0; r < exemplar.rows; ++r) {
         bool empty = true;
         for (int x = 0; x < exemplar.cols && empty; ++x) empty = exemplar.at(r, x) < kEmptyRowInk;
         if (!empty) continue;

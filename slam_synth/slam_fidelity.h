@@ -12,7 +12,11 @@
 // - elements: connected components of ink > 0.5 (8-connected, wrapping along the length
 //   for periodic levels): count per 100 texels of length, mean area, the coefficient of
 //   variation of the areas, and holes — components of ink ≤ 0.5 (4-connected) that touch
-//   neither the first nor the last row, i.e. paper enclosed by ink (a hollow dot).
+//   neither the first nor the last row, i.e. paper enclosed by ink (a hollow dot; one
+//   element with two holes counts two). Components cut by a non-periodic plane's end
+//   columns, and components that go all the way round a periodic one (a line, a band of
+//   paper between lines), are neither elements nor holes: the exemplar and its levels are
+//   then measured alike.
 // - stray ink: in the rows that are empty in the exemplar (every texel below
 //   kEmptyRowInk), the share of the level's texels above kStrayInk.
 #pragma once

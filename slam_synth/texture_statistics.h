@@ -7,8 +7,8 @@
 //   variance (the 1.5D statistics of Bénard et al. 2010 §3.2.2);
 // - per scale s = scales … 0 of the partially reconstructed low-pass image (low-pass
 //   residual plus the bands of scales ≥ s): skewness, kurtosis and central autocorrelation,
-//   and its per-row mean and variance (1.5D: imposed wherever the model imposes a variance,
-//   texture_synthesis.h);
+//   and its per-row mean and variance (1.5D, imposed with the low-pass image's
+//   autocorrelation, texture_synthesis.h);
 // - per band: the mean of the magnitudes and the central autocorrelation of the
 //   mean-removed magnitudes;
 // - per scale: the cross-orientation correlation of magnitudes; the cross-scale correlation

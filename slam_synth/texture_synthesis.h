@@ -14,15 +14,15 @@
 //   the exemplar's second differences along the length on thin strokes). Synthesizing the
 //   band-limited image and restoring the residual once, from the image's own high
 //   frequencies lowered to the target variance, keeps the residual within its constraint
-//   (at most the target; it ends below it, softer edges) and gives 0.8–1.4× the
-//   exemplar's grain.
+//   (at most the target; it ends below it, softer edges) and gives 0.76–1.31× the
+//   exemplar's grain at level 1.0 (at most 1.40× over all levels).
 // - No accelerator (textureSynth's x + 0.8 (x − x_prev) between iterations): it converges
 //   faster, but each level then moves further from its seed and adjacent levels differ
 //   up to twice as much against the ends (RMSE(1)/RMSE(16)): the smooth variation the SLAM
 //   needs (§3.2) matters more here than the last dB of statistics.
 //
-// Scope (Bénard et al. 2010 §3.2.2): `Global` is the model as published (the 1D case of
-// the paper: every statistic per texture). `Rows` is the paper's 1.5D modification: the
+// Scope (Bénard et al. 2010 §3.2.2): `Global` imposes every statistic per texture (the
+// model as published, the 1D case of the paper, with the two departures above). `Rows` is the paper's 1.5D modification: the
 // mean and variance per row, at each scale's low-pass image and at the final mean/variance
 // step (so rows keep the exemplar's profile across the stroke, and the zero padding stays
 // empty); skewness,

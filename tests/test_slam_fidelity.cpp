@@ -79,6 +79,16 @@ TEST(SlamFidelityMeasures, ElementsCountAreasAndHoles) {
     disc(wrap, 64, 8, 4);
     EXPECT_EQ(element_statistics(wrap, true).count, 1);
     EXPECT_EQ(element_statistics(wrap, false).count, 0);
+    // A hollow dot across the wrap is one element with one hole.
+    disc(wrap, 0, 8, 2, 0.0f);
+    disc(wrap, 64, 8, 2, 0.0f);
+    EXPECT_EQ(element_statistics(wrap, true).holes, 1);
+    // Lines that go all the way round are no elements, and the paper between them no hole.
+    Plane lines(16, 64);
+    for (int x = 0; x < 64; ++x) lines.at(4, x) = lines.at(11, x) = 1.0f;
+    EXPECT_EQ(element_statistics(lines, true).count, 0);
+    EXPECT_EQ(element_statistics(lines, true).holes, 0);
+    EXPECT_EQ(element_statistics(lines, false).holes, 0);
     // Paper touching the first or last row is not a hole, whatever it is surrounded by.
     Plane band(8, 32, 1.0f);
     for (int x = 10; x < 14; ++x) band.at(0, x) = 0.0f;
@@ -100,10 +110,12 @@ TEST(SlamFidelityMeasures, StrayInkCountsSpecksInTheExemplarsEmptyRows) {
     EXPECT_NEAR(s.share, 2.0 / 400.0, 1e-12);
 }
 
-// The exemplar has the target statistics, so one iteration from it must leave it almost
-// unchanged. Reconstructing the high-pass residual through H once (not H²) let the
-// transition band through with a gain above 1: 3e-3 in mean on this exemplar, 0.07 at worst.
-TEST(SlamFidelitySynthesis, ExemplarIsAFixedPoint) {
+// The exemplar has the target statistics, so the last iteration (the one that keeps the
+// high-pass residual: a whole iteration of the model) must leave it almost unchanged.
+// Reconstructing the residual through H once (not H²) let the transition band through with
+// a gain above 1: 3e-3 in mean on this exemplar, 0.07 at worst. (Earlier iterations drop
+// the residual, so from the exemplar they do change it.)
+TEST(SlamFidelitySynthesis, ExemplarIsAFixedPointOfTheLastIteration) {
     const Plane ink = exemplar("wedges");
     const SlamModel m = slam_model(ink.rows, "wedges");
     const int cols = ink.cols / m.unit * m.unit;
@@ -121,11 +133,14 @@ TEST(SlamFidelitySynthesis, ExemplarIsAFixedPoint) {
     EXPECT_LT(worst, 0.03);
 }
 
-// Every SLAM exemplar, as `linework slam` makes it. Bounds: grain of level 1.0 ≤ 1.5× the
-// exemplar's; stray ink ≤ 0.2 % of the empty rows; RMSE(1)/RMSE(16) no worse than 1.05×
+// Every SLAM exemplar, as `linework slam` makes it. Bounds: the grain of every level ≤ 1.5×
+// the exemplar's; stray ink ≤ 0.2 % of the empty rows (the 1.5D rows keep them empty; the
+// 1D model does not, StrayInkIsWhatTheRowsPrevent); RMSE(1)/RMSE(16) no worse than 1.05×
 // what the synthesis gave before this change (seed 1; across seeds 1–4 the ratio varies by
 // ±5 %, docs/research/slam-fidelity.md); for the identical dots, as many elements as the
-// exemplar within 10 % and an area spread under 0.2 (0.151 measured).
+// exemplar within 10 %, an area spread under 0.2 (0.151 measured) and at most one hollow
+// element per half (level 1.0 is A_0.5 twice; 2 measured, 18 before); for the irregular
+// dots no hollow one (0 measured, 14 before).
 struct ExemplarCase {
     const char* name;
     double ratio_before;  // RMSE(1)/RMSE(16) at 17 levels, seed 1, before (commit 00e9fc5)
@@ -134,38 +149,49 @@ struct ExemplarCase {
 void PrintTo(const ExemplarCase& c, std::ostream* os) { *os << c.name; }
 class SlamFidelityExemplar : public ::testing::TestWithParam<ExemplarCase> {};
 
-// Sanitized builds run about ten times slower and check memory, not figures: there the
-// three stroke widths (8, 16 and 32 rows) stand for all.
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kSanitized = true;
+// Sanitized or unoptimised builds run about ten times slower and check memory, not
+// figures: there the three stroke widths (8, 16 and 32 rows) stand for all.
+#if defined(__SANITIZE_ADDRESS__) || !defined(__OPTIMIZE__)
+constexpr bool kSlowBuild = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr bool kSlowBuild = true;
 #else
-constexpr bool kSanitized = false;
+constexpr bool kSlowBuild = false;
+#endif
+#else
+constexpr bool kSlowBuild = false;
 #endif
 
 TEST_P(SlamFidelityExemplar, ResemblesItsExemplar) {
     const ExemplarCase c = GetParam();
     const std::string name = c.name;
-    if (kSanitized && name != "wedges" && name != "wobble" && name != "beads")
-        GTEST_SKIP() << "sanitized build: the 8-, 16- and 32-row exemplars only";
+    if (kSlowBuild && name != "wedges" && name != "wobble" && name != "beads")
+        GTEST_SKIP() << "sanitized or unoptimised build: the 8-, 16- and 32-row exemplars only";
     const Plane ink = exemplar(c.name);
     const SlamSynthesis s = synthesize_slam(ink, {.exemplar_name = c.name});
     const SlamConditions conditions = measure_slam_conditions(s);
     const double ratio = conditions.rmse_adjacent / conditions.rmse_ends;
     const double exemplar_grain = grain(ink, false);
     const LevelFidelity top = level_fidelity(ink, s.levels.back());
+    double worst_grain = 0.0;
+    for (const Plane& level : s.levels) worst_grain = std::max(worst_grain, grain(level, true));
     const ElementStatistics own = element_statistics(ink, false);
     std::printf("  %s: grain %.4f (exemplar %.4f, %.2fx), ratio %.3f (before %.3f), elements %.2f/100 (exemplar %.2f), "
                 "area cv %.3f, holes %d, stray %.4f %%\n",
                 c.name, top.grain, exemplar_grain, top.grain / exemplar_grain, ratio, c.ratio_before,
                 top.elements.per_100_texels, own.per_100_texels, top.elements.area_cv, top.elements.holes,
                 100 * top.stray.share);
-    EXPECT_LE(top.grain, 1.5 * exemplar_grain);
+    EXPECT_LE(worst_grain, 1.5 * exemplar_grain);
     EXPECT_LE(top.stray.share, 0.002);
     EXPECT_LE(ratio, 1.05 * c.ratio_before);
-    EXPECT_EQ(conditions.self_similarity, 0.0);
     if (name == "beads") {
         EXPECT_NEAR(top.elements.per_100_texels, own.per_100_texels, 0.1 * own.per_100_texels);
         EXPECT_LT(top.elements.area_cv, 0.2);
+        EXPECT_LE(top.elements.holes, 2);
+    }
+    if (name == "dots") {
+        EXPECT_EQ(top.elements.holes, 0);
     }
 }
 
@@ -179,10 +205,27 @@ INSTANTIATE_TEST_SUITE_P(Exemplars, SlamFidelityExemplar,
 
 // The list above is every exemplar there is: a new one must be added to it.
 TEST(SlamFidelitySynthesis, EveryExemplarIsMeasured) {
-    int count = 0;
+    std::vector<std::string> listed, found;
+    for (const char* name : {"beads", "brush", "dashes", "dots", "lattice", "pencil", "scribble", "spatter", "wedges", "wobble"})
+        listed.push_back(name);
     for (const auto& entry : std::filesystem::directory_iterator(lw::test::source_dir() / "scenes/exemplars")) {
-        const std::string name = entry.path().filename().string();
-        count += name.rfind("slam-", 0) == 0 && entry.path().extension() == ".png";
+        const std::string stem = entry.path().stem().string();
+        if (stem.rfind("slam-", 0) == 0 && entry.path().extension() == ".png") found.push_back(stem.substr(5));
     }
-    EXPECT_EQ(count, 10);
+    std::sort(found.begin(), found.end());
+    EXPECT_EQ(found, listed);
+}
+
+// Stray ink measures something: the 1D model (every statistic per texture) puts ink in the
+// rows the exemplar leaves empty, which the 1.5D rows keep empty.
+TEST(SlamFidelitySynthesis, StrayInkIsWhatTheRowsPrevent) {
+    const Plane ink = exemplar("beads");
+    auto stray = [&](StatisticsScope scope) {
+        const SlamSynthesis s = synthesize_slam(ink, {.levels = 2, .scope = scope, .exemplar_name = "beads"});
+        return level_fidelity(ink, s.levels.back()).stray.share;
+    };
+    const double rows = stray(StatisticsScope::Rows), global = stray(StatisticsScope::Global);
+    std::printf("  stray ink in the empty rows: %.4f %% (1.5D), %.2f %% (1D)\n", 100 * rows, 100 * global);
+    EXPECT_LE(rows, 0.002);
+    EXPECT_GT(global, 0.01);
 }

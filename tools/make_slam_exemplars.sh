@@ -55,7 +55,7 @@ while x < 470:
     print(f"polygon {x:.1f},{y - h:.1f} {x + l:.1f},{y:.1f} {x:.1f},{y + h:.1f}"); x += l + random.uniform(3, 9)'
 # A thin wobbly line of slowly varying amplitude, 16 rows.
 convert -size 512x16 xc:white -fill none -stroke black -strokewidth 1.5 -draw "$(python3 -c '
-import math, random; random.seed(17)
+import math
 pts = [f"{t:.1f},{8 + (2.2 + 1.2 * math.sin(t / 57.0)) * math.sin(t / 9.0 + 0.6 * math.sin(t / 23.0)):.2f}"
        for t in [0.5 * i for i in range(-4, 1030)]]
 print("path \"M " + " L ".join(pts) + "\"")')" -alpha off -depth 8 "$out/slam-wobble.png"

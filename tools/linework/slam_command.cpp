@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <string>
 
 #include "commands.h"
 #include "core/error.h"
@@ -33,9 +34,17 @@ std::string decibels(double db) {
     return text;
 }
 
+// "1.23x" of the exemplar's grain, or "-" for an exemplar without any.
+std::string times(double value, double reference) {
+    char text[32];
+    if (reference > 0.0) std::snprintf(text, sizeof text, "%.2fx", value / reference);
+    else std::snprintf(text, sizeof text, "-");
+    return text;
+}
+
 void print_fidelity_row(const char* name, double grain, double exemplar_grain, const synth::ElementStatistics& e,
                         const char* stray) {
-    std::printf("  %-14s %8.4f %6.2fx %8.2f %8.1f %7.3f %5d %s\n", name, grain, grain / std::max(exemplar_grain, 1e-12),
+    std::printf("  %-14s %8.4f %7s %8.2f %8.1f %7.3f %5d %s\n", name, grain, times(grain, exemplar_grain).c_str(),
                 e.per_100_texels, e.mean_area, e.area_cv, e.holes, stray);
 }
 
@@ -55,7 +64,7 @@ void print_fidelity(const synth::SlamSynthesis& s, const synth::Plane& exemplar)
         std::snprintf(stray, sizeof stray, "%.3f %% of %d rows", 100.0 * f.stray.share, f.stray.empty_rows);
         print_fidelity_row(name, f.grain, exemplar_grain, f.elements, stray);
     }
-    std::printf("  largest grain over all levels: %.4f (%.2fx the exemplar's)\n", worst, worst / std::max(exemplar_grain, 1e-12));
+    std::printf("  largest grain over all levels: %.4f (%s the exemplar's)\n", worst, times(worst, exemplar_grain).c_str());
 }
 
 void print_report(const synth::SlamSynthesis& s, const synth::SlamSynthesisDesc& desc) {
@@ -159,7 +168,7 @@ Runner add_slam_command(CLI::App& app) {
     cmd->add_flag("--report", o->report,
                   "Print the SNR of each statistic group (as textureSynth) of levels 0.5 and 1.0 and their seeds,\n"
                   "and the fidelity to the exemplar: grain along the length, elements (ink > 0.5: count per 100\n"
-                  "texels, area, its coefficient of variation, hollow elements) and stray ink in empty rows");
+                  "texels, area, its coefficient of variation, enclosed paper) and stray ink in empty rows");
     return [o] { return run_slam(*o); };
 }
 
