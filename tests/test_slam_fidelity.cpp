@@ -150,7 +150,8 @@ void PrintTo(const ExemplarCase& c, std::ostream* os) { *os << c.name; }
 class SlamFidelityExemplar : public ::testing::TestWithParam<ExemplarCase> {};
 
 // Sanitized or unoptimised builds run about ten times slower and check memory, not
-// figures: there the three stroke widths (8, 16 and 32 rows) stand for all.
+// figures: there the 8- and 16-row exemplars (2 and 3 scales) stand for all; 32 rows are
+// synthesized under sanitizers by StrayInkIsWhatTheRowsPrevent (beads here: 13 s more).
 #if defined(__SANITIZE_ADDRESS__) || !defined(__OPTIMIZE__)
 constexpr bool kSlowBuild = true;
 #elif defined(__has_feature)
@@ -166,8 +167,8 @@ constexpr bool kSlowBuild = false;
 TEST_P(SlamFidelityExemplar, ResemblesItsExemplar) {
     const ExemplarCase c = GetParam();
     const std::string name = c.name;
-    if (kSlowBuild && name != "wedges" && name != "wobble" && name != "beads")
-        GTEST_SKIP() << "sanitized or unoptimised build: the 8-, 16- and 32-row exemplars only";
+    if (kSlowBuild && name != "wedges" && name != "wobble")
+        GTEST_SKIP() << "sanitized or unoptimised build: the 8- and 16-row exemplars only";
     const Plane ink = exemplar(c.name);
     const SlamSynthesis s = synthesize_slam(ink, {.exemplar_name = c.name});
     const SlamConditions conditions = measure_slam_conditions(s);

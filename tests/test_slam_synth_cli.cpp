@@ -50,6 +50,7 @@ TEST_F(SlamCli, WritesTheSlamAndTheContactSheet) {
                                 "--iterations 4 --seed 3 --preview " + quote(sheet) + " --report");
     ASSERT_EQ(r.exit_code, 0) << r.output;
     for (const char* text : {"padded to 16 rows", "level  4  l = 1.0000", "self-similarity error", "cross-scale phase",
+                             "RMS difference of adjacent levels", "fidelity to the exemplar", "largest grain over all levels",
                              "wrote"})
         EXPECT_NE(r.output.find(text), std::string::npos) << text << "\n" << r.output;
     const Slam slam = read_slam(out);
