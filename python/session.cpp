@@ -74,6 +74,10 @@ Session::Session(const pyb::object& scene, const SessionArgs& a)
                                   std::string(pyb::str(pyb::type::of(scene).attr("__name__"))));
         }
         if (!std::filesystem::exists(path)) throw pyb::value_error(path.string() + ": no such file");
+        (void)reading_input([&] {
+            check_scene_or_model_path(path);
+            return true;
+        });
         if (is_model_path(path)) {
             bare_model_ = true;
             model_path_ = path;

@@ -14,6 +14,7 @@
 
 #include "synthesizers.h"
 
+#include "core/color.h"
 #include "hatch/hatching.h"
 #include "pattern/synthesis.h"
 #include "vector/stroke_io.h"
@@ -79,7 +80,7 @@ Stroke stroke_argument(const pyb::handle& item, const std::string& what) {
     if (d.contains("color")) {
         const pyb::object c = d["color"];
         if (pyb::isinstance<pyb::str>(c)) {
-            s.color = reading_input([&] { return parse_svg_color(c.cast<std::string>(), what + ".color"); });
+            s.color = reading_input([&] { return parse_color(c.cast<std::string>(), what + ".color"); });
         } else {
             const auto a = pyb::array_t<float, pyb::array::c_style | pyb::array::forcecast>::ensure(c);
             if (!a || a.ndim() != 1 || a.size() != 3)

@@ -101,6 +101,19 @@ TEST(Cli, BadSceneKeyIsNamed) {
     EXPECT_NE(r.output.find("bad.json: camera.fovv: unknown key"), std::string::npos) << r.output;
 }
 
+TEST(Cli, DevicesSaysWhichOneAutoTakes) {
+    const auto r = run_linework("devices");
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("<- --device auto"), std::string::npos) << r.output;
+    const size_t line = r.output.find("--device auto takes [");
+    ASSERT_NE(line, std::string::npos) << r.output;
+    // The index it names is the row marked.
+    const int index = std::stoi(r.output.substr(line + std::string("--device auto takes [").size()));
+    const size_t row = r.output.find("[" + std::to_string(index) + "] ");
+    ASSERT_NE(row, std::string::npos);
+    EXPECT_NE(r.output.substr(row, r.output.find('\n', row) - row).find("<- --device auto"), std::string::npos) << r.output;
+}
+
 TEST(Cli, GpuDeviceWithoutGpuFails) {
     const auto devices = run_linework("devices");
     ASSERT_EQ(devices.exit_code, 0) << devices.output;

@@ -64,6 +64,8 @@ void write_fixtures(const fs::path& tmp) {
     const std::string spot = (data / "models/spot/spot.glb").string();
     write(tmp / "unknownkey.json", R"({"model": ")" + spot + R"(", "wobble": 1})");
     write(tmp / "badsize.json", R"({"model": ")" + spot + R"(", "size": [0, 10]})");
+    write(tmp / "badcolor.json", R"({"model": ")" + spot + R"(", "background": "#ff88"})");
+    write(tmp / "model.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
     write(tmp / "nomodel.json", R"({"size": [10, 10]})");
     write(tmp / "missingmodel.json", R"({"model": "missing.glb"})");
     write(tmp / "layernostrokes.json", R"({"layers": [{"fill": [1, 0, 0]}]})");

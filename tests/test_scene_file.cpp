@@ -45,6 +45,22 @@ TEST(SceneFile, DefaultsWhenLeftOut) {
     EXPECT_TRUE(s.style.draw_surface);
 }
 
+// Colours as stroke files and SVG write them are colours in scene files too.
+TEST(SceneFile, ColoursMayBeStrings) {
+    const SceneDesc s = parse_scene_json(
+        R"j({"model": "a.glb", "background": "#ff8800", "color": "rgb(0, 255, 0)",
+            "lines": {"silhouette": {"color": "#00f"}}})j", "dir/x.json");
+    EXPECT_NEAR(s.style.background.r, 1.0f, 1e-6f);
+    EXPECT_NEAR(s.style.background.g, 136.0f / 255.0f, 1e-6f);
+    EXPECT_NEAR(s.style.background.b, 0.0f, 1e-6f);
+    EXPECT_NEAR(s.style.color.g, 1.0f, 1e-6f);
+    EXPECT_NEAR(s.style.color.r, 0.0f, 1e-6f);
+    const glm::vec3 silhouette = s.lines.styles[size_t(LineType::Silhouette)].color;
+    EXPECT_EQ(silhouette, glm::vec3(0.0f, 0.0f, 1.0f));
+    EXPECT_NE(error_of(R"({"model": "a.glb", "background": 3})").find("background: expected [r, g, b] in [0, 1] or a colour string"),
+              std::string::npos);
+}
+
 TEST(SceneFile, ErrorsNameTheKey) {
     EXPECT_EQ(error_of(R"({"model": "a.glb", "sise": [1, 2]})").rfind("scenes/x.json: sise: unknown key", 0), 0u);
     EXPECT_EQ(error_of(R"({"model": "a.glb", "camera": {"eye": [0,0,1], "target": [0,0,0], "fovv": 3}})")

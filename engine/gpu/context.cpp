@@ -173,6 +173,14 @@ std::vector<VkPhysicalDevice> enumerate(VkInstance instance) {
 
 }  // namespace
 
+int auto_device_index(const std::vector<DeviceInfo>& devices) {
+    try {
+        return choose_device(devices, {DeviceChoice::Kind::Auto});
+    } catch (const Error&) {
+        return -1;
+    }
+}
+
 DeviceChoice parse_device_choice(const std::string& text) {
     if (text == "auto") return {DeviceChoice::Kind::Auto};
     if (text == "cpu") return {DeviceChoice::Kind::Cpu};

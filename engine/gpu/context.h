@@ -81,6 +81,9 @@ struct DeviceInfo {
 
 // Lists the physical devices the loader sees (creates and drops a bare instance).
 [[nodiscard]] std::vector<DeviceInfo> list_devices();
+// The index `--device auto` takes among `devices` (a discrete GPU, else an integrated one,
+// else a virtual one, else the CPU device), or −1 when none is suitable.
+[[nodiscard]] int auto_device_index(const std::vector<DeviceInfo>& devices);
 
 class Context {
 public:

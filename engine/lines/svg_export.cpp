@@ -5,18 +5,13 @@
 #include <cstdio>
 #include <fstream>
 
+#include "core/color.h"
 #include "core/error.h"
 
 namespace lw {
 
 namespace {
 
-std::string hex_color(glm::vec3 c) {
-    char text[8];
-    auto byte = [](float v) { return int(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); };
-    std::snprintf(text, sizeof text, "#%02x%02x%02x", byte(c.r), byte(c.g), byte(c.b));
-    return text;
-}
 
 // Widths with two decimals; coordinates with three, so that a path read back from the file
 // lies within 5e-4 px of the one drawn (the Python module's lines are compared to it).

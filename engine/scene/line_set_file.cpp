@@ -180,7 +180,7 @@ LineSetStyle read_style(ObjectReader& set, const std::filesystem::path& file) {
     LineSetStyle style;
     if (!set.has("style")) return style;
     ObjectReader r(set.at("style"), set.path("style"), file);
-    if (r.has("color")) style.color = r.vec3("color", 0.0, 1.0);
+    if (r.has("color")) style.color = r.color("color");
     if (r.has("alpha")) style.alpha = float(r.number("alpha", 0.0, 1.0));
     if (r.has("width")) style.width = float(r.number("width", 0.1, 256.0));
     if (r.has("fade")) style.fade = r.boolean("fade");

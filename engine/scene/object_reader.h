@@ -11,6 +11,7 @@
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
+#include "core/color.h"
 #include "core/error.h"
 
 namespace lw::scene_detail {
@@ -93,6 +94,15 @@ public:
             out[i] = static_cast<float>(x);
         }
         return out;
+    }
+
+    // A colour: [r, g, b] in [0, 1] or a string as stroke files and SVG write it ("#rrggbb",
+    // "#rgb", "rgb(…)", a basic name; core/color.h).
+    glm::vec3 color(const std::string& key) {
+        const json& v = at(key);
+        if (v.is_string()) return parse_color(v.get<std::string>(), file_.string() + ": " + path(key));
+        if (!v.is_array()) fail_key(key, "expected [r, g, b] in [0, 1] or a colour string such as \"#rrggbb\"");
+        return vec3(key, 0.0, 1.0);
     }
 
     // Every key of the object must have been asked for.

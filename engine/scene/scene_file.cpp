@@ -138,7 +138,7 @@ LineStyle read_line_type(ObjectReader& lines, LineType type, const std::filesyst
     bool enabled = line_type_enabled(p, type);
     if (r.has("enabled")) enabled = r.boolean("enabled");
     if (r.has("width")) style.width = static_cast<float>(r.number("width", 0.1, 64.0));
-    if (r.has("color")) style.color = r.vec3("color", 0.0, 1.0);
+    if (r.has("color")) style.color = r.color("color");
     if (r.has("slam")) style.slam = r.file_path("slam", "a SLAM file (.exr)");
     if (r.has("taper")) style.taper_px = static_cast<float>(r.number("taper", 0.0, 4096.0));
     if (r.has("ribbon")) style.ribbon = r.file_path("ribbon", "a ribbon exemplar image (.png)");
@@ -189,6 +189,14 @@ bool is_model_path(const std::filesystem::path& path) {
     return ext == ".gltf" || ext == ".glb";
 }
 
+void check_scene_or_model_path(const std::filesystem::path& path) {
+    std::string ext = path.extension().string();
+    for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (is_model_path(path) || ext == ".json") return;
+    throw Error(path.string() + ": unsupported model format" + (ext.empty() ? std::string(" (no extension)") : " '" + ext + "'") +
+                ": Linework reads glTF models (.gltf, .glb) and scene files (.json)");
+}
+
 SceneDesc scene_for_model(const std::filesystem::path& model) {
     SceneDesc scene;
     scene.models = {model};
@@ -223,11 +231,11 @@ std::vector<VectorLayerDesc> read_layers(ObjectReader& scene, const std::filesys
         layer.strokes = r.string_of("strokes");
         if (layer.strokes.empty()) r.fail_key("strokes", "expected a stroke file (.json or .svg)");
         layer.strokes = scene_detail::resolve_against(file, layer.strokes);
-        if (r.has("color")) layer.color = r.vec3("color", 0.0, 1.0);
+        if (r.has("color")) layer.color = r.color("color");
         if (r.has("width_scale")) layer.width_scale = static_cast<float>(r.number("width_scale", 0.0, 1000.0));
         if (r.has("scale_widths")) layer.scale_widths = r.boolean("scale_widths");
         if (r.has("outline")) layer.outline = r.boolean("outline");
-        if (r.has("fill")) layer.fill = r.vec3("fill", 0.0, 1.0);
+        if (r.has("fill")) layer.fill = r.color("fill");
         if (r.has("slam")) layer.slam = scene_detail::resolve_against(file, r.string_of("slam"));
         if (r.has("ribbon")) layer.ribbon = scene_detail::resolve_against(file, r.string_of("ribbon"));
         if (!layer.slam.empty() && !layer.ribbon.empty())
@@ -320,8 +328,8 @@ SceneDesc parse_scene_json(const std::string& text, const std::filesystem::path&
         if (s == "unlit") scene.style.shading = Shading::Unlit;
         if (s == "none") scene.style.draw_surface = false;
     }
-    if (r.has("color")) scene.style.color = r.vec3("color", 0.0, 1.0);
-    if (r.has("background")) scene.style.background = r.vec3("background", 0.0, 1.0);
+    if (r.has("color")) scene.style.color = r.color("color");
+    if (r.has("background")) scene.style.background = r.color("background");
     if (r.has("lines")) scene.lines = read_lines(r, source);
     if (r.has("line_sets")) {
         if (!scene.lines.enabled) r.fail_key("line_sets", "cannot be combined with \"lines\": false");

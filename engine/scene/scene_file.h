@@ -73,4 +73,9 @@ struct SceneDesc {
 // True when the path names a glTF model (by extension) rather than a scene file.
 [[nodiscard]] bool is_model_path(const std::filesystem::path& path);
 
+// Throws lw::Error naming the file unless its extension is a glTF model's (.gltf, .glb) or a
+// scene file's (.json): an OBJ, a PNG or a typo gets "unsupported model format", not the
+// JSON parser's complaint about its first byte.
+void check_scene_or_model_path(const std::filesystem::path& path);
+
 }  // namespace lw

@@ -10,7 +10,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/color.h"
 #include "core/error.h"
+#include "core/text.h"
 #include "vector/curve.h"
 #include "vector/json_object.h"
 
@@ -27,18 +29,6 @@ std::string read_text(const std::filesystem::path& path) {
     std::stringstream buffer;
     buffer << in.rdbuf();
     return buffer.str();
-}
-
-std::string trim(const std::string& s) {
-    size_t a = 0, b = s.size();
-    while (a < b && std::isspace(static_cast<unsigned char>(s[a]))) ++a;
-    while (b > a && std::isspace(static_cast<unsigned char>(s[b - 1]))) --b;
-    return s.substr(a, b - a);
-}
-
-std::string lower(std::string s) {
-    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return s;
 }
 
 // Numbers separated by white space and commas (SVG points lists, data-widths, viewBox).
@@ -83,7 +73,7 @@ void check_stroke(const Stroke& s, const std::string& where, const std::string& 
 // ---- JSON ----------------------------------------------------------------------------
 
 glm::vec3 json_color(const nlohmann::json& c, const std::string& where, const std::string& what) {
-    if (c.is_string()) return parse_svg_color(c.get<std::string>(), where + ": " + what);
+    if (c.is_string()) return parse_color(c.get<std::string>(), where + ": " + what);
     if (!c.is_array() || c.size() != 3 || !c[0].is_number() || !c[1].is_number() || !c[2].is_number())
         throw Error(where + ": " + what + ": expected [r, g, b] in [0, 1] or \"#rrggbb\"");
     return {c[0].get<float>(), c[1].get<float>(), c[2].get<float>()};
@@ -189,7 +179,7 @@ std::vector<Stroke> strokes_of(const Tag& tag, const Paint& paint, const std::st
     }
     if (lower(trim(paint.stroke)) == "none")
         throw Error(where + ": " + what + ": stroke=\"none\": only stroked elements are strokes");
-    const glm::vec3 color = paint.stroke.empty() ? glm::vec3(0.0f) : parse_svg_color(paint.stroke, where + ": " + what);
+    const glm::vec3 color = paint.stroke.empty() ? glm::vec3(0.0f) : parse_color(paint.stroke, where + ": " + what);
     const float width = paint.stroke_width.empty() ? 1.0f
                                                    : float(parse_length(paint.stroke_width, where, what + " stroke-width"));
     std::vector<Stroke> out;
@@ -216,58 +206,8 @@ std::string format_number(double v) {
     return buffer;
 }
 
-std::string hex_color(glm::vec3 c) {
-    char buffer[8];
-    auto byte = [](float x) { return int(std::lround(std::clamp(x, 0.0f, 1.0f) * 255.0f)); };
-    std::snprintf(buffer, sizeof buffer, "#%02x%02x%02x", byte(c.r), byte(c.g), byte(c.b));
-    return buffer;
-}
 
 }  // namespace
-
-glm::vec3 parse_svg_color(const std::string& text, const std::string& where) {
-    const std::string t = lower(trim(text));
-    auto fail = [&]() -> glm::vec3 {
-        throw Error(where + ": colour \"" + text + "\" is not #rgb, #rrggbb, rgb(r, g, b) or a basic name");
-    };
-    auto hex = [&](char c) -> int {
-        if (c >= '0' && c <= '9') return c - '0';
-        if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-        fail();
-        return 0;
-    };
-    if (!t.empty() && t[0] == '#') {
-        if (t.size() == 4) return glm::vec3(hex(t[1]), hex(t[2]), hex(t[3])) * (17.0f / 255.0f);
-        if (t.size() == 7)
-            return glm::vec3(hex(t[1]) * 16 + hex(t[2]), hex(t[3]) * 16 + hex(t[4]), hex(t[5]) * 16 + hex(t[6])) / 255.0f;
-        return fail();
-    }
-    if (t.rfind("rgb(", 0) == 0 && t.back() == ')') {
-        std::stringstream parts(t.substr(4, t.size() - 5));
-        std::string part;
-        std::vector<float> v;
-        while (std::getline(parts, part, ',')) {
-            part = trim(part);
-            const bool percent = !part.empty() && part.back() == '%';
-            if (percent) part.pop_back();
-            char* end = nullptr;
-            const double x = std::strtod(part.c_str(), &end);
-            if (part.empty() || *end != '\0') return fail();
-            v.push_back(float(std::clamp(percent ? x / 100.0 : x / 255.0, 0.0, 1.0)));
-        }
-        if (v.size() != 3) return fail();
-        return {v[0], v[1], v[2]};
-    }
-    static const std::map<std::string, glm::vec3> names = {
-        {"black", {0, 0, 0}},         {"white", {1, 1, 1}},          {"red", {1, 0, 0}},
-        {"green", {0, 128 / 255.f, 0}}, {"blue", {0, 0, 1}},          {"yellow", {1, 1, 0}},
-        {"cyan", {0, 1, 1}},          {"magenta", {1, 0, 1}},        {"gray", {128 / 255.f, 128 / 255.f, 128 / 255.f}},
-        {"grey", {128 / 255.f, 128 / 255.f, 128 / 255.f}}, {"orange", {1, 165 / 255.f, 0}},
-        {"brown", {165 / 255.f, 42 / 255.f, 42 / 255.f}}, {"purple", {128 / 255.f, 0, 128 / 255.f}}};
-    const auto it = names.find(t);
-    if (it == names.end()) return fail();
-    return it->second;
-}
 
 StrokeSet parse_strokes_json(const std::string& text, const std::string& where) {
     using json = nlohmann::json;
@@ -474,8 +414,16 @@ std::string strokes_to_json(const StrokeSet& set) {
     return root.dump() + "\n";
 }
 
+bool is_stroke_file_path(const std::filesystem::path& path) {
+    const std::string ext = lower(path.extension().string());
+    return ext == ".svg" || ext == ".json";
+}
+
 void save_strokes(const std::filesystem::path& path, const StrokeSet& set) {
     const std::string ext = lower(path.extension().string());
+    if (!is_stroke_file_path(path))
+        throw Error(path.string() + ": unsupported stroke file format" + (ext.empty() ? std::string(" (no extension)") : " '" + ext + "'") +
+                    ": strokes are written as .svg or .json");
     std::ofstream out(path, std::ios::binary);
     if (!out) throw Error(path.string() + ": cannot write the stroke file");
     out << (ext == ".json" ? strokes_to_json(set) : strokes_to_svg(set));

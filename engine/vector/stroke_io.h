@@ -25,12 +25,11 @@ namespace lw {
 
 [[nodiscard]] std::string strokes_to_svg(const StrokeSet& set);
 [[nodiscard]] std::string strokes_to_json(const StrokeSet& set);
-// By extension: .json writes JSON, anything else SVG. Throws lw::Error naming the file.
+// True for the extensions save_strokes writes: .svg and .json (any case).
+[[nodiscard]] bool is_stroke_file_path(const std::filesystem::path& path);
+// By extension: .json writes JSON, .svg SVG. Throws lw::Error naming the file for any other
+// extension (an SVG written into x.png is no use to anyone) and when it cannot write.
 void save_strokes(const std::filesystem::path& path, const StrokeSet& set);
 
-// "#rgb", "#rrggbb", "rgb(r, g, b)" (0–255 or percentages) or a basic name (black, white,
-// red, green, blue, yellow, cyan, magenta, gray/grey, orange, brown, purple).
-// Throws lw::Error "`where`: colour "…" …".
-[[nodiscard]] glm::vec3 parse_svg_color(const std::string& text, const std::string& where);
 
 }  // namespace lw

@@ -234,9 +234,14 @@ def test_bad_edits_and_odd_arguments_leave_a_working_session(tmp_path):
         linework.Session(5, device="cpu")
     with pytest.raises(ValueError, match="faces: index 9223372036854775813 of triangle 0 is out of range"):
         linework.Session(vertices=np.eye(3), faces=np.array([[0, 1, 2**63 + 5]], np.uint64), device="cpu")
-    # An error quoting a binary file's bytes still has its message.
-    with pytest.raises(ValueError, match="slam-brush.png: invalid JSON"):
+    # An image given as a scene is refused by its extension.
+    with pytest.raises(ValueError, match="slam-brush.png: unsupported model format '.png'"):
         linework.Session(SOURCE / "scenes/exemplars/slam-brush.png", device="cpu")
+    # An error quoting a binary file's bytes still has its message.
+    binary = tmp_path / "binary.json"
+    binary.write_bytes((SOURCE / "scenes/exemplars/slam-brush.png").read_bytes())
+    with pytest.raises(ValueError, match="binary.json: invalid JSON"):
+        linework.Session(binary, device="cpu")
     # Polylines are read-only views of their frame.
     p = s.lines()["silhouette"][0]
     with pytest.raises(ValueError):

@@ -14,9 +14,16 @@ Runner add_devices_command(CLI::App& app) {
             std::printf("no Vulkan devices (install mesa-vulkan-drivers for lavapipe)\n");
             return 1;
         }
+        const int chosen = auto_device_index(devices);
         for (const auto& d : devices)
-            std::printf("[%d] %s%s\n", d.index, d.describe().c_str(),
-                        d.suitable ? "" : (" — unsuitable: " + d.unsuitable_reason).c_str());
+            std::printf("[%d] %s%s%s\n", d.index, d.describe().c_str(),
+                        d.suitable ? "" : (" — unsuitable: " + d.unsuitable_reason).c_str(),
+                        d.index == chosen ? "  <- --device auto" : "");
+        if (chosen < 0) {
+            std::printf("--device auto: no suitable device\n");
+            return 1;
+        }
+        std::printf("--device auto takes [%d] %s\n", chosen, devices[size_t(chosen)].name.c_str());
         return 0;
     };
 }

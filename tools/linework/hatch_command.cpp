@@ -26,6 +26,7 @@ struct HatchOptions {
 
 int run_hatch(const HatchOptions& o) {
     Timer total;
+    if (!is_stroke_file_path(o.output)) throw usage_error("-o: " + o.output + ": strokes are written as .svg or .json");
     StrokeSet train = load_strokes(o.training);
     const HatchTraining t = naming(o.training, [&] { return make_training(std::move(train.strokes)); });
     if (o.window >= int(t.strokes.size()))

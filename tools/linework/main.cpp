@@ -2,7 +2,9 @@
 //
 // Exit codes: 0 success; 1 bad input or a failed run (the message names the file and the
 // problem); 2 bad command-line usage.
+#include <algorithm>
 #include <cstdio>
+#include <string>
 #include <exception>
 #include <utility>
 #include <vector>
@@ -12,6 +14,41 @@
 #include "commands.h"
 #include "core/error.h"
 #include "core/memory.h"
+
+namespace {
+
+// Edit distance (insertions, deletions, substitutions, transpositions of neighbours).
+size_t edit_distance(const std::string& a, const std::string& b) {
+    std::vector<std::vector<size_t>> d(a.size() + 1, std::vector<size_t>(b.size() + 1));
+    for (size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+    for (size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
+    for (size_t i = 1; i <= a.size(); ++i)
+        for (size_t j = 1; j <= b.size(); ++j) {
+            d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
+            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+        }
+    return d[a.size()][b.size()];
+}
+
+// A first word that is no command: one line naming it, with the nearest command when one
+// is within two edits or starts with it (CLI11 would only say a subcommand is required).
+bool refuse_unknown_command(const CLI::App& app, const std::string& word) {
+    if (word.empty() || word[0] == '-') return false;
+    std::string best;
+    size_t best_distance = 3;
+    for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; })) {
+        const std::string& name = sub->get_name();
+        if (name == word) return false;
+        const size_t d = name.rfind(word, 0) == 0 ? 1 : edit_distance(word, name);
+        if (d < best_distance) best_distance = d, best = name;
+    }
+    std::string hint;
+    if (!best.empty()) hint.append("; did you mean '").append(best).append("'?");
+    std::fprintf(stderr, "linework: error: unknown command '%s'%s (linework --help lists them)\n", word.c_str(), hint.c_str());
+    return true;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
     lw::keep_freed_memory();  // before any thread: lavapipe reallocates megabytes every frame
@@ -41,6 +78,7 @@ int main(int argc, char** argv) {
     add(&lw::cli::add_hatch_command);
     add(&lw::cli::add_view_command);
 
+    if (argc > 1 && refuse_unknown_command(app, argv[1])) return 2;
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

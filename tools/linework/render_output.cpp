@@ -29,6 +29,9 @@ FrameRange parse_frames(const std::string& text, const std::string& option) {
         throw usage_error(option + ": expected A:B (inclusive) or N, got \"" + text + "\"");
     }
     if (range.last < range.first) throw usage_error(option + ": " + text + " ends before it starts");
+    // Frame N is written as frame_NNNN: a negative one would be frame_-005, which image
+    // sequence tools read as no frame number at all.
+    if (range.first < 0) throw usage_error(option + ": " + text + ": frames are numbered from 0");
     return range;
 }
 

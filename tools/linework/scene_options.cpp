@@ -45,6 +45,7 @@ void add_scene_options(CLI::App* cmd, SceneOptions& o, bool offline) {
 SceneDesc scene_from_options(const SceneOptions& o) {
     const std::filesystem::path input(o.input);
     if (!std::filesystem::exists(input)) throw Error(o.input + ": no such file");
+    check_scene_or_model_path(input);
     SceneDesc desc = is_model_path(input) ? scene_for_model(input) : load_scene_file(input);
     if (!o.size.empty()) {
         const glm::ivec2 size = parse_size(o.size, "--size");

@@ -1,0 +1,67 @@
+#include "core/color.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <sstream>
+#include <vector>
+
+#include "core/error.h"
+#include "core/text.h"
+
+namespace lw {
+
+glm::vec3 parse_color(const std::string& text, const std::string& where) {
+    const std::string t = lower(trim(text));
+    auto fail = [&]() -> glm::vec3 {
+        throw Error(where + ": colour \"" + text + "\" is not #rgb, #rrggbb, rgb(r, g, b) or a basic name");
+    };
+    auto hex = [&](char c) -> int {
+        if (c >= '0' && c <= '9') return c - '0';
+        if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+        fail();
+        return 0;
+    };
+    if (!t.empty() && t[0] == '#') {
+        if (t.size() == 4) return glm::vec3(hex(t[1]), hex(t[2]), hex(t[3])) * (17.0f / 255.0f);
+        if (t.size() == 7)
+            return glm::vec3(hex(t[1]) * 16 + hex(t[2]), hex(t[3]) * 16 + hex(t[4]), hex(t[5]) * 16 + hex(t[6])) / 255.0f;
+        return fail();
+    }
+    if (t.rfind("rgb(", 0) == 0 && t.back() == ')') {
+        std::stringstream parts(t.substr(4, t.size() - 5));
+        std::string part;
+        std::vector<float> v;
+        while (std::getline(parts, part, ',')) {
+            part = trim(part);
+            const bool percent = !part.empty() && part.back() == '%';
+            if (percent) part.pop_back();
+            char* end = nullptr;
+            const double x = std::strtod(part.c_str(), &end);
+            if (part.empty() || *end != '\0') return fail();
+            v.push_back(float(std::clamp(percent ? x / 100.0 : x / 255.0, 0.0, 1.0)));
+        }
+        if (v.size() != 3) return fail();
+        return {v[0], v[1], v[2]};
+    }
+    static const std::map<std::string, glm::vec3> names = {
+        {"black", {0, 0, 0}},         {"white", {1, 1, 1}},          {"red", {1, 0, 0}},
+        {"green", {0, 128 / 255.f, 0}}, {"blue", {0, 0, 1}},          {"yellow", {1, 1, 0}},
+        {"cyan", {0, 1, 1}},          {"magenta", {1, 0, 1}},        {"gray", {128 / 255.f, 128 / 255.f, 128 / 255.f}},
+        {"grey", {128 / 255.f, 128 / 255.f, 128 / 255.f}}, {"orange", {1, 165 / 255.f, 0}},
+        {"brown", {165 / 255.f, 42 / 255.f, 42 / 255.f}}, {"purple", {128 / 255.f, 0, 128 / 255.f}}};
+    const auto it = names.find(t);
+    if (it == names.end()) return fail();
+    return it->second;
+}
+
+std::string hex_color(glm::vec3 c) {
+    char text[8];
+    auto byte = [](float v) { return int(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); };
+    std::snprintf(text, sizeof text, "#%02x%02x%02x", byte(c.r), byte(c.g), byte(c.b));
+    return text;
+}
+
+}  // namespace lw

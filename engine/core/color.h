@@ -1,0 +1,19 @@
+// core/color.h — colours as people write them, shared by every file format that has them
+// (scene files, line sets, stroke files in JSON and SVG, the Python module) and written back.
+#pragma once
+
+#include <string>
+
+#include <glm/glm.hpp>
+
+namespace lw {
+
+// "#rgb", "#rrggbb", "rgb(r, g, b)" (0–255 or percentages) or a basic name (black, white,
+// red, green, blue, yellow, cyan, magenta, gray/grey, orange, brown, purple), as the
+// components of [r, g, b] in [0, 1] (the same values a scene's arrays give). Throws lw::Error "`where`: colour "…" …".
+[[nodiscard]] glm::vec3 parse_color(const std::string& text, const std::string& where);
+
+// "#rrggbb", components clamped to [0, 1].
+[[nodiscard]] std::string hex_color(glm::vec3 c);
+
+}  // namespace lw

@@ -1,0 +1,24 @@
+// core/text.h — the two string helpers every reader of hand-written files needs.
+#pragma once
+
+#include <algorithm>
+#include <cctype>
+#include <string>
+
+namespace lw {
+
+// Without leading and trailing white space.
+inline std::string trim(const std::string& s) {
+    size_t a = 0, b = s.size();
+    while (a < b && std::isspace(static_cast<unsigned char>(s[a]))) ++a;
+    while (b > a && std::isspace(static_cast<unsigned char>(s[b - 1]))) --b;
+    return s.substr(a, b - a);
+}
+
+// ASCII lower case (file extensions, SVG tag and colour names).
+inline std::string lower(std::string s) {
+    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return s;
+}
+
+}  // namespace lw
