@@ -1,7 +1,10 @@
 // The `linework` command as a user meets it: exit codes, messages, files written.
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
+#include "io/image_io.h"
 #include "test_support.h"
 
 namespace lw {
@@ -99,6 +102,32 @@ TEST(Cli, BadSceneKeyIsNamed) {
     const auto r = run_linework("render " + quote(dir / "bad.json") + " -o " + quote(dir / "out"));
     EXPECT_EQ(r.exit_code, 1);
     EXPECT_NE(r.output.find("bad.json: camera.fovv: unknown key"), std::string::npos) << r.output;
+}
+
+// A transparent render composited over a colour is the render over that colour: the frame
+// is premultiplied `over` nothing, the PNG straight alpha (within 2/255 for the rounding).
+TEST(Cli, TransparentBackgroundCompositesToTheOpaqueRender) {
+    const fs::path dir = test::temp_dir(), model = test::data_dir() / "models/spot/spot.glb";
+    const std::string common = " --device cpu --size 160x120 --validation";
+    const auto t = run_linework("render " + quote(model) + " -o " + quote(dir / "t") + common + " --background transparent");
+    ASSERT_EQ(t.exit_code, 0) << t.output;
+    const auto c = run_linework("render " + quote(model) + " -o " + quote(dir / "c") + common + " --background '#3380cc'");
+    ASSERT_EQ(c.exit_code, 0) << c.output;
+    const ImageRGBA8 clear = read_image_rgba8(dir / "t/frame_0000.png"), over = read_image_rgba8(dir / "c/frame_0000.png");
+    ASSERT_EQ(clear.pixels.size(), over.pixels.size());
+    EXPECT_EQ(clear.pixels[3], 0) << "the corner is background";
+    const int plate[3] = {0x33, 0x80, 0xcc};
+    int worst = 0, inked = 0;
+    for (size_t i = 0; i < clear.pixels.size(); i += 4) {
+        const int a = clear.pixels[i + 3];
+        inked += a > 0;
+        for (size_t k = 0; k < 3; ++k) {
+            const double composited = (clear.pixels[i + k] * a + plate[k] * (255 - a)) / 255.0;
+            worst = std::max(worst, int(std::lround(std::abs(composited - over.pixels[i + k]))));
+        }
+    }
+    EXPECT_GT(inked, 1000);
+    EXPECT_LE(worst, 2);
 }
 
 TEST(Cli, DevicesSaysWhichOneAutoTakes) {

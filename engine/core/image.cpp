@@ -19,6 +19,17 @@ void composite_over_white(ImageRGBA8& image) {
     }
 }
 
+ImageRGBA8 straight_alpha(const ImageRGBA8& premultiplied) {
+    ImageRGBA8 out = premultiplied;
+    for (size_t i = 0; i < out.pixels.size(); i += 4) {
+        const int a = out.pixels[i + 3];
+        if (a == 255) continue;
+        for (size_t c = 0; c < 3; ++c)
+            out.pixels[i + c] = a == 0 ? 0 : uint8_t(std::min(255, (out.pixels[i + c] * 255 + a / 2) / a));
+    }
+    return out;
+}
+
 ImageDiff compare_images(const ImageRGBA8& a, const ImageRGBA8& b, int tolerance) {
     if (a.width != b.width || a.height != b.height)
         throw Error("images differ in size: " + std::to_string(a.width) + "x" + std::to_string(a.height) + " vs " +

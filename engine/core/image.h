@@ -32,6 +32,11 @@ struct ImageDiff {
 // `linework ribbon` writes unless asked for a transparent background.
 void composite_over_white(ImageRGBA8& image);
 
+// Premultiplied RGBA (a frame over a transparent background) to straight alpha, as PNG
+// stores it: colour ÷ alpha, rounded; fully transparent pixels black. Opaque pixels are
+// unchanged, so an opaque frame comes back as it was.
+[[nodiscard]] ImageRGBA8 straight_alpha(const ImageRGBA8& premultiplied);
+
 // Compares RGBA images of equal size (throws lw::Error otherwise). `tolerance` is the
 // per-channel difference a pixel may have before it counts as differing.
 [[nodiscard]] ImageDiff compare_images(const ImageRGBA8& a, const ImageRGBA8& b, int tolerance = 0);

@@ -110,6 +110,12 @@ void draw_mesh(VkCommandBuffer cmd, const GraphicsPipeline& pipeline, RenderTarg
     vkCmdDrawIndexed(cmd, mesh.index_count, 1, 0, 0, 0);
 }
 
+// The background, or nothing at all (premultiplied: no colour where there is no alpha).
+VkClearColorValue clear_color(const SurfaceStyle& style) {
+    if (style.transparent) return {{0.0f, 0.0f, 0.0f, 0.0f}};
+    return {{style.background.r, style.background.g, style.background.b, 1.0f}};
+}
+
 }  // namespace
 
 void SurfacePass::record_depth_only(VkCommandBuffer cmd, RenderTarget& target, const GpuMesh* mesh,
@@ -122,7 +128,7 @@ void SurfacePass::record_depth_only(VkCommandBuffer cmd, RenderTarget& target, c
                           .src_access = VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT,
                           .dst_stage = VK_PIPELINE_STAGE_2_CLEAR_BIT,
                           .dst_access = VK_ACCESS_2_TRANSFER_WRITE_BIT});
-    VkClearColorValue clear{{style.background.r, style.background.g, style.background.b, 1.0f}};
+    const VkClearColorValue clear = clear_color(style);
     VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
     vkCmdClearColorImage(cmd, target.color.get(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &clear, 1, &range);
     record_image_barrier(cmd, target.color,
@@ -157,7 +163,7 @@ void SurfacePass::record(VkCommandBuffer cmd, RenderTarget& target, const GpuMes
                                     .imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                                     .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
                                     .storeOp = VK_ATTACHMENT_STORE_OP_STORE};
-    color.clearValue.color = {{style.background.r, style.background.g, style.background.b, 1.0f}};
+    color.clearValue.color = clear_color(style);
     VkRenderingAttachmentInfo depth = depth_attachment(target);
     VkRenderingInfo rendering{.sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
                               .renderArea = {{0, 0}, {target.width, target.height}},

@@ -329,7 +329,12 @@ SceneDesc parse_scene_json(const std::string& text, const std::filesystem::path&
         if (s == "none") scene.style.draw_surface = false;
     }
     if (r.has("color")) scene.style.color = r.color("color");
-    if (r.has("background")) scene.style.background = r.color("background");
+    if (r.has("background")) {
+        if (r.at("background").is_string() && r.at("background").get<std::string>() == "transparent")
+            scene.style.transparent = true;
+        else
+            scene.style.background = r.color("background");
+    }
     if (r.has("lines")) scene.lines = read_lines(r, source);
     if (r.has("line_sets")) {
         if (!scene.lines.enabled) r.fail_key("line_sets", "cannot be combined with \"lines\": false");

@@ -144,7 +144,7 @@ std::string scene_json(const SceneDesc& desc, const ViewCamera& camera, const st
                       : style.shading == Shading::Unlit ? "unlit"
                                                         : "toon";
     root["color"] = vec3(style.color);
-    root["background"] = vec3(style.background);
+    root["background"] = style.transparent ? json("transparent") : vec3(style.background);
 
     const LinesDesc& lines = desc.lines;
     if (!lines.enabled) {

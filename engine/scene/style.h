@@ -20,6 +20,10 @@ struct SurfaceStyle {
     Shading shading = Shading::Toon;
     glm::vec3 color{0.82f, 0.84f, 0.88f};     // surface colour, linear 0..1
     glm::vec3 background{1.0f, 1.0f, 1.0f};
+    // The background's alpha is 0: the frame is premultiplied RGBA over nothing (the lines
+    // and strokes blend with `over`, so compositing it over a colour gives the render over
+    // that colour), and PNGs are written with straight alpha.
+    bool transparent = false;
     bool draw_surface = true;  // false: depth only, the surface takes the background colour
 };
 

@@ -70,7 +70,7 @@ void write_frame_files(const FrameFiles& files, const SceneSession& session, con
         write_text_atomically(std::filesystem::path(files.dump_paths) / frame_name(f, "json"),
                               path_dump_json(f, desc.width, desc.height, session.dump_groups(frame), frame.layers));
     write_atomically(files.out_dir / frame_name(f, "png"),
-                     [&](const std::filesystem::path& file) { write_png(file, frame.image.color); });
+                     [&](const std::filesystem::path& file) { write_png(file, straight_alpha(frame.image.color)); });
 }
 
 void print_frame_report(const FrameFiles& files, const SceneSession& session, const Frame& frame, int f) {

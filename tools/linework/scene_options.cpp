@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "commands.h"
+#include "core/color.h"
 
 namespace lw::cli {
 
@@ -14,6 +15,10 @@ void add_scene_options(CLI::App* cmd, SceneOptions& o, bool offline) {
     cmd->add_option("--compute", o.compute, kComputeSiteHelp)->capture_default_str();
     cmd->add_option("--size", o.size, offline ? "Image size WxH (default: the scene's, else 960x720)"
                                               : "Window size WxH (default: the scene's, else 960x720)");
+    cmd->add_option("--background", o.background,
+                    "Background: a colour (#rrggbb, #rgb, rgb(r, g, b), a basic name) or \"transparent\": alpha 0 "
+                    "where nothing is drawn, PNGs with straight alpha and EXRs premultiplied, to composite the "
+                    "lines over a plate (default: the scene's \"background\", else white)");
     cmd->add_option("--slam", o.slam, "Draw silhouettes and suggestive contours as strokes textured by this SLAM (.exr)");
     cmd->add_option("--stroke-width", o.stroke_width, "Width of SLAM strokes in pixels (default 6)")
         ->check(CLI::PositiveNumber);
@@ -51,6 +56,16 @@ SceneDesc scene_from_options(const SceneOptions& o) {
         const glm::ivec2 size = parse_size(o.size, "--size");
         desc.width = size.x;
         desc.height = size.y;
+    }
+    if (o.background == "transparent") {
+        desc.style.transparent = true;
+    } else if (!o.background.empty()) {
+        try {
+            desc.style.background = parse_color(o.background, "--background");
+        } catch (const Error& e) {
+            throw usage_error(e.what());
+        }
+        desc.style.transparent = false;
     }
     if (!o.slam.empty()) use_slam_strokes(desc.lines, o.slam, o.stroke_width);
     return desc;

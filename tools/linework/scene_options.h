@@ -19,6 +19,7 @@ struct SceneOptions {
     std::string device = "auto";
     std::string compute = "auto";
     std::string size;
+    std::string background;  // a colour, "transparent", or empty: the scene's
     std::string slam;
     float stroke_width = 6.0f;
     std::string param;
