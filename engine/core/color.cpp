@@ -1,7 +1,6 @@
 #include "core/color.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <map>

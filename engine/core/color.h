@@ -10,7 +10,8 @@ namespace lw {
 
 // "#rgb", "#rrggbb", "rgb(r, g, b)" (0–255 or percentages) or a basic name (black, white,
 // red, green, blue, yellow, cyan, magenta, gray/grey, orange, brown, purple), as the
-// components of [r, g, b] in [0, 1] (the same values a scene's arrays give). Throws lw::Error "`where`: colour "…" …".
+// components of [r, g, b] in [0, 1] (the same values a scene's arrays give). Throws
+// lw::Error "`where`: colour "…" …".
 [[nodiscard]] glm::vec3 parse_color(const std::string& text, const std::string& where);
 
 // "#rrggbb", components clamped to [0, 1].

@@ -21,4 +21,9 @@ inline std::string lower(std::string s) {
     return s;
 }
 
+// " '.obj'", or " (no extension)": how an error names a file extension (lower case).
+inline std::string extension_phrase(const std::string& extension) {
+    return extension.empty() ? std::string(" (no extension)") : " '" + extension + "'";
+}
+
 }  // namespace lw

@@ -17,6 +17,7 @@
 
 #include "core/error.h"
 #include "core/log.h"
+#include "core/text.h"
 #include "scene/gltf_detail.h"
 #include "scene/model.h"
 
@@ -123,9 +124,7 @@ void check_glb_framing(const std::filesystem::path& path, const std::string& fil
 }
 
 tinygltf::Model parse_file(const std::filesystem::path& path, const std::string& file) {
-    std::string extension = path.extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    const std::string extension = lower(path.extension().string());
     if (extension != ".gltf" && extension != ".glb")
         throw Error(file + ": unsupported file extension '" + path.extension().string() + "' (expected .gltf or .glb)");
     std::error_code ec;

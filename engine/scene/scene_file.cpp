@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
+#include "core/text.h"
 #include "scene/line_set_file.h"
 #include "scene/object_reader.h"
 
@@ -184,16 +185,14 @@ LinesDesc read_lines(ObjectReader& parent, const std::filesystem::path& file) {
 }  // namespace
 
 bool is_model_path(const std::filesystem::path& path) {
-    std::string ext = path.extension().string();
-    for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    const std::string ext = lower(path.extension().string());
     return ext == ".gltf" || ext == ".glb";
 }
 
 void check_scene_or_model_path(const std::filesystem::path& path) {
-    std::string ext = path.extension().string();
-    for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    const std::string ext = lower(path.extension().string());
     if (is_model_path(path) || ext == ".json") return;
-    throw Error(path.string() + ": unsupported model format" + (ext.empty() ? std::string(" (no extension)") : " '" + ext + "'") +
+    throw Error(path.string() + ": unsupported model format" + extension_phrase(ext) +
                 ": Linework reads glTF models (.gltf, .glb) and scene files (.json)");
 }
 

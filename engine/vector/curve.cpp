@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
+#include "core/text.h"
 #include "vector/json_object.h"
 
 namespace lw {
@@ -200,9 +201,7 @@ Curve2D parse_curve_svg(const std::string& svg, const std::string& where) {
 Curve2D load_curve(const std::filesystem::path& path) {
     if (!std::filesystem::exists(path)) throw Error(path.string() + ": no such file");
     const std::string text = read_text(path);
-    std::string ext = path.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return ext == ".svg" ? parse_curve_svg(text, path.string()) : parse_curve_json(text, path.string());
+    return lower(path.extension().string()) == ".svg" ? parse_curve_svg(text, path.string()) : parse_curve_json(text, path.string());
 }
 
 ArclengthCurve::ArclengthCurve(const Curve2D& curve) : closed_(curve.closed) {

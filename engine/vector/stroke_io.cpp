@@ -206,7 +206,6 @@ std::string format_number(double v) {
     return buffer;
 }
 
-
 }  // namespace
 
 StrokeSet parse_strokes_json(const std::string& text, const std::string& where) {
@@ -422,7 +421,7 @@ bool is_stroke_file_path(const std::filesystem::path& path) {
 void save_strokes(const std::filesystem::path& path, const StrokeSet& set) {
     const std::string ext = lower(path.extension().string());
     if (!is_stroke_file_path(path))
-        throw Error(path.string() + ": unsupported stroke file format" + (ext.empty() ? std::string(" (no extension)") : " '" + ext + "'") +
+        throw Error(path.string() + ": unsupported stroke file format" + extension_phrase(ext) +
                     ": strokes are written as .svg or .json");
     std::ofstream out(path, std::ios::binary);
     if (!out) throw Error(path.string() + ": cannot write the stroke file");

@@ -5,6 +5,8 @@
 
 #include <GLFW/glfw3.h>
 
+#include "core/text.h"
+
 namespace lw::cli {
 
 namespace {
@@ -22,10 +24,9 @@ constexpr std::array<std::pair<const char*, int>, 26> kKeys{{
 }  // namespace
 
 int key_from_name(const std::string& name) {
-    std::string lower = name;
-    for (char& c : lower) c = char(std::tolower(static_cast<unsigned char>(c)));
+    const std::string lowered = lower(name);
     for (const auto& [n, key] : kKeys)
-        if (lower == n) return key;
+        if (lowered == n) return key;
     return -1;
 }
 
