@@ -474,6 +474,28 @@ TEST(Weld, DropsFacesThatBecomeDegenerateAndMergesNegativeZero) {
     EXPECT_EQ(w.edges.size(), 3u);
 }
 
+// The welded numbering follows the faces, not the vertex buffer: the same triangles with
+// their vertices stored in another order (as an OBJ reader numbers them) weld identically.
+TEST(Weld, VertexBufferOrderDoesNotChangeTheWeldedMesh) {
+    const TriangleMesh spot = drawn(load_gltf(data_dir() / "models/spot/spot.glb"));
+    TriangleMesh reversed = spot;
+    const size_t n = spot.positions.size();
+    for (size_t v = 0; v < n; ++v) {
+        reversed.positions[n - 1 - v] = spot.positions[v];
+        reversed.normals[n - 1 - v] = spot.normals[v];
+    }
+    for (uint32_t& i : reversed.indices) i = uint32_t(n - 1 - i);
+    const WeldedMesh a = weld(spot), b = weld(reversed);
+    EXPECT_EQ(a.positions, b.positions);
+    EXPECT_EQ(a.faces, b.faces);
+    ASSERT_EQ(a.edges.size(), b.edges.size());
+    for (size_t e = 0; e < a.edges.size(); ++e) {
+        EXPECT_EQ(a.edges[e].v[0], b.edges[e].v[0]);
+        EXPECT_EQ(a.edges[e].v[1], b.edges[e].v[1]);
+    }
+    for (size_t v = 0; v < n; ++v) EXPECT_EQ(a.welded_index[v], b.welded_index[n - 1 - v]);
+}
+
 TEST(Weld, NonManifoldEdgeHasNoNeighbours) {
     TriangleMesh fin;  // three triangles on the edge (0,1)
     fin.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}};

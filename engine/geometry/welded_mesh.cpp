@@ -54,16 +54,24 @@ size_t WeldedMesh::border_edge_count() const {
 WeldedMesh weld(const TriangleMesh& mesh) {
     WeldedMesh out;
 
-    // Welded vertices are numbered in order of first appearance among the input vertices.
+    // Welded vertices are numbered in order of first use by the faces (then the unused ones):
+    // the numbering, and with it each edge's direction and where chains start, depends on the
+    // triangles only, not on how a file orders its vertex buffer. A glTF and the OBJ written
+    // from it (whose vertices a reader numbers by first use) give the same lines.
     std::unordered_map<PositionKey, uint32_t, PositionKeyHash> welded_of;
     welded_of.reserve(mesh.positions.size());
-    out.welded_index.resize(mesh.positions.size());
-    for (size_t v = 0; v < mesh.positions.size(); ++v) {
+    constexpr uint32_t kUnassigned = ~0u;
+    out.welded_index.assign(mesh.positions.size(), kUnassigned);
+    const auto assign = [&](size_t v) {
+        if (out.welded_index[v] != kUnassigned) return;
         const auto [it, inserted] =
             welded_of.try_emplace(key_of(mesh.positions[v]), static_cast<uint32_t>(out.positions.size()));
         if (inserted) out.positions.push_back(mesh.positions[v]);
         out.welded_index[v] = it->second;
-    }
+    };
+    for (uint32_t v : mesh.indices)
+        if (v < mesh.positions.size()) assign(v);
+    for (size_t v = 0; v < mesh.positions.size(); ++v) assign(v);
 
     // Faces whose corners collapsed onto each other have no area and no well-defined edges.
     out.faces.reserve(mesh.triangle_count());

@@ -26,7 +26,7 @@ struct MeshEdge {
 };
 
 struct WeldedMesh {
-    std::vector<glm::vec3> positions;
+    std::vector<glm::vec3> positions;        // numbered in order of first use by the faces
     std::vector<glm::uvec3> faces;
     std::vector<MeshEdge> edges;
     std::vector<glm::ivec3> face_edges;      // edge index opposite each corner

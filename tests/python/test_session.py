@@ -91,9 +91,11 @@ def test_camera_overrides_and_view_matrix(tmp_path):
     s = linework.Session(SPOT, device="cpu", size=SIZE, eye=(2, 0.5, 2), fov=30)
     assert np.array_equal(s.render(), image)
     assert_lines_match_svg(s.lines(), svg)
-    # A camera set from its own view matrix draws the same frame.
+    # A camera set from its own view matrix draws the same frame, to the rounding of taking
+    # the matrix apart into eye, target and up (float inverse; on spot 2 values of 172 800 off by 1).
     s.set_camera(view=s.view_matrix)
-    assert np.array_equal(s.render(), image)
+    diff = np.abs(s.render().astype(int) - image.astype(int))
+    assert diff.max() <= 2 and np.count_nonzero(diff) <= 0.0005 * diff.size
     # The camera set by parts equals the command line's flags for the same camera.
     c = s.camera
     s.reset_camera()
