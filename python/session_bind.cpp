@@ -143,7 +143,7 @@ Session(scene=None, *, device="auto", size=None, eye=None, target=None, up=None,
         vertices=None, faces=None, normals=None, name="mesh", compute="auto",
         coherent=False, validation=None)
 
-scene: a scene file (.json), a model (.gltf/.glb), a dict of scene keys (the scene file's
+scene: a scene file (.json), a model (.gltf, .glb, .obj, .ply), a dict of scene keys (the scene file's
 format; relative paths from the working folder), or None with vertices (N×3) and faces
 (M×3) — a dict may come beside them, without "model". device: "auto", "cpu" (lavapipe),
 "gpu" or an index of `linework devices`. size=(w, h), eye/target/up (x, y, z) and fov
@@ -275,7 +275,7 @@ speak raises RuntimeError. Bad input raises ValueError with the command line's m
                                "or LINEWORK_VALIDATION=1)");
 
     m.def("load_mesh", &load_mesh, pyb::arg("path"),
-          "The triangles of a .gltf/.glb model in world space (rest pose) as the renderer merges them: "
+          "The triangles of a model (.gltf, .glb, .obj, .ply) in world space (rest pose) as the renderer merges them: "
           "(vertices N×3 float32, faces M×3 int32, normals N×3 float32).");
 }
 

@@ -65,7 +65,19 @@ void write_fixtures(const fs::path& tmp) {
     write(tmp / "unknownkey.json", R"({"model": ")" + spot + R"(", "wobble": 1})");
     write(tmp / "badsize.json", R"({"model": ")" + spot + R"(", "size": [0, 10]})");
     write(tmp / "badcolor.json", R"({"model": ")" + spot + R"(", "background": "#ff88"})");
-    write(tmp / "model.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    write(tmp / "past.obj", "v 0 0 0\nv 1 0 0\nf 1 2 9\n");
+    write(tmp / "nan.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n");
+    write(tmp / "words.obj", "hello world\n");
+    write(tmp / "noheader.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n");
+    write(tmp / "points.ply", "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\n"
+                              "property float z\nend_header\n0 0 0\n1 1 1\n");
+    {
+        std::ifstream quad(test::source_dir() / "tests/fuzz/corpus/mesh/quad_little.ply", std::ios::binary);
+        std::string all((std::istreambuf_iterator<char>(quad)), std::istreambuf_iterator<char>());
+        write(tmp / "short.ply", all.substr(0, all.find("end_header\n") + 11 + 40));  // half a vertex list
+    }
+    write(tmp / "text.ply", "not a ply\n");
+    write(tmp / "model.stl", "solid x\nendsolid x\n");
     write(tmp / "nomodel.json", R"({"size": [10, 10]})");
     write(tmp / "missingmodel.json", R"({"model": "missing.glb"})");
     write(tmp / "layernostrokes.json", R"({"layers": [{"fill": [1, 0, 0]}]})");

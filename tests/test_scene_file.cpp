@@ -79,7 +79,7 @@ TEST(SceneFile, ErrorsNameTheKey) {
               "scenes/x.json: camera.fov: must be between 1 and 170, got 200");
     EXPECT_EQ(error_of(R"({"model": "a.glb", "camera": {"target": [0,0,0]}})"), "scenes/x.json: camera.eye: required");
     EXPECT_EQ(error_of(R"({"size": [10, 10]})").rfind("scenes/x.json: model: required", 0), 0u);
-    EXPECT_EQ(error_of(R"({"model": "a.obj"})"), "scenes/x.json: model: \"a.obj\" is not a .gltf or .glb file");
+    EXPECT_EQ(error_of(R"({"model": "a.stl"})"), "scenes/x.json: model: \"a.stl\" is not a model file (.gltf, .glb, .obj or .ply)");
     EXPECT_EQ(error_of(R"([1, 2])"), "scenes/x.json: the scene must be a JSON object");
     EXPECT_EQ(error_of(R"({"model": "a.glb",)").rfind("scenes/x.json: invalid JSON: parse error", 0), 0u);
 }

@@ -11,6 +11,7 @@ packages=(
   libvulkan-dev mesa-vulkan-drivers         # Vulkan loader + headers, Mesa lavapipe (CPU device)
   vulkan-validationlayers glslang-tools     # Khronos validation layer; GLSL -> SPIR-V at build time
   libglm-dev libtinygltf-dev nlohmann-json3-dev libcli11-dev
+  libassimp-dev                             # OBJ and PLY models (research scans)
   libopenimageio-dev
   libglfw3-dev libimgui-dev                 # the viewer: window, input and its Dear ImGui panel
   xvfb xauth                                # viewer tests: xvfb-run, a display without a screen

@@ -2,7 +2,7 @@
 # Builds the libFuzzer targets of tests/fuzz with clang (ASan + UBSan) in build-fuzz and runs
 # each for SECONDS (default 600), seeded from tests/fuzz/corpus/NAME. New interesting inputs
 # collect in build-fuzz/corpus/NAME; crashes are written as build-fuzz/crash-NAME-*.
-#   bash tools/fuzz.sh [SECONDS] [TARGET...]      targets: gltf scene strokes slam image
+#   bash tools/fuzz.sh [SECONDS] [TARGET...]      targets: gltf mesh scene strokes slam image
 # A crash found becomes a regression test: copy the input into tests/fuzz/corpus/NAME (the
 # suite replays that folder, FuzzCorpus.NAME) and fix the reader.
 set -euo pipefail
@@ -10,7 +10,7 @@ cd "$(dirname "$0")/.."
 seconds=${1:-600}
 shift || true
 targets=("$@")
-[ ${#targets[@]} -eq 0 ] && targets=(gltf scene strokes slam image)
+[ ${#targets[@]} -eq 0 ] && targets=(gltf mesh scene strokes slam image)
 
 cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
       -DLINEWORK_FUZZ=ON -DLINEWORK_TESTS=OFF > /tmp/linework-fuzz-build.log

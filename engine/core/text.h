@@ -1,4 +1,4 @@
-// core/text.h — the two string helpers every reader of hand-written files needs.
+// core/text.h — the string helpers every reader of hand-written files needs.
 #pragma once
 
 #include <algorithm>
@@ -24,6 +24,22 @@ inline std::string lower(std::string s) {
 // " '.obj'", or " (no extension)": how an error names a file extension (lower case).
 inline std::string extension_phrase(const std::string& extension) {
     return extension.empty() ? std::string(" (no extension)") : " '" + extension + "'";
+}
+
+// A library's message made one line of an error: trailing newlines dropped, inner ones as
+// "; ", and cut at `max_length` (tinygltf can quote a whole data URI).
+inline std::string one_line(std::string text, size_t max_length = 400) {
+    while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.pop_back();
+    std::string out;
+    for (char c : text) {
+        if (c == '\n') {
+            out += "; ";
+        } else if (c != '\r') {
+            out += c;
+        }
+    }
+    if (out.size() > max_length) out = out.substr(0, max_length) + "...";
+    return out;
 }
 
 }  // namespace lw

@@ -52,23 +52,6 @@ bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, in
     return true;
 }
 
-// tinygltf's messages end with newlines and sometimes hold several lines: make them one
-// line. They can also quote a whole data URI, so very long ones are cut.
-std::string one_line(std::string text) {
-    constexpr size_t kMaxLength = 400;
-    while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.pop_back();
-    std::string out;
-    for (char c : text) {
-        if (c == '\n') {
-            out += "; ";
-        } else if (c != '\r') {
-            out += c;
-        }
-    }
-    if (out.size() > kMaxLength) out = out.substr(0, kMaxLength) + "...";
-    return out;
-}
-
 uint32_t read_u32(const unsigned char* bytes) {
     uint32_t v;
     std::memcpy(&v, bytes, sizeof v);

@@ -1,6 +1,8 @@
-// engine/scene/model.h — a glTF 2.0 asset as plain data.
+// engine/scene/model.h — a glTF 2.0 asset (or an OBJ or PLY mesh) as plain data.
 //
-// Input:  a .gltf (external or data-URI buffers) or .glb file.
+// Input:  a .gltf (external or data-URI buffers) or .glb file; or an .obj or .ply mesh
+//         (one root node, one mesh, a primitive per OBJ material group; no cameras,
+//         animations or skins).
 // Output: `Model` — triangle primitives per mesh, the node hierarchy with local transforms,
 //         cameras, animation clips and skins, all validated (indices, accessors, buffer
 //         ranges, finite positions, an acyclic hierarchy). Evaluation of animation and
@@ -106,6 +108,17 @@ struct Model {
 
 // Loads and validates a .gltf or .glb file. Throws lw::Error naming the file and the problem.
 [[nodiscard]] Model load_gltf(const std::filesystem::path& path);
+
+// True for the mesh formats load_mesh_file reads (.obj, .ply, any case).
+[[nodiscard]] bool is_mesh_file_path(const std::filesystem::path& path);
+
+// Loads and validates an OBJ or PLY mesh (Assimp parses; scene/mesh_file_loader.cpp).
+// Polygons are triangulated, points and lines dropped, corners equal in every attribute
+// merged. Throws lw::Error naming the file and the problem.
+[[nodiscard]] Model load_mesh_file(const std::filesystem::path& path);
+
+// load_mesh_file for .obj and .ply, load_gltf for everything else.
+[[nodiscard]] Model load_model(const std::filesystem::path& path);
 
 // A model of one triangle mesh given as arrays (the Python module's meshes): one root node
 // at the identity, one primitive without a material. `name` stands for the file in errors

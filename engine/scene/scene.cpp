@@ -17,7 +17,7 @@ void append_mesh(TriangleMesh& mesh, const TriangleMesh& part) {
 
 LoadedScene load_scene(const SceneDesc& desc) {
     std::vector<Model> models;
-    for (const auto& path : desc.models) models.push_back(load_gltf(path));
+    for (const auto& path : desc.models) models.push_back(load_model(path));
     return load_scene(desc, std::move(models));
 }
 

@@ -10,6 +10,7 @@
 #include "core/error.h"
 #include "core/text.h"
 #include "scene/line_set_file.h"
+#include "scene/model.h"
 #include "scene/object_reader.h"
 
 namespace lw {
@@ -186,14 +187,14 @@ LinesDesc read_lines(ObjectReader& parent, const std::filesystem::path& file) {
 
 bool is_model_path(const std::filesystem::path& path) {
     const std::string ext = lower(path.extension().string());
-    return ext == ".gltf" || ext == ".glb";
+    return ext == ".gltf" || ext == ".glb" || is_mesh_file_path(path);
 }
 
 void check_scene_or_model_path(const std::filesystem::path& path) {
     const std::string ext = lower(path.extension().string());
     if (is_model_path(path) || ext == ".json") return;
     throw Error(path.string() + ": unsupported model format" + extension_phrase(ext) +
-                ": Linework reads glTF models (.gltf, .glb) and scene files (.json)");
+                ": Linework reads glTF models (.gltf, .glb), OBJ and PLY meshes (.obj, .ply) and scene files (.json)");
 }
 
 SceneDesc scene_for_model(const std::filesystem::path& model) {
@@ -300,7 +301,7 @@ SceneDesc parse_scene_json(const std::string& text, const std::filesystem::path&
         }
         for (const auto& name : names) {
             std::filesystem::path p(name);
-            if (!is_model_path(p)) r.fail_key("model", "\"" + name + "\" is not a .gltf or .glb file");
+            if (!is_model_path(p)) r.fail_key("model", "\"" + name + "\" is not a model file (.gltf, .glb, .obj or .ply)");
             scene.models.push_back(scene_detail::resolve_against(source, name));
         }
     }

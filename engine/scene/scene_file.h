@@ -70,11 +70,11 @@ struct SceneDesc {
 // A scene of one model with every default.
 [[nodiscard]] SceneDesc scene_for_model(const std::filesystem::path& model);
 
-// True when the path names a glTF model (by extension) rather than a scene file.
+// True when the path names a model (by extension: .gltf, .glb, .obj, .ply) rather than a scene file.
 [[nodiscard]] bool is_model_path(const std::filesystem::path& path);
 
-// Throws lw::Error naming the file unless its extension is a glTF model's (.gltf, .glb) or a
-// scene file's (.json): an OBJ, a PNG or a typo gets "unsupported model format", not the
+// Throws lw::Error naming the file unless its extension is a model's (.gltf, .glb, .obj, .ply)
+// or a scene file's (.json): a PNG, an .stl or a typo gets "unsupported model format", not the
 // JSON parser's complaint about its first byte.
 void check_scene_or_model_path(const std::filesystem::path& path);
 

@@ -236,6 +236,13 @@ def test_bad_edits_and_odd_arguments_leave_a_working_session(tmp_path):
         linework.Session(5, device="cpu")
     with pytest.raises(ValueError, match="faces: index 9223372036854775813 of triangle 0 is out of range"):
         linework.Session(vertices=np.eye(3), faces=np.array([[0, 1, 2**63 + 5]], np.uint64), device="cpu")
+    # OBJ and PLY are models: a quad is two triangles; a malformed one names the file.
+    (tmp_path / "quad.obj").write_text("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n")
+    vertices, faces, _ = linework.load_mesh(tmp_path / "quad.obj")
+    assert faces.shape == (2, 3) and vertices.shape == (4, 3)
+    (tmp_path / "past.obj").write_text("v 0 0 0\nv 1 0 0\nf 1 2 9\n")
+    with pytest.raises(ValueError, match="past.obj: cannot load the mesh: OBJ: vertex index out of range"):
+        linework.Session(tmp_path / "past.obj", device="cpu")
     # An image given as a scene is refused by its extension.
     with pytest.raises(ValueError, match="slam-brush.png: unsupported model format '.png'"):
         linework.Session(SOURCE / "scenes/exemplars/slam-brush.png", device="cpu")

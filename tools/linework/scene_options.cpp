@@ -8,7 +8,7 @@
 namespace lw::cli {
 
 void add_scene_options(CLI::App* cmd, SceneOptions& o, bool offline) {
-    cmd->add_option("input", o.input, "Scene file (.json) or model (.gltf/.glb)")->required();
+    cmd->add_option("input", o.input, "Scene file (.json) or model (.gltf, .glb, .obj, .ply)")->required();
     cmd->add_option("--device", o.device,
                     "auto (discrete GPU if present, else lavapipe), cpu, gpu, or an index from `linework devices`")
         ->capture_default_str();

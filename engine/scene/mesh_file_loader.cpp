@@ -1,0 +1,146 @@
+// engine/scene/mesh_file_loader.cpp — OBJ and PLY meshes through Assimp, and load_model.
+//
+// Research scans come as OBJ and PLY (rtsc reads both). Assimp (Debian's libassimp-dev) parses
+// them: OBJ with its groups and polygons, PLY in ASCII and both binary byte orders. It gives
+// per-corner vertices for OBJ; JoinIdenticalVertices merges the corners that agree in every
+// attribute, numbered in order of first use. The triangles are a glTF's when the file holds
+// the same ones, and the line stages number vertices by first use too (geometry/welded_mesh),
+// so the vertex order does not change the picture. Points and lines are dropped (as load_gltf skips them),
+// polygons become triangles. Then every primitive passes the checks a glTF primitive passes:
+// indices in range, finite positions and normals.
+#include <cmath>
+#include <fstream>
+#include <string>
+
+#include <assimp/Importer.hpp>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include "core/error.h"
+#include "core/text.h"
+#include "scene/model.h"
+
+namespace lw {
+
+namespace {
+
+constexpr const char* kNoTriangles = "no triangles (the file has no faces, or only points and lines)";
+
+bool finite(const aiVector3D& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+glm::vec3 to_glm(const aiVector3D& v) { return {v.x, v.y, v.z}; }
+
+// Assimp gives a file without materials (a PLY, an OBJ without .mtl) a stand-in one; its
+// meshes have no material, as a glTF primitive without one (-1).
+bool is_stand_in(const aiMaterial& material) {
+    aiString name;
+    material.Get(AI_MATKEY_NAME, name);
+    return std::string(name.C_Str()) == AI_DEFAULT_MATERIAL_NAME;
+}
+
+// One Assimp mesh as a primitive; `label` names it in errors ("mesh 2").
+Primitive to_primitive(const aiScene& scene, const aiMesh& mesh, const std::string& file, const std::string& label) {
+    Primitive p;
+    const bool has_material = mesh.mMaterialIndex < scene.mNumMaterials;
+    p.material = has_material && !is_stand_in(*scene.mMaterials[mesh.mMaterialIndex]) ? int(mesh.mMaterialIndex) : -1;
+    p.positions.reserve(mesh.mNumVertices);
+    for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
+        if (!finite(mesh.mVertices[v]))
+            throw Error(file + ": " + label + ": vertex " + std::to_string(v) + " has a position that is not finite");
+        p.positions.push_back(to_glm(mesh.mVertices[v]));
+    }
+    if (mesh.mNormals) {
+        p.normals.reserve(mesh.mNumVertices);
+        for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
+            if (!finite(mesh.mNormals[v]))
+                throw Error(file + ": " + label + ": vertex " + std::to_string(v) + " has a normal that is not finite");
+            p.normals.push_back(to_glm(mesh.mNormals[v]));
+        }
+    }
+    p.indices.reserve(size_t(mesh.mNumFaces) * 3);
+    for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+        const aiFace& face = mesh.mFaces[f];
+        if (face.mNumIndices != 3) continue;  // a point or line Assimp left in a mixed mesh
+        for (unsigned c = 0; c < 3; ++c) {
+            if (face.mIndices[c] >= mesh.mNumVertices)
+                throw Error(file + ": " + label + ": face " + std::to_string(f) + " refers to vertex " +
+                            std::to_string(face.mIndices[c]) + " of " + std::to_string(mesh.mNumVertices));
+            p.indices.push_back(face.mIndices[c]);
+        }
+    }
+    return p;
+}
+
+// Assimp 5.2's PLY parser (Debian 12's) loops forever on a header that never ends: read up to
+// end_header ourselves first, so such a file is an error and not a hang.
+void check_ply_header(const std::filesystem::path& path, const std::string& file) {
+    constexpr size_t kMaxHeader = 1 << 20;
+    std::ifstream in(path, std::ios::binary);
+    std::string line;
+    if (!std::getline(in, line) || (line != "ply" && line != "ply\r"))
+        throw Error(file + ": not a PLY file (the first line is not \"ply\")");
+    size_t read = line.size() + 1;
+    while (std::getline(in, line) && read < kMaxHeader) {
+        read += line.size() + 1;
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        if (line == "end_header") return;
+    }
+    throw Error(file + ": PLY header has no end_header line" +
+                (read >= kMaxHeader ? " in its first 1 MiB" : std::string(" before the end of the file")));
+}
+
+}  // namespace
+
+bool is_mesh_file_path(const std::filesystem::path& path) {
+    const std::string ext = lower(path.extension().string());
+    return ext == ".obj" || ext == ".ply";
+}
+
+Model load_mesh_file(const std::filesystem::path& path) {
+    const std::string file = path.string();
+    if (!is_mesh_file_path(path))
+        throw Error(file + ": unsupported file extension" + extension_phrase(lower(path.extension().string())) +
+                    " (expected .obj or .ply)");
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec)) throw Error(file + ": file not found");
+    if (!std::filesystem::is_regular_file(path, ec)) throw Error(file + ": not a regular file");
+    if (lower(path.extension().string()) == ".ply") check_ply_header(path, file);
+
+    Assimp::Importer importer;
+    importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+    const unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_SortByPType |
+                           aiProcess_ValidateDataStructure;
+    const aiScene* scene = importer.ReadFile(file, flags);
+    if (!scene) {
+        const std::string reason = one_line(importer.GetErrorString());
+        // A point cloud loses its points (AI_CONFIG_PP_SBP_REMOVE) and then fails Assimp's
+        // validation as "Mesh  contains no faces": say what it means.
+        if (reason.find("contains no faces") != std::string::npos) throw Error(file + ": " + kNoTriangles);
+        throw Error(file + ": cannot load the mesh: " + (reason.empty() ? "Assimp gave no reason" : reason));
+    }
+
+    Model model;
+    model.path = path;
+    Mesh mesh{.name = path.stem().string()};
+    for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+        Primitive p = to_primitive(*scene, *scene->mMeshes[m], file, "mesh " + std::to_string(m));
+        if (!p.indices.empty()) mesh.primitives.push_back(std::move(p));
+    }
+    if (mesh.primitives.empty()) throw Error(file + ": " + kNoTriangles);
+    for (unsigned m = 0; m < scene->mNumMaterials; ++m) {
+        aiString name;
+        scene->mMaterials[m]->Get(AI_MATKEY_NAME, name);
+        model.material_names.push_back(is_stand_in(*scene->mMaterials[m]) ? std::string() : name.C_Str());
+    }
+    model.meshes.push_back(std::move(mesh));
+    // OBJ and PLY have no scene graph worth keeping (OBJ groups are meshes here): one root node.
+    model.nodes.push_back({.name = path.stem().string(), .mesh = 0});
+    model.roots = {0};
+    return model;
+}
+
+Model load_model(const std::filesystem::path& path) {
+    return is_mesh_file_path(path) ? load_mesh_file(path) : load_gltf(path);
+}
+
+}  // namespace lw
