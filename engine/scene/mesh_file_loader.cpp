@@ -11,6 +11,7 @@
 #include <cmath>
 #include <fstream>
 #include <string>
+#include <utility>
 
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
@@ -89,6 +90,25 @@ void check_ply_header(const std::filesystem::path& path, const std::string& file
                 (read >= kMaxHeader ? " in its first 1 MiB" : std::string(" before the end of the file")));
 }
 
+// Drops the points and lines (as load_gltf skips them) and sets the mesh's primitive types
+// from the faces it keeps, which the post-processing steps trust. The faces' storage is
+// Assimp's (delete[] frees every element, kept or not). Returns the faces kept.
+size_t keep_polygons(aiMesh& mesh) {
+    unsigned kept = 0;
+    bool polygons = false;
+    for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+        if (mesh.mFaces[f].mNumIndices < 3) continue;
+        polygons |= mesh.mFaces[f].mNumIndices > 3;
+        if (kept != f) std::swap(mesh.mFaces[kept], mesh.mFaces[f]);
+        ++kept;
+    }
+    mesh.mNumFaces = kept;
+    unsigned types = kept == 0 ? 0u : unsigned(aiPrimitiveType_TRIANGLE);
+    if (polygons) types |= unsigned(aiPrimitiveType_POLYGON);
+    mesh.mPrimitiveTypes = types;
+    return kept;
+}
+
 }  // namespace
 
 bool is_mesh_file_path(const std::filesystem::path& path) {
@@ -106,18 +126,22 @@ Model load_mesh_file(const std::filesystem::path& path) {
     if (!std::filesystem::is_regular_file(path, ec)) throw Error(file + ": not a regular file");
     if (lower(path.extension().string()) == ".ply") check_ply_header(path, file);
 
+    // Parsed and validated first, post-processed after our own pass over the faces: Debian's
+    // Assimp is built with its assertions on, and its Triangulate step aborts the process on
+    // a mesh whose primitive types the PLY reader got wrong (found by tests/fuzz/fuzz_mesh).
     Assimp::Importer importer;
-    importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-    const unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_SortByPType |
-                           aiProcess_ValidateDataStructure;
-    const aiScene* scene = importer.ReadFile(file, flags);
+    const aiScene* scene = importer.ReadFile(file, aiProcess_ValidateDataStructure);
     if (!scene) {
         const std::string reason = one_line(importer.GetErrorString());
-        // A point cloud loses its points (AI_CONFIG_PP_SBP_REMOVE) and then fails Assimp's
-        // validation as "Mesh  contains no faces": say what it means.
+        // A PLY point cloud fails Assimp's validation as "Mesh  contains no faces".
         if (reason.find("contains no faces") != std::string::npos) throw Error(file + ": " + kNoTriangles);
         throw Error(file + ": cannot load the mesh: " + (reason.empty() ? "Assimp gave no reason" : reason));
     }
+    size_t faces = 0;
+    for (unsigned m = 0; m < scene->mNumMeshes; ++m) faces += keep_polygons(*scene->mMeshes[m]);
+    if (faces == 0) throw Error(file + ": " + kNoTriangles);
+    scene = importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_JoinIdenticalVertices);
+    if (!scene) throw Error(file + ": cannot load the mesh: " + one_line(importer.GetErrorString()));
 
     Model model;
     model.path = path;
