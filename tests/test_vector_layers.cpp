@@ -149,5 +149,37 @@ TEST(VectorLayerCli, ZoomKeepsTheTexturePeriod) {
     EXPECT_GT(yellow, 100u);
 }
 
+// Layer strokes have round caps, as their SVG has: a one-point stroke and a stroke shorter
+// than a pixel are dots of their width (not nothing, not a one-pixel tick), and a line's ends
+// reach half its width past its end points.
+TEST(VectorLayerCli, StipplesAreDotsAndEndsAreRound) {
+    const fs::path dir = test::temp_dir();
+    std::ofstream(dir / "dots.json") << R"({"size": [100, 100], "strokes": [
+        {"points": [[20, 20]], "width": 6}, {"points": [[50, 50], [50.4, 50.2]], "width": 6},
+        {"points": [[30, 80], [70, 80]], "width": 4}]})";
+    std::ofstream(dir / "scene.json")
+        << R"({"size": [100, 100], "background": [1, 1, 1], "layers": [{"strokes": "dots.json", "color": [0, 0, 0]}]})";
+    const auto r = test::run_linework("render " + test::quote(dir / "scene.json") + " -o " + test::quote(dir / "out") +
+                                      " --device cpu --validation");
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const ImageRGBA8 image = read_image_rgba8(dir / "out/frame_0000.png");
+    const auto ink = [&](int x, int y) { return image.pixels[4 * (size_t(y) * image.width + size_t(x))] < 128; };
+    const auto ink_near = [&](int cx, int cy) {
+        int n = 0;
+        for (int y = cy - 6; y <= cy + 6; ++y)
+            for (int x = cx - 6; x <= cx + 6; ++x) n += ink(x, y);
+        return n;
+    };
+    // A disc of diameter 6 covers pi * 9 = 28.3 pixel centres, give or take its rim.
+    for (const auto& [x, y] : {std::pair{20, 20}, std::pair{50, 50}}) {
+        const int n = ink_near(x, y);
+        EXPECT_GE(n, 20) << "dot at " << x << ", " << y;
+        EXPECT_LE(n, 38) << "dot at " << x << ", " << y;
+    }
+    // The line (half width 2) with its caps: inked from x = 28 to 71 on its row, no further.
+    EXPECT_TRUE(ink(28, 80) && ink(71, 80));
+    EXPECT_FALSE(ink(26, 80) || ink(73, 80));
+}
+
 }  // namespace
 }  // namespace lw

@@ -1,8 +1,28 @@
 #include "render/layer_pass.h"
 
 #include "core/error.h"
+#include "stroke/modifiers.h"
 
 namespace lw {
+
+namespace {
+
+// A layer's strokes are drawn as the SVG writer writes them (stroke-linecap and -linejoin
+// round): round caps, so that a stipple (one point, or a stroke of a pixel) is a dot of its
+// width and not a one-pixel tick; round joins; the point widths of the file; the layer's
+// taper at both ends (to 15 % at the tips, as line sets taper).
+LineSetStyle layer_stroke_style(const LayerStyle& style, const glm::vec3& color) {
+    LineSetStyle s;
+    s.color = color;
+    s.width = 1.0f;  // × each sample's width, the file's
+    s.cap = Cap::Round;
+    s.join = Join::Round;
+    s.taper_in_px = s.taper_out_px = style.taper_px;
+    s.fade = false;
+    return s;
+}
+
+}  // namespace
 
 LayerPass::LayerPass(const Context& ctx, uint32_t width, uint32_t height, std::vector<LayerStyle> styles)
     : solid_(std::make_unique<SlamTexture>(ctx, solid_slam())) {
@@ -38,11 +58,9 @@ std::vector<LayerResult> LayerPass::prepare(std::vector<LayerFrame>& frames, boo
         }
         for (size_t p = 0; p < frame.paths.size() && layer.style.strokes; ++p) {
             const PathParam& param = result.params[p];
-            append_stroke(frame.paths[p],
-                          StrokeParams{.rho = param.rho, .phi = param.phi, .fold = param.fold, .width = 1.0f,
-                                       .color = frame.colors[frame.paths[p].source],
-                                       .taper_px = layer.style.taper_px},
-                          layer.strokes);
+            const LineSetStyle style = layer_stroke_style(layer.style, frame.colors[frame.paths[p].source]);
+            append_stroke(frame.paths[p], StrokeParams{.rho = param.rho, .phi = param.phi, .fold = param.fold},
+                          evaluate_attributes(frame.paths[p], style), style.cap, style.join, layer.strokes);
         }
         result.paths = frame.paths;
     }

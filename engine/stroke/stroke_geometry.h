@@ -2,8 +2,9 @@
 //
 // Two builders share the vertex format and the texture-coordinate convention:
 //
-// `append_stroke(path, params, out)` — the original one (layers, SLAM strokes, golden images
-// depend on it bit for bit). Input: a visible `ScreenPath` (≥ 2 samples, else nothing), its
+// `append_stroke(path, params, out)` — the original one. The renderer no longer draws with it
+// (line sets and layers take the one below); it stays as the reference the line-set builder is
+// checked against with butt caps and mitre joins (tests/test_modifiers.cpp). Input: a visible `ScreenPath` (≥ 2 samples, else nothing), its
 // parameterization T(s) = ρs + φ with its SLAM fold, and a width, colour and taper for the
 // whole path. Output: a triangle list of `StrokeVertex`: two vertices per sample (left and
 // right of the path), consecutive samples joined without cracks. Joins are mitred along the

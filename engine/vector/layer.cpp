@@ -65,6 +65,10 @@ ScreenPath stroke_path(const Stroke& stroke, const LayerTransform& transform, gl
     ScreenPath path{.type = LineType::Border, .closed = stroke.closed && stroke.points.size() > 2, .visible = true};
     std::vector<glm::vec2> points = stroke.points;
     std::vector<float> widths = stroke.widths;
+    if (points.size() == 1) {  // a stipple: one sample, which the stroke builder draws as a dot
+        points.push_back(points.front());
+        widths.push_back(widths.front());
+    }
     if (path.closed) {  // walk the closing segment too; the renderer closes the loop itself
         points.push_back(points.front());
         widths.push_back(widths.front());
@@ -132,7 +136,7 @@ LayerFrame layer_frame(const StrokeSet& drawing, const std::vector<glm::vec2>& f
     if (!desc.outline) return frame;
     const float width_scale = desc.width_scale * (desc.scale_widths ? transform.scale : 1.0f);
     for (const Stroke& stroke : drawing.strokes) {
-        if (stroke.points.size() < 2) continue;
+        if (stroke.points.empty()) continue;
         ScreenPath path = stroke_path(stroke, transform, image_size, spacing);
         path.source = frame.colors.size();  // its colour, through clipping and the tracker's splits
         for (ScreenSample& sample : path.samples) sample.width *= width_scale;
