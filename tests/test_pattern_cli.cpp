@@ -60,7 +60,7 @@ TEST(PatternCli, HelpAndErrors) {
               2);
     EXPECT_EQ(run_linework("pattern " + ref + " -o x.svg --path " + quote(dir / "p.json") + " --variation 2").exit_code, 2);
     // Bad files: exit 1, one line naming the file.
-    std::ofstream(dir / "bad.svg") << R"(<svg><circle cx="1" cy="1" r="3"/></svg>)";
+    std::ofstream(dir / "bad.svg") << R"(<svg><text x="1" y="1">a text is no stroke</text></svg>)";
     r = run_linework("pattern " + quote(dir / "bad.svg") + " -o " + quote(dir / "o.svg") + " --path " + quote(dir / "p.json"));
     EXPECT_EQ(r.exit_code, 1);
     EXPECT_TRUE(one_error_line_naming(r, dir / "bad.svg")) << r.output;

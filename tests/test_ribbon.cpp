@@ -56,7 +56,24 @@ TEST(RibbonCurve, ParsesSvgPathSubset) {
     EXPECT_GT(cubic.points.size(), 4u);
     EXPECT_NEAR(cubic.points.back().x, 10.0f, 1e-5f);
     EXPECT_NEAR(cubic.points[cubic.points.size() / 2].y, 7.5f, 0.2f);  // the Bézier's apex
-    EXPECT_THROW((void)parse_svg_path_data("M0 0 Q 1 1 2 2", "c.svg"), Error);
+    EXPECT_THROW((void)parse_svg_path_data("M0 0 A 1 1 0 0 1 2 2", "c.svg"), Error);  // arcs are not read
+    // H, V and their relative forms move along one axis.
+    const Curve2D axes = parse_svg_path_data("M0 0 H 10 V 5 h -2 v 1", "h.svg");
+    const std::vector<glm::vec2> corners = {{0, 0}, {10, 0}, {10, 5}, {8, 5}, {8, 6}};
+    EXPECT_EQ(axes.points, corners);
+    // Q, then T reflecting its control point; C, then S reflecting its second control point.
+    const auto extreme_y = [](const Curve2D& c, bool lowest) {
+        float y = c.points[0].y;
+        for (const glm::vec2& p : c.points) y = lowest ? std::min(y, p.y) : std::max(y, p.y);
+        return y;
+    };
+    const Curve2D quad = parse_svg_path_data("M0 0 Q 5 10 10 0 T 20 0", "q.svg");
+    EXPECT_EQ(quad.points.back(), glm::vec2(20, 0));
+    EXPECT_NEAR(extreme_y(quad, false), 5.0f, 0.1f);  // the quadratic's apex: half its control's height
+    EXPECT_NEAR(extreme_y(quad, true), -5.0f, 0.1f);  // T's reflected control at (15, -10)
+    const Curve2D smooth = parse_svg_path_data("M0 0 C 0 10 10 10 10 0 s 10 -10 10 0", "s.svg");
+    EXPECT_EQ(smooth.points.back(), glm::vec2(20, 0));
+    EXPECT_NEAR(extreme_y(smooth, true), -7.5f, 0.1f);  // S's reflected control at (10, -10)
     EXPECT_THROW((void)parse_svg_path_data("M0 0 L1 1 M 5 5 L 6 6", "c.svg"), Error);
     EXPECT_THROW((void)parse_curve_svg("<svg></svg>", "c.svg"), Error);
 }

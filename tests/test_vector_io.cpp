@@ -1,6 +1,8 @@
 // Stroke files: JSON and the SVG subset, in and out, and their one-line errors.
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include <gtest/gtest.h>
 
@@ -69,9 +71,15 @@ TEST(VectorIo, SvgAndJsonRoundTripsKeepPointsWidthsAndColours) {
 
 TEST(VectorIo, BadFilesGiveOneMessageNamingTheFile) {
     const std::pair<const char*, const char*> svg_cases[] = {
-        {R"(<svg><rect x="0" y="0" width="5" height="5"/></svg>)", "<rect>: unsupported element"},
-        {R"svg(<svg><path d="M 0 0 L 1 1" transform="rotate(3)"/></svg>)svg", "transform"},
-        {R"(<svg><path d="M 0 0 Q 1 1 2 2"/></svg>)", "unsupported command 'Q'"},
+        {R"(<svg><text x="0" y="0">words</text></svg>)", "<text>: unsupported element"},
+        {R"svg(<svg><path d="M 0 0 L 1 1" transform="spin(3)"/></svg>)svg", "transform: unknown \"spin\""},
+        {R"svg(<svg><path d="M 0 0 L 1 1" transform="rotate(3, 4)"/></svg>)svg", "rotate takes 1 or 3 numbers"},
+        {R"(<svg><path d="M 0 0 L 1 1"></svg>)", "XML: "},
+        {R"(<svg><polyline points="0 0 1 1" stroke-width="2em"/></svg>)", "unit \"em\""},
+        {R"(<svg><use href="#nowhere"/></svg>)", "no element with id \"nowhere\""},
+        {R"(<svg><g id="a"><use href="#a"/></g></svg>)", "nest deeper than 32"},
+        {R"(<svg><circle cx="1" cy="1"/></svg>)", "missing the r attribute"},
+        {R"(<svg><path d="M 0 0 A 1 1 0 0 1 2 2"/></svg>)", "unsupported command 'A'"},
         {R"(<svg><polyline points="0 0 1"/></svg>)", "odd number"},
         {R"(<svg><polyline points="0 0 1 1" stroke="chartreuse"/></svg>)", "colour \"chartreuse\""},
         {R"(<svg><polyline points="0 0 1 1" stroke-width="-2"/></svg>)", "widths must be positive"},
@@ -90,6 +98,11 @@ TEST(VectorIo, BadFilesGiveOneMessageNamingTheFile) {
             EXPECT_EQ(m.find('\n'), std::string::npos) << m;
         }
     }
+    std::string deep = "<svg>";
+    for (int i = 0; i < 300; ++i) deep += "<g>";
+    deep += "<line x2=\"1\"/>";
+    for (int i = 0; i < 300; ++i) deep += "</g>";
+    EXPECT_THROW((void)parse_strokes_svg(deep + "</svg>", "deep.svg"), Error);  // nesting past 256 levels
     const std::pair<const char*, const char*> json_cases[] = {
         {R"({"strokes": [{"points": [[0, 0]], "colour": [0, 0, 0]}]})", "strokes[0].colour: unknown key"},
         {R"({"strokes": [{"points": [[0, 0], [1]]}]})", "strokes[0].points[1]"},
@@ -131,6 +144,123 @@ TEST(VectorIo, EveryShippedReferencePatternReads) {
         ++files;
     }
     EXPECT_GE(files, 9u);  // eight reference patterns at least, plus the hatching files
+}
+
+// ---- SVG as Inkscape writes it: the nested, transformed file and its flattened twin ----
+
+// An affine map as the 2×3 numbers of SVG's matrix(a b c d e f): x' = a x + c y + e, y' = b x + d y + f.
+struct Affine {
+    double a = 1, b = 0, c = 0, d = 1, e = 0, f = 0;
+    Affine operator*(const Affine& o) const {  // this after o
+        return {a * o.a + c * o.b, b * o.a + d * o.b, a * o.c + c * o.d, b * o.c + d * o.d, a * o.e + c * o.f + e,
+                b * o.e + d * o.f + f};
+    }
+    glm::vec2 operator()(glm::vec2 p) const { return {float(a * p.x + c * p.y + e), float(b * p.x + d * p.y + f)}; }
+    double mean_scale() const { return std::sqrt(std::abs(a * d - b * c)); }
+};
+Affine translate(double x, double y) { return {1, 0, 0, 1, x, y}; }
+Affine rotate(double degrees) {
+    const double r = degrees * 3.14159265358979 / 180.0;
+    return {std::cos(r), std::sin(r), -std::sin(r), std::cos(r), 0, 0};
+}
+Affine scale(double s) { return {s, 0, 0, s, 0, 0}; }
+Affine skew_y(double degrees) { return {1, std::tan(degrees * 3.14159265358979 / 180.0), 0, 1, 0, 0}; }
+
+// What Inkscape saves: an XML declaration, a comment, namespaces and editor elements, a
+// layer group with a transform and a style, a nested group, <use> of a <defs> path, a rect, a
+// skewed circle, a hidden layer and a line with a width in millimetres.
+constexpr const char* kInkscapeFile = R"svg(<?xml version="1.0" encoding="UTF-8" standalone="no"?>
+<!-- Created with Inkscape (http://www.inkscape.org/) -->
+<svg xmlns="http://www.w3.org/2000/svg" xmlns:xlink="http://www.w3.org/1999/xlink"
+     xmlns:inkscape="http://www.inkscape.org/namespaces/inkscape"
+     xmlns:sodipodi="http://sodipodi.sourceforge.net/DTD/sodipodi-0.dtd"
+     width="100mm" height="50mm" viewBox="0 0 200 100" version="1.1">
+  <sodipodi:namedview id="namedview1" pagecolor="#ffffff" inkscape:zoom="1.2"/>
+  <defs id="defs1"><path id="tick" d="m 0,0 h 4" style="stroke:#ff0000"/></defs>
+  <g inkscape:label="Layer 1" inkscape:groupmode="layer" id="layer1"
+     transform="translate(10,20)" style="fill:none;stroke:#000000;stroke-width:2">
+    <g transform="rotate(30) scale(2)">
+      <path d="M 0,0 L 10,0 L 10,5" id="path1"/>
+      <use xlink:href="#tick" x="3" y="1"/>
+      <rect x="1" y="1" width="4" height="3" style="stroke-width:0.5"/>
+    </g>
+    <g transform="matrix(1,0,0.5,1,5,5) skewY(10)"><circle cx="0" cy="0" r="3"/></g>
+  </g>
+  <g inkscape:label="Hidden" inkscape:groupmode="layer" style="display:none"><path d="M 0 0 L 50 50"/></g>
+  <line x1="0" y1="90" x2="20" y2="90" stroke="blue" stroke-width="1mm"/>
+</svg>
+)svg";
+
+std::string points_of(const std::vector<glm::vec2>& points) {
+    std::ostringstream out;
+    out.precision(9);
+    for (const glm::vec2& p : points) out << p.x << ',' << p.y << ' ';
+    return out.str();
+}
+
+TEST(VectorIo, NestedTransformedGroupsGiveTheStrokesOfTheirFlattenedTwin) {
+    const Affine layer = translate(10, 20), inner = layer * rotate(30) * scale(2);
+    const Affine skewed = layer * Affine{1, 0, 0.5, 1, 5, 5} * skew_y(10);
+    const StrokeSet circle = parse_strokes_svg(R"(<svg><circle cx="0" cy="0" r="3"/></svg>)", "circle.svg");
+    ASSERT_EQ(circle.strokes.size(), 1u);
+    std::vector<glm::vec2> ring;
+    for (const glm::vec2& p : circle.strokes[0].points) {
+        EXPECT_NEAR(glm::length(p), 3.0f, 1e-5f);  // the circle itself lies on its radius
+        ring.push_back(skewed(p));
+    }
+    const auto map = [](const Affine& t, std::vector<glm::vec2> points) {
+        for (glm::vec2& p : points) p = t(p);
+        return points;
+    };
+    // The twin: absolute coordinates and widths, no groups, no transforms.
+    std::ostringstream twin;
+    twin.precision(9);
+    twin << "<svg viewBox=\"0 0 200 100\">\n"
+         << "<polyline points=\"" << points_of(map(inner, {{0, 0}, {10, 0}, {10, 5}})) << "\" stroke=\"#000000\" stroke-width=\""
+         << 2 * inner.mean_scale() << "\"/>\n"
+         << "<polyline points=\"" << points_of(map(inner * translate(3, 1), {{0, 0}, {4, 0}}))
+         << "\" stroke=\"#ff0000\" stroke-width=\"" << 2 * inner.mean_scale() << "\"/>\n"
+         << "<polygon points=\"" << points_of(map(inner, {{1, 1}, {5, 1}, {5, 4}, {1, 4}})) << "\" stroke=\"#000000\" stroke-width=\""
+         << 0.5 * inner.mean_scale() << "\"/>\n"
+         << "<polygon points=\"" << points_of(ring) << "\" stroke=\"#000000\" stroke-width=\"" << 2 * skewed.mean_scale()
+         << "\"/>\n"
+         << "<line x1=\"0\" y1=\"90\" x2=\"20\" y2=\"90\" stroke=\"blue\" stroke-width=\"" << 96.0 / 25.4 << "\"/>\n"
+         << "</svg>\n";
+    const StrokeSet drawn = parse_strokes_svg(kInkscapeFile, "inkscape.svg");
+    const StrokeSet flat = parse_strokes_svg(twin.str(), "twin.svg");
+    EXPECT_EQ(drawn.size, glm::vec2(200, 100)) << "the viewBox, not the page size in mm";
+    ASSERT_EQ(drawn.strokes.size(), flat.strokes.size()) << "the hidden layer draws nothing";
+    for (size_t i = 0; i < flat.strokes.size(); ++i) {
+        const Stroke &a = drawn.strokes[i], &b = flat.strokes[i];
+        ASSERT_EQ(a.points.size(), b.points.size()) << i;
+        for (size_t k = 0; k < a.points.size(); ++k) EXPECT_LT(glm::length(a.points[k] - b.points[k]), 1e-4f) << i << " " << k;
+        for (size_t k = 0; k < a.widths.size(); ++k) EXPECT_NEAR(a.widths[k], b.widths[k], 1e-5f) << i;
+        EXPECT_EQ(a.color, b.color) << i;
+        EXPECT_EQ(a.closed, b.closed) << i;
+    }
+}
+
+TEST(VectorIo, RectCornersEllipsesAndUnits) {
+    const StrokeSet s = parse_strokes_svg(
+        R"(<svg width="2in" height="1in"><rect x="0" y="0" width="10" height="6" rx="2"/>
+           <ellipse cx="5" cy="5" rx="4" ry="2" stroke-width="3pt"/></svg>)",
+        "shapes.svg");
+    EXPECT_EQ(s.size, glm::vec2(192, 96));
+    ASSERT_EQ(s.strokes.size(), 2u);
+    // Rounded corners (ry takes rx): every point within the rect, the corners cut.
+    for (const glm::vec2& p : s.strokes[0].points) {
+        EXPECT_GE(p.x, -1e-5f);
+        EXPECT_LE(p.x, 10.0f + 1e-5f);
+        EXPECT_GE(p.y, -1e-5f);
+        EXPECT_LE(p.y, 6.0f + 1e-5f);
+        EXPECT_GT(glm::length(p - glm::vec2(0, 0)), 0.5f);
+    }
+    EXPECT_TRUE(s.strokes[0].closed);
+    for (const glm::vec2& p : s.strokes[1].points) {
+        const glm::vec2 q = (p - glm::vec2(5, 5)) / glm::vec2(4, 2);
+        EXPECT_NEAR(glm::length(q), 1.0f, 1e-5f);
+    }
+    EXPECT_FLOAT_EQ(s.strokes[1].widths[0], 4.0f);  // 3 pt = 4 px
 }
 
 }  // namespace

@@ -12,6 +12,7 @@ packages=(
   vulkan-validationlayers glslang-tools     # Khronos validation layer; GLSL -> SPIR-V at build time
   libglm-dev libtinygltf-dev nlohmann-json3-dev libcli11-dev
   libassimp-dev                             # OBJ and PLY models (research scans)
+  libpugixml-dev                            # SVG input: an XML parser, not a tag tokenizer
   libopenimageio-dev
   libglfw3-dev libimgui-dev                 # the viewer: window, input and its Dear ImGui panel
   xvfb xauth                                # viewer tests: xvfb-run, a display without a screen

@@ -11,6 +11,7 @@
 #include "core/error.h"
 #include "core/text.h"
 #include "vector/json_object.h"
+#include "vector/xml.h"
 
 namespace lw {
 
@@ -101,8 +102,28 @@ std::vector<Curve2D> parse_svg_subpaths(const std::string& d, const std::string&
     PathLexer lex(d, where);
     std::vector<Curve2D> subpaths;
     glm::dvec2 current{0.0}, start{0.0};
-    char command = 0;
+    glm::dvec2 last_control{0.0};  // of the previous C/S (cubic) or Q/T (quadratic), for S and T
+    char command = 0, previous = 0;
     auto add = [&](glm::dvec2 p) { subpaths.back().points.push_back(checked_point(p.x, p.y, where, "path data")); };
+    // A cubic Bézier from the current point, flattened to chords under ~1 px: the control
+    // polygon bounds the curve's length. Clamped as a double: a huge hull does not fit an int
+    // (found by fuzz_strokes).
+    auto cubic = [&](glm::dvec2 p1, glm::dvec2 p2, glm::dvec2 p3) {
+        const glm::dvec2 p0 = current;
+        const double hull = glm::length(p1 - p0) + glm::length(p2 - p1) + glm::length(p3 - p2);
+        if (!std::isfinite(hull)) lex.fail("curve control points out of range");
+        const int n = static_cast<int>(std::clamp(std::ceil(hull), 4.0, 4096.0));
+        for (int k = 1; k <= n; ++k) {
+            const double t = double(k) / n, s = 1.0 - t;
+            add(s * s * s * p0 + 3.0 * s * s * t * p1 + 3.0 * s * t * t * p2 + t * t * t * p3);
+        }
+        current = p3;
+    };
+    // A quadratic is the cubic with controls 2/3 of the way to its one control point.
+    auto quadratic = [&](glm::dvec2 q, glm::dvec2 p) {
+        cubic(current + 2.0 / 3.0 * (q - current), p + 2.0 / 3.0 * (q - p), p);
+        last_control = q;
+    };
     while (!lex.at_end()) {
         if (lex.at_command()) {
             command = lex.command();
@@ -118,6 +139,9 @@ std::vector<Curve2D> parse_svg_subpaths(const std::string& d, const std::string&
             subpaths.push_back({});
             add(start);
         }
+        // S and T reflect the previous segment's control point when it was of their kind
+        // (SVG 1.1 §8.3.6, §8.3.7); otherwise the control point is the current point.
+        const bool after_cubic = previous == 'C' || previous == 'S', after_quadratic = previous == 'Q' || previous == 'T';
         switch (upper) {
             case 'M': {
                 const glm::dvec2 p = base + lex.point();
@@ -132,21 +156,41 @@ std::vector<Curve2D> parse_svg_subpaths(const std::string& d, const std::string&
                 add(current);
                 break;
             }
+            case 'H': {
+                current.x = (relative ? current.x : 0.0) + lex.number();
+                add(current);
+                break;
+            }
+            case 'V': {
+                current.y = (relative ? current.y : 0.0) + lex.number();
+                add(current);
+                break;
+            }
             case 'C': {
-                const glm::dvec2 p0 = current;
                 const glm::dvec2 p1 = base + lex.point();
                 const glm::dvec2 p2 = base + lex.point();
                 const glm::dvec2 p3 = base + lex.point();
-                // Chords under ~1 px: the control polygon bounds the curve's length.
-                const double hull = glm::length(p1 - p0) + glm::length(p2 - p1) + glm::length(p3 - p2);
-                if (!std::isfinite(hull)) lex.fail("curve control points out of range");
-                // Clamped as a double: a huge hull does not fit an int (found by fuzz_strokes).
-                const int n = static_cast<int>(std::clamp(std::ceil(hull), 4.0, 4096.0));
-                for (int k = 1; k <= n; ++k) {
-                    const double t = double(k) / n, s = 1.0 - t;
-                    add(s * s * s * p0 + 3.0 * s * s * t * p1 + 3.0 * s * t * t * p2 + t * t * t * p3);
-                }
-                current = p3;
+                cubic(p1, p2, p3);
+                last_control = p2;
+                break;
+            }
+            case 'S': {
+                const glm::dvec2 p1 = after_cubic ? 2.0 * current - last_control : current;
+                const glm::dvec2 p2 = base + lex.point();
+                const glm::dvec2 p3 = base + lex.point();
+                cubic(p1, p2, p3);
+                last_control = p2;
+                break;
+            }
+            case 'Q': {
+                const glm::dvec2 q = base + lex.point();
+                const glm::dvec2 p = base + lex.point();
+                quadratic(q, p);
+                break;
+            }
+            case 'T': {
+                const glm::dvec2 q = after_quadratic ? 2.0 * current - last_control : current;
+                quadratic(q, base + lex.point());
                 break;
             }
             case 'Z': {
@@ -158,8 +202,10 @@ std::vector<Curve2D> parse_svg_subpaths(const std::string& d, const std::string&
                 break;
             }
             default:
-                lex.fail(std::string("unsupported command '") + command + "' (M, L, C, Z and m, l, c, z are)");
+                lex.fail(std::string("unsupported command '") + command +
+                         "' (M, L, H, V, C, S, Q, T, Z and their relative forms are)");
         }
+        previous = char(upper);
     }
     return subpaths;
 }
@@ -173,29 +219,13 @@ Curve2D parse_svg_path_data(const std::string& d, const std::string& where) {
 }
 
 Curve2D parse_curve_svg(const std::string& svg, const std::string& where) {
-    const size_t path = svg.find("<path");
-    if (path == std::string::npos) throw Error(where + ": no <path> element");
-    const size_t end = svg.find('>', path);
-    if (end == std::string::npos) throw Error(where + ": unterminated <path> element");
-    const std::string element = svg.substr(path, end - path);
-    // The `d` attribute: preceded by white space so that e.g. `id=` does not match.
-    size_t at = std::string::npos;
-    for (size_t i = 1; i + 1 < element.size(); ++i)
-        if (element[i] == 'd' && std::isspace(static_cast<unsigned char>(element[i - 1]))) {
-            size_t j = i + 1;
-            while (j < element.size() && std::isspace(static_cast<unsigned char>(element[j]))) ++j;
-            if (j < element.size() && element[j] == '=') {
-                at = j + 1;
-                break;
-            }
-        }
-    if (at == std::string::npos) throw Error(where + ": the <path> element has no d attribute");
-    while (at < element.size() && std::isspace(static_cast<unsigned char>(element[at]))) ++at;
-    if (at >= element.size() || (element[at] != '"' && element[at] != '\''))
-        throw Error(where + ": the d attribute must be quoted");
-    const size_t close = element.find(element[at], at + 1);
-    if (close == std::string::npos) throw Error(where + ": unterminated d attribute");
-    return parse_svg_path_data(element.substr(at + 1, close - at - 1), where);
+    const auto doc = parse_xml(svg, where);
+    if (std::string(doc->document_element().name()) != "svg") throw Error(where + ": no <svg> element");
+    const pugi::xml_node path = doc->document_element().find_node(
+        [](const pugi::xml_node& n) { return std::string(n.name()) == "path"; });
+    if (!path) throw Error(where + ": no <path> element");
+    if (!path.attribute("d")) throw Error(where + ": the <path> element has no d attribute");
+    return parse_svg_path_data(path.attribute("d").as_string(), where);
 }
 
 Curve2D load_curve(const std::filesystem::path& path) {

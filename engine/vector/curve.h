@@ -5,8 +5,9 @@
 // Input:  a polyline in output pixels (x right, y down), open or closed, from
 //         - JSON: {"points": [[x, y], ...], "closed": bool}  ("closed" optional, default false;
 //           any other key is an error naming it), or
-//         - SVG: the first <path d="…"> of a file, commands M/L/C/Z and their relative forms
-//           m/l/c/z, one subpath (cubic Béziers are flattened to pieces under 1 px of chord).
+//         - SVG: the first <path d="…"> of a file (read with pugixml), commands M/L/H/V/C/S/Q/T/Z
+//           and their relative forms, one subpath (Béziers are flattened to pieces under
+//           1 px of chord).
 //           Transforms are not applied.
 // Output: `Curve2D`; `ArclengthCurve` evaluates C(x), x ∈ [0, L], and the unit tangent, as
 //         the paper assumes (Zhou et al. 2013, §1.1: "a curve parameterized in arc length").

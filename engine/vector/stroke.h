@@ -9,8 +9,9 @@
 // Files (engine/vector/stroke_io.cpp):
 //   JSON  {"size": [w, h], "strokes": [{"points": [[x, y], ...], "width": w | "widths": [...],
 //          "color": [r, g, b] | "#rrggbb", "closed": bool}, ...]}
-//   SVG   a subset: <path d> (M/L/C/Z, each subpath one stroke), <polyline>, <polygon>, <line>;
-//         stroke colour and stroke-width from attributes, `style` or an enclosing <g>;
+//   SVG   through pugixml (vector/svg_reader.cpp): <path d> (each subpath one stroke),
+//         <polyline>, <polygon>, <line>, <rect>, <circle>, <ellipse>; nested <g> with inherited
+//         stroke and stroke-width (attributes or `style`), transforms, <use>, CSS units;
 //         per-point widths in our own `data-widths` attribute (the writer's round trip).
 #pragma once
 

@@ -31,30 +31,22 @@ std::string read_text(const std::filesystem::path& path) {
     return buffer.str();
 }
 
-// Numbers separated by white space and commas (SVG points lists, data-widths, viewBox).
-std::vector<double> number_list(const std::string& text, const std::string& where, const std::string& what) {
-    std::vector<double> out;
-    const char* p = text.c_str();
-    while (*p) {
-        while (*p && (std::isspace(static_cast<unsigned char>(*p)) || *p == ',')) ++p;
-        if (!*p) break;
-        char* end = nullptr;
-        const double v = std::strtod(p, &end);
-        if (end == p) throw Error(where + ": " + what + ": expected numbers, got \"" + text + "\"");
-        out.push_back(v);
-        p = end;
-    }
-    return out;
+// ---- JSON ----------------------------------------------------------------------------
+
+glm::vec3 json_color(const nlohmann::json& c, const std::string& where, const std::string& what) {
+    if (c.is_string()) return parse_color(c.get<std::string>(), where + ": " + what);
+    if (!c.is_array() || c.size() != 3 || !c[0].is_number() || !c[1].is_number() || !c[2].is_number())
+        throw Error(where + ": " + what + ": expected [r, g, b] in [0, 1] or \"#rrggbb\"");
+    return {c[0].get<float>(), c[1].get<float>(), c[2].get<float>()};
 }
 
-double parse_length(const std::string& text, const std::string& where, const std::string& what) {
-    std::string t = trim(text);
-    if (t.size() > 2 && t.compare(t.size() - 2, 2, "px") == 0) t.resize(t.size() - 2);
-    char* end = nullptr;
-    const double v = std::strtod(t.c_str(), &end);
-    if (t.empty() || *end != '\0') throw Error(where + ": " + what + ": expected a number, got \"" + text + "\"");
-    return v;
+std::string format_number(double v) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.6g", std::abs(v) < 5e-7 ? 0.0 : v);
+    return buffer;
 }
+
+}  // namespace
 
 void check_stroke(const Stroke& s, const std::string& where, const std::string& what) {
     if (s.points.empty()) throw Error(where + ": " + what + ": a stroke needs at least one point");
@@ -69,144 +61,6 @@ void check_stroke(const Stroke& s, const std::string& where, const std::string& 
         if (!(s.color[c] >= 0.0f && s.color[c] <= 1.0f))
             throw Error(where + ": " + what + ": colour components must lie in [0, 1]");
 }
-
-// ---- JSON ----------------------------------------------------------------------------
-
-glm::vec3 json_color(const nlohmann::json& c, const std::string& where, const std::string& what) {
-    if (c.is_string()) return parse_color(c.get<std::string>(), where + ": " + what);
-    if (!c.is_array() || c.size() != 3 || !c[0].is_number() || !c[1].is_number() || !c[2].is_number())
-        throw Error(where + ": " + what + ": expected [r, g, b] in [0, 1] or \"#rrggbb\"");
-    return {c[0].get<float>(), c[1].get<float>(), c[2].get<float>()};
-}
-
-// ---- SVG -----------------------------------------------------------------------------
-
-struct Tag {
-    std::string name;  // lower case; "/g" for a closing tag
-    std::map<std::string, std::string> attributes;
-    bool self_closing = false;
-};
-
-// Splits `<name a="…" b='…'/>` (the text between < and >) into its name and attributes.
-Tag parse_tag(const std::string& body, const std::string& where) {
-    Tag tag;
-    size_t i = 0;
-    while (i < body.size() && !std::isspace(static_cast<unsigned char>(body[i])) && body[i] != '/') ++i;
-    tag.name = lower(body.substr(0, i));
-    if (tag.name.empty() && !body.empty() && body[0] == '/') {
-        size_t j = 1;
-        while (j < body.size() && !std::isspace(static_cast<unsigned char>(body[j]))) ++j;
-        tag.name = "/" + lower(body.substr(1, j - 1));
-        return tag;
-    }
-    while (i < body.size()) {
-        while (i < body.size() && std::isspace(static_cast<unsigned char>(body[i]))) ++i;
-        if (i >= body.size()) break;
-        if (body[i] == '/') {
-            tag.self_closing = true;
-            ++i;
-            continue;
-        }
-        const size_t name_start = i;
-        while (i < body.size() && body[i] != '=' && !std::isspace(static_cast<unsigned char>(body[i]))) ++i;
-        const std::string name = lower(body.substr(name_start, i - name_start));
-        while (i < body.size() && std::isspace(static_cast<unsigned char>(body[i]))) ++i;
-        if (i >= body.size() || body[i] != '=') {
-            tag.attributes[name] = "";  // an attribute without a value
-            continue;
-        }
-        ++i;
-        while (i < body.size() && std::isspace(static_cast<unsigned char>(body[i]))) ++i;
-        if (i >= body.size() || (body[i] != '"' && body[i] != '\''))
-            throw Error(where + ": <" + tag.name + "> " + name + ": attribute values must be quoted");
-        const size_t close = body.find(body[i], i + 1);
-        if (close == std::string::npos) throw Error(where + ": <" + tag.name + "> " + name + ": unterminated value");
-        tag.attributes[name] = body.substr(i + 1, close - i - 1);
-        i = close + 1;
-    }
-    return tag;
-}
-
-// The stroke attributes an element has, or inherits from enclosing <g> elements.
-struct Paint {
-    std::string stroke, stroke_width;
-};
-
-Paint paint_of(const Tag& tag, Paint inherited, const std::string& where) {
-    if (tag.attributes.count("transform"))
-        throw Error(where + ": <" + tag.name + ">: transform attributes are not supported (apply them first)");
-    if (auto it = tag.attributes.find("stroke"); it != tag.attributes.end()) inherited.stroke = it->second;
-    if (auto it = tag.attributes.find("stroke-width"); it != tag.attributes.end()) inherited.stroke_width = it->second;
-    if (auto it = tag.attributes.find("style"); it != tag.attributes.end()) {
-        std::stringstream style(it->second);
-        std::string declaration;
-        while (std::getline(style, declaration, ';')) {
-            const size_t colon = declaration.find(':');
-            if (colon == std::string::npos) continue;
-            const std::string key = lower(trim(declaration.substr(0, colon)));
-            const std::string value = trim(declaration.substr(colon + 1));
-            if (key == "stroke") inherited.stroke = value;
-            if (key == "stroke-width") inherited.stroke_width = value;
-        }
-    }
-    return inherited;
-}
-
-std::vector<Stroke> strokes_of(const Tag& tag, const Paint& paint, const std::string& where, size_t index) {
-    const std::string what = "<" + tag.name + "> #" + std::to_string(index + 1);
-    auto attribute = [&](const char* name) -> const std::string& {
-        const auto it = tag.attributes.find(name);
-        if (it == tag.attributes.end()) throw Error(where + ": " + what + ": missing the " + name + " attribute");
-        return it->second;
-    };
-    std::vector<Curve2D> curves;
-    if (tag.name == "path") {
-        curves = parse_svg_subpaths(attribute("d"), where + ": " + what);
-    } else if (tag.name == "polyline" || tag.name == "polygon") {
-        const std::vector<double> v = number_list(attribute("points"), where, what + " points");
-        if (v.size() % 2 != 0) throw Error(where + ": " + what + ": points: an odd number of coordinates");
-        Curve2D c;
-        for (size_t i = 0; i + 1 < v.size(); i += 2) c.points.push_back({float(v[i]), float(v[i + 1])});
-        c.closed = tag.name == "polygon";
-        curves.push_back(std::move(c));
-    } else {  // line
-        Curve2D c;
-        c.points.push_back({float(parse_length(attribute("x1"), where, what + " x1")),
-                            float(parse_length(attribute("y1"), where, what + " y1"))});
-        c.points.push_back({float(parse_length(attribute("x2"), where, what + " x2")),
-                            float(parse_length(attribute("y2"), where, what + " y2"))});
-        curves.push_back(std::move(c));
-    }
-    if (lower(trim(paint.stroke)) == "none")
-        throw Error(where + ": " + what + ": stroke=\"none\": only stroked elements are strokes");
-    const glm::vec3 color = paint.stroke.empty() ? glm::vec3(0.0f) : parse_color(paint.stroke, where + ": " + what);
-    const float width = paint.stroke_width.empty() ? 1.0f
-                                                   : float(parse_length(paint.stroke_width, where, what + " stroke-width"));
-    std::vector<Stroke> out;
-    for (Curve2D& c : curves) {
-        Stroke s = make_stroke(std::move(c.points), width, color, c.closed);
-        if (s.closed && s.points.size() > 1 && s.points.back() == s.points.front()) s.points.pop_back(), s.widths.pop_back();
-        out.push_back(std::move(s));
-    }
-    if (auto it = tag.attributes.find("data-widths"); it != tag.attributes.end()) {
-        const std::vector<double> w = number_list(it->second, where, what + " data-widths");
-        if (out.size() != 1 || w.size() != out[0].points.size())
-            throw Error(where + ": " + what + ": data-widths needs one width per point of a single stroke (" +
-                        std::to_string(w.size()) + " for " + std::to_string(out.empty() ? 0 : out[0].points.size()) +
-                        " points)");
-        for (size_t i = 0; i < w.size(); ++i) out[0].widths[i] = float(w[i]);
-    }
-    for (const Stroke& s : out) check_stroke(s, where, what);
-    return out;
-}
-
-std::string format_number(double v) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.6g", std::abs(v) < 5e-7 ? 0.0 : v);
-    return buffer;
-}
-
-}  // namespace
 
 StrokeSet parse_strokes_json(const std::string& text, const std::string& where) {
     using json = nlohmann::json;
@@ -264,69 +118,6 @@ StrokeSet parse_strokes_json(const std::string& text, const std::string& where) 
         check_stroke(s, where, what);
         set.strokes.push_back(std::move(s));
     }
-    return set;
-}
-
-StrokeSet parse_strokes_svg(const std::string& text, const std::string& where) {
-    StrokeSet set;
-    std::vector<Paint> stack{Paint{}};
-    bool seen_svg = false;
-    size_t index = 0, i = 0;
-    int skip_depth = 0;  // inside <defs>, <metadata>, <title>, <desc>: nothing is drawn
-    while ((i = text.find('<', i)) != std::string::npos) {
-        if (text.compare(i, 4, "<!--") == 0) {
-            const size_t end = text.find("-->", i);
-            if (end == std::string::npos) throw Error(where + ": unterminated comment");
-            i = end + 3;
-            continue;
-        }
-        if (text.compare(i, 2, "<?") == 0 || text.compare(i, 2, "<!") == 0) {
-            const size_t end = text.find('>', i);
-            if (end == std::string::npos) throw Error(where + ": unterminated declaration");
-            i = end + 1;
-            continue;
-        }
-        const size_t end = text.find('>', i);
-        if (end == std::string::npos) throw Error(where + ": unterminated element");
-        const Tag tag = parse_tag(text.substr(i + 1, end - i - 1), where);
-        i = end + 1;
-        static const char* const hidden[] = {"defs", "metadata", "title", "desc", "style"};
-        const bool is_hidden = std::any_of(std::begin(hidden), std::end(hidden), [&](const char* h) {
-            return tag.name == h || tag.name == std::string("/") + h;
-        });
-        if (is_hidden) {
-            if (tag.name[0] == '/') --skip_depth;
-            else if (!tag.self_closing) ++skip_depth;
-            continue;
-        }
-        if (skip_depth > 0) continue;
-        if (tag.name == "svg") {
-            seen_svg = true;
-            if (auto it = tag.attributes.find("viewbox"); it != tag.attributes.end()) {
-                const std::vector<double> v = number_list(it->second, where, "viewBox");
-                if (v.size() != 4 || v[2] <= 0 || v[3] <= 0) throw Error(where + ": viewBox: expected x y width height");
-                set.origin = {float(v[0]), float(v[1])};
-                set.size = {float(v[2]), float(v[3])};
-            } else if (tag.attributes.count("width") && tag.attributes.count("height")) {
-                set.size = {float(parse_length(tag.attributes.at("width"), where, "<svg> width")),
-                            float(parse_length(tag.attributes.at("height"), where, "<svg> height"))};
-            }
-            stack.push_back(paint_of(tag, stack.back(), where));
-            if (tag.self_closing) stack.pop_back();
-        } else if (tag.name == "g" || tag.name == "a") {
-            stack.push_back(paint_of(tag, stack.back(), where));
-            if (tag.self_closing) stack.pop_back();
-        } else if (tag.name == "/g" || tag.name == "/a" || tag.name == "/svg") {
-            if (stack.size() > 1) stack.pop_back();
-        } else if (tag.name == "path" || tag.name == "polyline" || tag.name == "polygon" || tag.name == "line") {
-            const Paint paint = paint_of(tag, stack.back(), where);
-            for (Stroke& s : strokes_of(tag, paint, where, index)) set.strokes.push_back(std::move(s));
-            ++index;
-        } else if (!tag.name.empty() && tag.name[0] != '/') {
-            throw Error(where + ": <" + tag.name + ">: unsupported element (path, polyline, polygon and line are read)");
-        }
-    }
-    if (!seen_svg) throw Error(where + ": no <svg> element");
     return set;
 }
 

@@ -2,8 +2,9 @@
 //
 // Reading: .svg by extension, anything else as JSON. Every stroke needs at least one point,
 // finite coordinates within ±1e6, positive finite widths and colours in [0, 1]; unknown JSON
-// keys, SVG transforms, unsupported drawing elements (rect, circle, text, …) and unknown
-// colour names are errors. Errors are `lw::Error`s (exit code 1) whose one-line message starts
+// keys, unsupported SVG elements (text, image, …) and unknown colour names are errors. SVG
+// goes through a real XML parser (vector/svg_reader.cpp): nested groups with inherited
+// stroke and style, transforms, <use>, the basic shapes as strokes, CSS units. Errors are `lw::Error`s (exit code 1) whose one-line message starts
 // with the file name (or `where`).
 //
 // Writing SVG: one <polyline> per open stroke and one <path d="M … Z"> per closed stroke, with
@@ -21,7 +22,11 @@ namespace lw {
 
 [[nodiscard]] StrokeSet load_strokes(const std::filesystem::path& path);
 [[nodiscard]] StrokeSet parse_strokes_json(const std::string& text, const std::string& where);
-[[nodiscard]] StrokeSet parse_strokes_svg(const std::string& text, const std::string& where);
+[[nodiscard]] StrokeSet parse_strokes_svg(const std::string& text, const std::string& where);  // svg_reader.cpp
+
+// Throws lw::Error("<where>: <what>: …") unless the stroke is one a reader may return (the
+// rules above); both readers call it on every stroke.
+void check_stroke(const Stroke& s, const std::string& where, const std::string& what);
 
 [[nodiscard]] std::string strokes_to_svg(const StrokeSet& set);
 [[nodiscard]] std::string strokes_to_json(const StrokeSet& set);
