@@ -135,6 +135,9 @@ TEST(MeshFile, AsciiPlyWithMaterialsOfTheObjGroups) {
 // docs/ERRORS.md; these are the loader's own).
 TEST(MeshFile, MalformedFilesGiveAnErrorNamingTheFile) {
     const fs::path dir = test::temp_dir();
+    std::string huge_polygon = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf";
+    for (int i = 0; i < 1100; ++i) huge_polygon.append(" ").append(std::to_string(1 + i % 3));
+    huge_polygon += "\n";
     const std::pair<const char*, std::string> files[] = {
         {"points.ply", "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\nproperty float z\n"
                        "end_header\n0 0 0\n1 1 1\n"},
@@ -145,6 +148,7 @@ TEST(MeshFile, MalformedFilesGiveAnErrorNamingTheFile) {
         {"nan.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n"},
         {"words.obj", "hello world\n"},
         {"empty.obj", ""},
+        {"huge.obj", huge_polygon},  // more corners than Assimp's ear cutting is given
     };
     for (const auto& [name, text] : files) {
         std::ofstream(dir / name, std::ios::binary) << text;

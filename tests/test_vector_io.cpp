@@ -1,4 +1,5 @@
 // Stroke files: JSON and the SVG subset, in and out, and their one-line errors.
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -79,6 +80,8 @@ TEST(VectorIo, BadFilesGiveOneMessageNamingTheFile) {
         {R"(<svg><use href="#nowhere"/></svg>)", "no element with id \"nowhere\""},
         {R"(<svg><g id="a"><use href="#a"/></g></svg>)", "nest deeper than 32"},
         {R"(<svg><circle cx="1" cy="1"/></svg>)", "missing the r attribute"},
+        {R"(<svg><style>.st0{stroke:#f00}</style><line x2="1" class="st0"/></svg>)", "<style> sheets are not read"},
+        {R"(<svg><svg viewBox="0 0 1 1"><line x2="1"/></svg></svg>)", "nested viewports"},
         {R"(<svg><path d="M 0 0 A 1 1 0 0 1 2 2"/></svg>)", "unsupported command 'A'"},
         {R"(<svg><polyline points="0 0 1"/></svg>)", "odd number"},
         {R"(<svg><polyline points="0 0 1 1" stroke="chartreuse"/></svg>)", "colour \"chartreuse\""},
@@ -230,8 +233,21 @@ TEST(VectorIo, NestedTransformedGroupsGiveTheStrokesOfTheirFlattenedTwin) {
     const StrokeSet flat = parse_strokes_svg(twin.str(), "twin.svg");
     EXPECT_EQ(drawn.size, glm::vec2(200, 100)) << "the viewBox, not the page size in mm";
     ASSERT_EQ(drawn.strokes.size(), flat.strokes.size()) << "the hidden layer draws nothing";
+    // The skewed circle (stroke 3) is flattened after the skew's stretch, to finer chords than
+    // the plain circle of the twin: its points, mapped back, lie on r = 3.
+    const double det = skewed.a * skewed.d - skewed.b * skewed.c;
+    const Affine back{skewed.d / det, -skewed.b / det, -skewed.c / det, skewed.a / det,
+                      (skewed.c * skewed.f - skewed.d * skewed.e) / det, (skewed.b * skewed.e - skewed.a * skewed.f) / det};
+    ASSERT_GE(drawn.strokes.size(), 4u);
+    EXPECT_GT(drawn.strokes[3].points.size(), circle.strokes[0].points.size());
+    for (const glm::vec2& p : drawn.strokes[3].points) EXPECT_NEAR(glm::length(back(p)), 3.0f, 1e-4f);
     for (size_t i = 0; i < flat.strokes.size(); ++i) {
         const Stroke &a = drawn.strokes[i], &b = flat.strokes[i];
+        if (i == 3) {
+            EXPECT_TRUE(a.closed);
+            EXPECT_NEAR(a.widths[0], b.widths[0], 1e-5f);
+            continue;
+        }
         ASSERT_EQ(a.points.size(), b.points.size()) << i;
         for (size_t k = 0; k < a.points.size(); ++k) EXPECT_LT(glm::length(a.points[k] - b.points[k]), 1e-4f) << i << " " << k;
         for (size_t k = 0; k < a.widths.size(); ++k) EXPECT_NEAR(a.widths[k], b.widths[k], 1e-5f) << i;
@@ -261,6 +277,17 @@ TEST(VectorIo, RectCornersEllipsesAndUnits) {
         EXPECT_NEAR(glm::length(q), 1.0f, 1e-5f);
     }
     EXPECT_FLOAT_EQ(s.strokes[1].widths[0], 4.0f);  // 3 pt = 4 px
+    // A <switch> draws its first child that asks for no extension (Illustrator's fallback).
+    const StrokeSet sw = parse_strokes_svg(R"(<svg><switch><foreignObject requiredExtensions="x"/>
+        <g><line x2="5"/></g><g><line x2="9"/></g></switch></svg>)", "switch.svg");
+    ASSERT_EQ(sw.strokes.size(), 1u);
+    EXPECT_EQ(sw.strokes[0].points.back(), glm::vec2(5, 0));
+    // Curves are flattened to ~1 px chords after the transform, not before it.
+    const StrokeSet big = parse_strokes_svg(R"svg(<svg><g transform="scale(20)"><circle r="1"/></g></svg>)svg", "big.svg");
+    const auto& ring = big.strokes.at(0).points;
+    float longest = 0.0f;
+    for (size_t i = 0; i < ring.size(); ++i) longest = std::max(longest, glm::length(ring[(i + 1) % ring.size()] - ring[i]));
+    EXPECT_LE(longest, 1.01f);
 }
 
 }  // namespace

@@ -124,15 +124,20 @@ void update_positions(WeldedMesh& welded, const TriangleMesh& deformed) {
         throw Error("update_positions: the deformed mesh has " + std::to_string(deformed.positions.size()) +
                     " vertices, the welded mesh was built from " + std::to_string(welded.welded_index.size()));
     std::vector<char> seen(welded.positions.size(), 0);
-    for (size_t v = 0; v < deformed.positions.size(); ++v) {
+    // Several inputs share w: the first in weld's order (first use by the faces, then the
+    // unused ones) speaks for it, the one whose position weld took.
+    const auto visit = [&](size_t v) {
         const uint32_t w = welded.welded_index[v];
         if (w >= welded.positions.size())
             throw Error("update_positions: welded vertex " + std::to_string(w) + " is past the welded vertex count " +
                         std::to_string(welded.positions.size()));
-        if (seen[w]) continue;  // several inputs share w: the first one speaks for it
+        if (seen[w]) return;
         seen[w] = 1;
         welded.positions[w] = deformed.positions[v];
-    }
+    };
+    for (uint32_t v : deformed.indices)
+        if (v < deformed.positions.size()) visit(v);
+    for (size_t v = 0; v < deformed.positions.size(); ++v) visit(v);
 }
 
 }  // namespace lw

@@ -10,6 +10,7 @@
 // indices in range, finite positions and normals.
 #include <cmath>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <utility>
 
@@ -25,6 +26,7 @@ namespace lw {
 
 namespace {
 
+constexpr unsigned kMaxPolygonCorners = 1024;
 constexpr const char* kNoTriangles = "no triangles (the file has no faces, or only points and lines)";
 
 bool finite(const aiVector3D& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
@@ -77,27 +79,34 @@ Primitive to_primitive(const aiScene& scene, const aiMesh& mesh, const std::stri
 void check_ply_header(const std::filesystem::path& path, const std::string& file) {
     constexpr size_t kMaxHeader = 1 << 20;
     std::ifstream in(path, std::ios::binary);
-    std::string line;
-    if (!std::getline(in, line) || (line != "ply" && line != "ply\r"))
+    std::string head(kMaxHeader, '\0');  // read at most this much: a header is a few hundred bytes
+    in.read(head.data(), std::streamsize(head.size()));
+    head.resize(size_t(in.gcount()));
+    if (head.rfind("ply\n", 0) != 0 && head.rfind("ply\r\n", 0) != 0)
         throw Error(file + ": not a PLY file (the first line is not \"ply\")");
-    size_t read = line.size() + 1;
-    while (std::getline(in, line) && read < kMaxHeader) {
-        read += line.size() + 1;
+    std::istringstream lines(head);
+    std::string line;
+    while (std::getline(lines, line)) {
         if (!line.empty() && line.back() == '\r') line.pop_back();
         if (line == "end_header") return;
     }
     throw Error(file + ": PLY header has no end_header line" +
-                (read >= kMaxHeader ? " in its first 1 MiB" : std::string(" before the end of the file")));
+                (head.size() >= kMaxHeader ? " in its first 1 MiB" : std::string(" before the end of the file")));
 }
 
 // Drops the points and lines (as load_gltf skips them) and sets the mesh's primitive types
 // from the faces it keeps, which the post-processing steps trust. The faces' storage is
 // Assimp's (delete[] frees every element, kept or not). Returns the faces kept.
-size_t keep_polygons(aiMesh& mesh) {
+size_t keep_polygons(aiMesh& mesh, const std::string& file) {
     unsigned kept = 0;
     bool polygons = false;
     for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
         if (mesh.mFaces[f].mNumIndices < 3) continue;
+        // Assimp's ear cutting is quadratic to cubic in a polygon's corners: a file of a few
+        // huge polygons would take minutes. Scans have triangles and quads.
+        if (mesh.mFaces[f].mNumIndices > kMaxPolygonCorners)
+            throw Error(file + ": face " + std::to_string(f) + " has " + std::to_string(mesh.mFaces[f].mNumIndices) +
+                        " corners (at most 1024 are read)");
         polygons |= mesh.mFaces[f].mNumIndices > 3;
         if (kept != f) std::swap(mesh.mFaces[kept], mesh.mFaces[f]);
         ++kept;
@@ -138,7 +147,7 @@ Model load_mesh_file(const std::filesystem::path& path) {
         throw Error(file + ": cannot load the mesh: " + (reason.empty() ? "Assimp gave no reason" : reason));
     }
     size_t faces = 0;
-    for (unsigned m = 0; m < scene->mNumMeshes; ++m) faces += keep_polygons(*scene->mMeshes[m]);
+    for (unsigned m = 0; m < scene->mNumMeshes; ++m) faces += keep_polygons(*scene->mMeshes[m], file);
     if (faces == 0) throw Error(file + ": " + kNoTriangles);
     scene = importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_JoinIdenticalVertices);
     if (!scene) throw Error(file + ": cannot load the mesh: " + one_line(importer.GetErrorString()));

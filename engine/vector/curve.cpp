@@ -98,21 +98,21 @@ Curve2D parse_curve_json(const std::string& text, const std::string& where) {
     return curve;
 }
 
-std::vector<Curve2D> parse_svg_subpaths(const std::string& d, const std::string& where) {
+std::vector<Curve2D> parse_svg_subpaths(const std::string& d, const std::string& where, double stretch) {
     PathLexer lex(d, where);
     std::vector<Curve2D> subpaths;
     glm::dvec2 current{0.0}, start{0.0};
     glm::dvec2 last_control{0.0};  // of the previous C/S (cubic) or Q/T (quadratic), for S and T
     char command = 0, previous = 0;
     auto add = [&](glm::dvec2 p) { subpaths.back().points.push_back(checked_point(p.x, p.y, where, "path data")); };
-    // A cubic Bézier from the current point, flattened to chords under ~1 px: the control
-    // polygon bounds the curve's length. Clamped as a double: a huge hull does not fit an int
+    // A cubic Bézier from the current point, flattened to chords under ~1 px once stretched
+    // by `stretch` (a transform applied later): the control polygon bounds the curve's length. Clamped as a double: a huge hull does not fit an int
     // (found by fuzz_strokes).
     auto cubic = [&](glm::dvec2 p1, glm::dvec2 p2, glm::dvec2 p3) {
         const glm::dvec2 p0 = current;
         const double hull = glm::length(p1 - p0) + glm::length(p2 - p1) + glm::length(p3 - p2);
         if (!std::isfinite(hull)) lex.fail("curve control points out of range");
-        const int n = static_cast<int>(std::clamp(std::ceil(hull), 4.0, 4096.0));
+        const int n = static_cast<int>(std::clamp(std::ceil(hull * std::min(stretch, 1e4)), 4.0, 4096.0));
         for (int k = 1; k <= n; ++k) {
             const double t = double(k) / n, s = 1.0 - t;
             add(s * s * s * p0 + 3.0 * s * s * t * p1 + 3.0 * s * t * t * p2 + t * t * t * p3);

@@ -37,7 +37,10 @@ struct Curve2D {
 [[nodiscard]] Curve2D parse_svg_path_data(const std::string& d, const std::string& where);
 // Every subpath of a `d` attribute (M starts one; Z closes it; drawing on after Z starts a new
 // one at the same point, as SVG does). Also used by the stroke reader (vector/stroke_io.h).
-[[nodiscard]] std::vector<Curve2D> parse_svg_subpaths(const std::string& d, const std::string& where);
+// `stretch`: the largest factor a transform applied afterwards stretches lengths by, so that
+// curves are flattened to ~1 px chords in the output (the SVG stroke reader's transforms).
+[[nodiscard]] std::vector<Curve2D> parse_svg_subpaths(const std::string& d, const std::string& where,
+                                                      double stretch = 1.0);
 
 class ArclengthCurve {
 public:

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <map>
+#include <numbers>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -27,8 +28,10 @@ namespace lw {
 
 namespace {
 
-constexpr float kPi = 3.14159265358979f;
+constexpr double kPi = std::numbers::pi;
 constexpr int kMaxUseDepth = 32;
+// <use> of groups of <use>s multiplies: ten levels of ten uses are 10^10 strokes from 2 KB.
+constexpr size_t kMaxPoints = 10'000'000;
 constexpr int kMaxNesting = 256;  // elements in elements: deeper is no drawing, and the walk recurses
 
 // Numbers separated by white space and commas (points lists, data-widths, viewBox, transforms).
@@ -152,9 +155,20 @@ bool apply_paint(const pugi::xml_node& node, Context& c) {
     return shown;
 }
 
-// An ellipse (rect corners: a quarter of one) as points, chords of about a pixel.
-void append_arc(std::vector<glm::vec2>& out, glm::dvec2 centre, glm::dvec2 radii, double from, double to) {
-    const double span = std::abs(to - from), r = std::max(radii.x, radii.y);
+// The largest factor by which the transform stretches a length (its largest singular value):
+// curves are flattened in user units, to chords of about a pixel after the transform.
+double max_stretch(const glm::dmat3& t) {
+    const glm::dmat2 m(t);
+    const double a = m[0][0] * m[0][0] + m[0][1] * m[0][1], b = m[0][0] * m[1][0] + m[0][1] * m[1][1];
+    const double c = m[1][0] * m[1][0] + m[1][1] * m[1][1];  // MᵀM = [a b; b c]
+    return std::sqrt(0.5 * (a + c) + std::sqrt(0.25 * (a - c) * (a - c) + b * b));
+}
+
+// An ellipse (rect corners: a quarter of one) as points, chords of about a pixel once
+// stretched by `stretch`.
+void append_arc(std::vector<glm::vec2>& out, glm::dvec2 centre, glm::dvec2 radii, double from, double to,
+                double stretch) {
+    const double span = std::abs(to - from), r = std::max(radii.x, radii.y) * std::min(stretch, 1e4);
     const int n = int(std::clamp(std::ceil(span * r), 4.0, 4096.0));
     for (int k = 0; k <= n; ++k) {
         const double a = from + (to - from) * k / n;
@@ -166,19 +180,38 @@ class Reader {
 public:
     Reader(const pugi::xml_document& doc, std::string where) : where_(std::move(where)) {
         for (const pugi::xpath_node& n : doc.select_nodes("//*[@id]")) ids_.emplace(n.node().attribute("id").as_string(), n.node());
+        for (const pugi::xpath_node& n : doc.select_nodes("//*[local-name()='style']"))
+            style_sheet_ |= !trim(n.node().child_value()).empty() || !trim(n.node().text().as_string()).empty();
     }
 
     void walk(const pugi::xml_node& node, Context c, StrokeSet& set) {
         const std::string name = node.name();
         static const std::set<std::string> hidden = {"defs",  "metadata", "title",   "desc",           "style",
                                                      "symbol", "clipPath", "mask",   "linearGradient", "radialGradient",
-                                                     "pattern", "marker",  "filter", "script"};
+                                                     "pattern", "marker",  "filter", "script", "foreignObject"};
         if (hidden.count(name) || name.find(':') != std::string::npos) return;  // not drawn; editors' own data
+        // Illustrator's default export styles by class from a <style> sheet; drawn without
+        // it, every stroke would come out black and 1 px wide.
+        if (style_sheet_ && node.attribute("class"))
+            throw Error(where_ + ": <" + name + " class=\"" + node.attribute("class").as_string() +
+                        "\">: CSS rules of <style> sheets are not read (export with style attributes instead)");
         if (!apply_paint(node, c)) return;
         if (++c.nesting > kMaxNesting) throw Error(where_ + ": <" + name + ">: elements nest deeper than 256");
         if (auto t = node.attribute("transform"))
             c.transform = c.transform * parse_transform(t.as_string(), where_, "<" + name + ">");
-        if (name == "svg" || name == "g" || name == "a" || name == "switch") {
+        if (name == "svg" && node.parent() != node.root() &&
+            (node.attribute("viewBox") || node.attribute("x") || node.attribute("y")))
+            throw Error(where_ + ": <svg>: nested viewports (viewBox, x, y) are not read");
+        if (name == "switch") {
+            // SVG 1.1 §5.8: only the first child whose conditions hold is drawn; we hold no
+            // extension or feature, so that is the first child asking for none.
+            for (const pugi::xml_node& child : node.children())
+                if (child.type() == pugi::node_element && !child.attribute("requiredExtensions") &&
+                    !child.attribute("requiredFeatures")) {
+                    walk(child, c, set);
+                    break;
+                }
+        } else if (name == "svg" || name == "g" || name == "a") {
             for (const pugi::xml_node& child : node.children())
                 if (child.type() == pugi::node_element) walk(child, c, set);
         } else if (name == "use") {
@@ -205,6 +238,7 @@ private:
         c.transform = c.transform * offset;
         const pugi::xml_node target = it->second;
         if (std::string(target.name()) == "symbol") {  // a symbol is drawn through <use> only, as a group
+            if (target.attribute("viewBox")) throw Error(where_ + ": <symbol> with a viewBox: its viewport is not read");
             if (!apply_paint(target, c)) return;
             for (const pugi::xml_node& child : target.children())
                 if (child.type() == pugi::node_element) walk(child, c, set);
@@ -230,13 +264,13 @@ private:
         return s;
     }
 
-    std::vector<Curve2D> curves_of(const pugi::xml_node& node) const {
+    std::vector<Curve2D> curves_of(const pugi::xml_node& node, double stretch) const {
         const std::string name = node.name(), w = what(node);
         std::vector<Curve2D> curves(1);
         Curve2D& c = curves[0];
         if (name == "path") {
             if (!node.attribute("d")) throw Error(where_ + ": " + w + ": missing the d attribute");
-            return parse_svg_subpaths(node.attribute("d").as_string(), where_ + ": " + w);
+            return parse_svg_subpaths(node.attribute("d").as_string(), where_ + ": " + w, stretch);
         } else if (name == "polyline" || name == "polygon") {
             if (!node.attribute("points")) throw Error(where_ + ": " + w + ": missing the points attribute");
             const std::vector<double> v = number_list(node.attribute("points").as_string(), where_, w + " points");
@@ -258,10 +292,10 @@ private:
             rx = std::min(rx, wd / 2), ry = std::min(ry, ht / 2);
             if (rx > 0.0 && ry > 0.0) {
                 const glm::dvec2 r(rx, ry);
-                append_arc(c.points, {x + wd - rx, y + ry}, r, -kPi / 2, 0.0);
-                append_arc(c.points, {x + wd - rx, y + ht - ry}, r, 0.0, kPi / 2);
-                append_arc(c.points, {x + rx, y + ht - ry}, r, kPi / 2, kPi);
-                append_arc(c.points, {x + rx, y + ry}, r, kPi, 1.5 * kPi);
+                append_arc(c.points, {x + wd - rx, y + ry}, r, -kPi / 2, 0.0, stretch);
+                append_arc(c.points, {x + wd - rx, y + ht - ry}, r, 0.0, kPi / 2, stretch);
+                append_arc(c.points, {x + rx, y + ht - ry}, r, kPi / 2, kPi, stretch);
+                append_arc(c.points, {x + rx, y + ry}, r, kPi, 1.5 * kPi, stretch);
             } else {
                 c.points = {glm::vec2(x, y), glm::vec2(x + wd, y), glm::vec2(x + wd, y + ht), glm::vec2(x, y + ht)};
             }
@@ -272,7 +306,7 @@ private:
                                                   : glm::dvec2(length_of(node, "rx", std::nullopt),
                                                                length_of(node, "ry", std::nullopt));
             if (!(r.x > 0.0 && r.y > 0.0)) throw Error(where_ + ": " + w + ": the radius must be positive");
-            append_arc(c.points, centre, r, 0.0, 2.0 * kPi);
+            append_arc(c.points, centre, r, 0.0, 2.0 * kPi, stretch);
             c.points.pop_back();  // the first point again
             c.closed = true;
         }
@@ -281,7 +315,7 @@ private:
 
     void draw(const pugi::xml_node& node, const Context& c, StrokeSet& set) {
         const std::string w = what(node);
-        std::vector<Curve2D> curves = curves_of(node);
+        std::vector<Curve2D> curves = curves_of(node, max_stretch(c.transform));
         if (lower(trim(c.stroke)) == "none")
             throw Error(where_ + ": " + w + ": stroke=\"none\": only stroked elements are strokes");
         const glm::vec3 color = c.stroke.empty() ? glm::vec3(0.0f) : parse_color(c.stroke, where_ + ": " + w);
@@ -304,6 +338,9 @@ private:
         }
         for (Stroke& s : out) {
             check_stroke(s, where_, w);
+            points_ += s.points.size();
+            if (points_ > kMaxPoints)
+                throw Error(where_ + ": " + w + ": more than 10 million points drawn (<use> of <use>s multiplies)");
             set.strokes.push_back(std::move(s));
         }
         ++index_;
@@ -312,6 +349,8 @@ private:
     std::string where_;
     std::map<std::string, pugi::xml_node> ids_;
     size_t index_ = 0;  // drawn elements so far, for "<path> #3" in errors
+    size_t points_ = 0;
+    bool style_sheet_ = false;  // a <style> element with rules
 };
 
 }  // namespace
