@@ -496,6 +496,22 @@ TEST(Weld, VertexBufferOrderDoesNotChangeTheWeldedMesh) {
     for (size_t v = 0; v < n; ++v) EXPECT_EQ(a.welded_index[v], b.welded_index[n - 1 - v]);
 }
 
+// update_positions takes each welded vertex from the input vertex weld took it from (the
+// first used by the faces): here the seam copy stored second but used first.
+TEST(Weld, UpdatePositionsFollowsTheWeldOrder) {
+    TriangleMesh mesh;
+    mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 0, 0}};  // 1 and 3 are seam copies
+    mesh.normals.assign(4, glm::vec3(0, 0, 1));
+    mesh.indices = {0, 3, 2, 0, 1, 2};
+    WeldedMesh w = weld(mesh);
+    ASSERT_EQ(w.welded_index[1], w.welded_index[3]);
+    TriangleMesh deformed = mesh;
+    deformed.positions[1] = {5, 0, 0};
+    deformed.positions[3] = {7, 0, 0};
+    update_positions(w, deformed);
+    EXPECT_EQ(w.positions[w.welded_index[3]], glm::vec3(7, 0, 0));
+}
+
 TEST(Weld, NonManifoldEdgeHasNoNeighbours) {
     TriangleMesh fin;  // three triangles on the edge (0,1)
     fin.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}};

@@ -179,6 +179,19 @@ TEST(VectorLayerCli, StipplesAreDotsAndEndsAreRound) {
     // The line (half width 2) with its caps: inked from x = 28 to 71 on its row, no further.
     EXPECT_TRUE(ink(28, 80) && ink(71, 80));
     EXPECT_FALSE(ink(26, 80) || ink(73, 80));
+    // A tapering layer tapers ends, not dots: the dots keep their width.
+    std::ofstream(dir / "taper.json")
+        << R"({"size": [100, 100], "background": [1, 1, 1], "layers": [{"strokes": "dots.json", "color": [0, 0, 0], "taper": 8}]})";
+    const auto t = test::run_linework("render " + test::quote(dir / "taper.json") + " -o " + test::quote(dir / "t") +
+                                      " --device cpu --validation");
+    ASSERT_EQ(t.exit_code, 0) << t.output;
+    const ImageRGBA8 tapered = read_image_rgba8(dir / "t/frame_0000.png");
+    for (const auto& [x, y] : {std::pair{20, 20}, std::pair{50, 50}}) {
+        int n = 0;
+        for (int v = y - 6; v <= y + 6; ++v)
+            for (int u = x - 6; u <= x + 6; ++u) n += tapered.pixels[4 * (size_t(v) * tapered.width + size_t(u))] < 128;
+        EXPECT_EQ(n, ink_near(x, y)) << "dot at " << x << ", " << y;
+    }
 }
 
 }  // namespace
