@@ -9,8 +9,6 @@
 // polygons become triangles. Then every primitive passes the checks a glTF primitive passes:
 // indices in range, finite positions and normals.
 #include <cmath>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <utility>
 
@@ -21,6 +19,7 @@
 #include "core/error.h"
 #include "core/text.h"
 #include "scene/model.h"
+#include "scene/ply_check.h"
 
 namespace lw {
 
@@ -74,26 +73,6 @@ Primitive to_primitive(const aiScene& scene, const aiMesh& mesh, const std::stri
     return p;
 }
 
-// Assimp 5.2's PLY parser (Debian 12's) loops forever on a header that never ends: read up to
-// end_header ourselves first, so such a file is an error and not a hang.
-void check_ply_header(const std::filesystem::path& path, const std::string& file) {
-    constexpr size_t kMaxHeader = 1 << 20;
-    std::ifstream in(path, std::ios::binary);
-    std::string head(kMaxHeader, '\0');  // read at most this much: a header is a few hundred bytes
-    in.read(head.data(), std::streamsize(head.size()));
-    head.resize(size_t(in.gcount()));
-    if (head.rfind("ply\n", 0) != 0 && head.rfind("ply\r\n", 0) != 0)
-        throw Error(file + ": not a PLY file (the first line is not \"ply\")");
-    std::istringstream lines(head);
-    std::string line;
-    while (std::getline(lines, line)) {
-        if (!line.empty() && line.back() == '\r') line.pop_back();
-        if (line == "end_header") return;
-    }
-    throw Error(file + ": PLY header has no end_header line" +
-                (head.size() >= kMaxHeader ? " in its first 1 MiB" : std::string(" before the end of the file")));
-}
-
 // Drops the points and lines (as load_gltf skips them) and sets the mesh's primitive types
 // from the faces it keeps, which the post-processing steps trust. The faces' storage is
 // Assimp's (delete[] frees every element, kept or not). Returns the faces kept.
@@ -133,7 +112,7 @@ Model load_mesh_file(const std::filesystem::path& path) {
     std::error_code ec;
     if (!std::filesystem::exists(path, ec)) throw Error(file + ": file not found");
     if (!std::filesystem::is_regular_file(path, ec)) throw Error(file + ": not a regular file");
-    if (lower(path.extension().string()) == ".ply") check_ply_header(path, file);
+    if (lower(path.extension().string()) == ".ply") check_ply_structure(path, file);
 
     // Parsed and validated first, post-processed after our own pass over the faces: Debian's
     // Assimp is built with its assertions on, and its Triangulate step aborts the process on
