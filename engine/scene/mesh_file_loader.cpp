@@ -5,9 +5,11 @@
 // per-corner vertices for OBJ; JoinIdenticalVertices merges the corners that agree in every
 // attribute, numbered in order of first use. The triangles are a glTF's when the file holds
 // the same ones, and the line stages number vertices by first use too (geometry/welded_mesh),
-// so the vertex order does not change the picture. Points and lines are dropped (as load_gltf skips them),
-// polygons become triangles. Then every primitive passes the checks a glTF primitive passes:
-// indices in range, finite positions and normals.
+// so the vertex order does not change the picture. Points and lines are dropped (as
+// load_gltf skips them), polygons become triangles. Then every primitive passes the checks a
+// glTF primitive passes: indices in range, finite positions and normals. Assimp 5.2 trusts
+// what a PLY declares (hangs, aborts, fills memory on malformed files): scene/ply_check.cpp
+// checks the structure first, and our own pass over the faces runs before its post-processing.
 #include <cmath>
 #include <string>
 #include <utility>
