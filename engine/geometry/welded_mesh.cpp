@@ -66,7 +66,10 @@ WeldedMesh weld(const TriangleMesh& mesh) {
         if (out.welded_index[v] != kUnassigned) return;
         const auto [it, inserted] =
             welded_of.try_emplace(key_of(mesh.positions[v]), static_cast<uint32_t>(out.positions.size()));
-        if (inserted) out.positions.push_back(mesh.positions[v]);
+        if (inserted) {
+            out.positions.push_back(mesh.positions[v]);
+            out.source_vertex.push_back(static_cast<uint32_t>(v));
+        }
         out.welded_index[v] = it->second;
     };
     for (uint32_t v : mesh.indices)
@@ -123,21 +126,12 @@ void update_positions(WeldedMesh& welded, const TriangleMesh& deformed) {
     if (deformed.positions.size() != welded.welded_index.size())
         throw Error("update_positions: the deformed mesh has " + std::to_string(deformed.positions.size()) +
                     " vertices, the welded mesh was built from " + std::to_string(welded.welded_index.size()));
-    std::vector<char> seen(welded.positions.size(), 0);
-    // Several inputs share w: the first in weld's order (first use by the faces, then the
-    // unused ones) speaks for it, the one whose position weld took.
-    const auto visit = [&](size_t v) {
-        const uint32_t w = welded.welded_index[v];
-        if (w >= welded.positions.size())
-            throw Error("update_positions: welded vertex " + std::to_string(w) + " is past the welded vertex count " +
-                        std::to_string(welded.positions.size()));
-        if (seen[w]) return;
-        seen[w] = 1;
-        welded.positions[w] = deformed.positions[v];
-    };
-    for (uint32_t v : deformed.indices)
-        if (v < deformed.positions.size()) visit(v);
-    for (size_t v = 0; v < deformed.positions.size(); ++v) visit(v);
+    // Each welded vertex moves with the input vertex weld took its position from (the first
+    // used by the faces), whatever the other seam copies do.
+    if (welded.source_vertex.size() != welded.positions.size())
+        throw Error("update_positions: the welded mesh has " + std::to_string(welded.positions.size()) +
+                    " vertices but " + std::to_string(welded.source_vertex.size()) + " sources");
+    for (size_t w = 0; w < welded.positions.size(); ++w) welded.positions[w] = deformed.positions[welded.source_vertex[w]];
 }
 
 }  // namespace lw

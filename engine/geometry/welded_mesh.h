@@ -32,6 +32,7 @@ struct WeldedMesh {
     std::vector<glm::ivec3> face_edges;      // edge index opposite each corner
     std::vector<glm::ivec3> face_neighbors;  // face across each edge, -1 if border/non-manifold
     std::vector<uint32_t> welded_index;      // input vertex -> welded vertex
+    std::vector<uint32_t> source_vertex;     // welded vertex -> the input vertex it was taken from
     std::vector<uint32_t> source_face;       // welded face -> input triangle (degenerate ones are dropped)
 
     size_t border_edge_count() const;

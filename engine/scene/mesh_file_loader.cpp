@@ -42,6 +42,13 @@ bool is_stand_in(const aiMaterial& material) {
     return std::string(name.C_Str()) == AI_DEFAULT_MATERIAL_NAME;
 }
 
+// The material's name, "" for the stand-in (as for an unnamed glTF material).
+std::string material_name(const aiMaterial& material) {
+    aiString name;
+    material.Get(AI_MATKEY_NAME, name);
+    return is_stand_in(material) ? std::string() : std::string(name.C_Str());
+}
+
 // One Assimp mesh as a primitive; `label` names it in errors ("mesh 2").
 Primitive to_primitive(const aiScene& scene, const aiMesh& mesh, const std::string& file, const std::string& label) {
     Primitive p;
@@ -141,11 +148,7 @@ Model load_mesh_file(const std::filesystem::path& path) {
         if (!p.indices.empty()) mesh.primitives.push_back(std::move(p));
     }
     if (mesh.primitives.empty()) throw Error(file + ": " + kNoTriangles);
-    for (unsigned m = 0; m < scene->mNumMaterials; ++m) {
-        aiString name;
-        scene->mMaterials[m]->Get(AI_MATKEY_NAME, name);
-        model.material_names.push_back(is_stand_in(*scene->mMaterials[m]) ? std::string() : name.C_Str());
-    }
+    for (unsigned m = 0; m < scene->mNumMaterials; ++m) model.material_names.push_back(material_name(*scene->mMaterials[m]));
     model.meshes.push_back(std::move(mesh));
     // OBJ and PLY have no scene graph worth keeping (OBJ groups are meshes here): one root node.
     model.nodes.push_back({.name = path.stem().string(), .mesh = 0});

@@ -327,9 +327,9 @@ float apply_scalar_modifiers(float value, const std::vector<ScalarModifier>& mod
 // to 15 % at the tip, so that tips stay visible.
 float taper_factor(const StrokeSpan& whole, const LineSetStyle& style, float s) {
     if (whole.closed || (style.taper_in_px <= 0.0f && style.taper_out_px <= 0.0f)) return 1.0f;
-    // A stroke of at most a pixel is drawn as a dot (stroke/stroke_geometry.h): it has no
-    // ends to taper, and would otherwise shrink to the tips' 15 %.
-    if (whole.s_end - whole.s_begin <= 1.0f) return 1.0f;
+    // A stroke drawn as a dot (stroke/stroke_geometry.h) has no ends to taper, and would
+    // otherwise shrink to the tips' 15 %.
+    if (whole.s_end - whole.s_begin <= kDotLengthPx) return 1.0f;
     const float half = 0.5f * std::max(whole.s_end - whole.s_begin, 1e-3f);
     float f = 1.0f;
     if (style.taper_in_px > 0.0f) f = std::min(f, (s - whole.s_begin) / std::min(style.taper_in_px, half));

@@ -18,7 +18,6 @@ glm::vec2 unit_normal(glm::vec2 a, glm::vec2 b) {
 
 constexpr float kPi = 3.14159265358979f;
 constexpr float kMergePx = 1e-4f;         // closer samples are one node
-constexpr float kDotLengthPx = 1.0f;      // at most this much arc length draws a dot
 constexpr float kStraightCos = 0.99985f;  // cos 1°: straighter turns need no round-join fan
 constexpr int kHalfDiscSegments = 16;
 

@@ -3,8 +3,9 @@
 // Two builders share the vertex format and the texture-coordinate convention:
 //
 // `append_stroke(path, params, out)` — the original one. The renderer no longer draws with it
-// (line sets and layers take the one below); it stays as the reference the line-set builder is
-// checked against with butt caps and mitre joins (tests/test_modifiers.cpp). Input: a visible `ScreenPath` (≥ 2 samples, else nothing), its
+// (line sets and layers take the one below); it stays as the reference the line-set builder
+// is checked against with butt caps and mitre joins (tests/test_modifiers.cpp).
+// Input: a visible `ScreenPath` (≥ 2 samples, else nothing), its
 // parameterization T(s) = ρs + φ with its SLAM fold, and a width, colour and taper for the
 // whole path. Output: a triangle list of `StrokeVertex`: two vertices per sample (left and
 // right of the path), consecutive samples joined without cracks. Joins are mitred along the
@@ -37,6 +38,9 @@
 #include "types/slam_level.h"
 
 namespace lw {
+
+// The line-set builder draws a path of at most this much arc length (pixels) as a dot.
+constexpr float kDotLengthPx = 1.0f;
 
 struct StrokeVertex {
     glm::vec2 pixel;

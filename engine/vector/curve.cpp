@@ -156,13 +156,10 @@ std::vector<Curve2D> parse_svg_subpaths(const std::string& d, const std::string&
                 add(current);
                 break;
             }
-            case 'H': {
-                current.x = (relative ? current.x : 0.0) + lex.number();
-                add(current);
-                break;
-            }
-            case 'V': {
-                current.y = (relative ? current.y : 0.0) + lex.number();
+            case 'H':
+            case 'V': {  // one coordinate moves: x for H, y for V
+                const int axis = upper == 'H' ? 0 : 1;
+                current[axis] = (relative ? current[axis] : 0.0) + lex.number();
                 add(current);
                 break;
             }
