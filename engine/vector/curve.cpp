@@ -163,30 +163,18 @@ std::vector<Curve2D> parse_svg_subpaths(const std::string& d, const std::string&
                 add(current);
                 break;
             }
-            case 'C': {
-                const glm::dvec2 p1 = base + lex.point();
+            case 'C':
+            case 'S': {  // S's first control point is C's or S's second, reflected
+                const glm::dvec2 p1 = upper == 'C' ? base + lex.point() : after_cubic ? 2.0 * current - last_control : current;
                 const glm::dvec2 p2 = base + lex.point();
                 const glm::dvec2 p3 = base + lex.point();
                 cubic(p1, p2, p3);
                 last_control = p2;
                 break;
             }
-            case 'S': {
-                const glm::dvec2 p1 = after_cubic ? 2.0 * current - last_control : current;
-                const glm::dvec2 p2 = base + lex.point();
-                const glm::dvec2 p3 = base + lex.point();
-                cubic(p1, p2, p3);
-                last_control = p2;
-                break;
-            }
-            case 'Q': {
-                const glm::dvec2 q = base + lex.point();
-                const glm::dvec2 p = base + lex.point();
-                quadratic(q, p);
-                break;
-            }
-            case 'T': {
-                const glm::dvec2 q = after_quadratic ? 2.0 * current - last_control : current;
+            case 'Q':
+            case 'T': {  // T's control point is Q's or T's, reflected
+                const glm::dvec2 q = upper == 'Q' ? base + lex.point() : after_quadratic ? 2.0 * current - last_control : current;
                 quadratic(q, base + lex.point());
                 break;
             }
