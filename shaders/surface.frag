@@ -2,6 +2,8 @@
 #extension GL_GOOGLE_include_directive : require
 // Surface pass, fragment stage: flat (face normals from screen derivatives), toon (three
 // bands of Lambert on the smooth normal, the usual backdrop for line drawings) or unlit.
+// Toon bands are antialiased analytically: each step ramps over one pixel of the Lambert term
+// (its screen derivative), since multisampling shades once per pixel and cannot smooth them.
 // Faces are lit from whichever side faces the eye: open scans and single-sided parts of
 // glTF models must not turn black from behind.
 #include "surface_shared.glsl"
@@ -10,6 +12,12 @@ layout(location = 0) in vec3 in_world;
 layout(location = 1) in vec3 in_normal;
 
 layout(location = 0) out vec4 out_color;
+
+// 0 below the threshold t, 1 above, over one pixel's change of x around it.
+float band_step(float x, float t) {
+    float pixel = max(fwidth(x), 1e-5);
+    return clamp((x - t) / pixel + 0.5, 0.0, 1.0);
+}
 
 void main() {
     int mode = int(pc.base_color.w);
@@ -25,7 +33,7 @@ void main() {
     float lambert = max(dot(n, pc.light_dir.xyz), 0.0);
     float intensity;
     if (mode == SHADING_TOON) {
-        intensity = lambert > 0.6 ? 1.0 : (lambert > 0.25 ? 0.8 : 0.6);
+        intensity = 0.6 + 0.2 * band_step(lambert, 0.25) + 0.2 * band_step(lambert, 0.6);
     } else if (mode == SHADING_FLAT) {
         intensity = 0.35 + 0.65 * lambert;
     } else {

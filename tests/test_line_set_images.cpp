@@ -242,12 +242,18 @@ TEST_F(LineSetImage, AlphaColourCapsAndGeometryInThePixels) {
     const SideRun square = top_side_run(render(dashed), &LineSetImage::ink);
     EXPECT_NEAR(square.length - butt.length, 6, 1) << butt.length << " " << square.length;
 
-    LineSetDesc tips = borders(4.0f);  // tip removal: 10 px off each end
+    // Tip removal takes 10 px off each end, backbone stretch adds 5 px past each: 30 px apart.
+    // Against the plain side only roughly: its run also holds whatever of the butt-ended
+    // vertical sides reaches the measured row (up to their half width, 2 px, at each corner).
+    LineSetDesc tips = borders(4.0f);
     tips.style.geometry = {{.kind = GeometryModifier::Kind::TipRemove, .length_px = 10.0f}};
-    EXPECT_NEAR(top_side_run(render(tips), &LineSetImage::ink).length, plain.length - 20, 2);
-    LineSetDesc stretched = borders(4.0f);  // backbone stretch: 5 px past each end
+    const int tips_length = top_side_run(render(tips), &LineSetImage::ink).length;
+    EXPECT_NEAR(tips_length, plain.length - 20, 4);
+    LineSetDesc stretched = borders(4.0f);
     stretched.style.geometry = {{.kind = GeometryModifier::Kind::BackboneStretch, .length_px = 5.0f}};
-    EXPECT_NEAR(top_side_run(render(stretched), &LineSetImage::ink).length, plain.length + 10, 2);
+    const int stretched_length = top_side_run(render(stretched), &LineSetImage::ink).length;
+    EXPECT_NEAR(stretched_length, plain.length + 10, 4);
+    EXPECT_NEAR(stretched_length - tips_length, 30, 1);
 
     LineSetDesc sinus = borders(2.0f);  // ±3 px along the normal: ink spans 2·3 + 2 rows
     sinus.style.geometry = {{.kind = GeometryModifier::Kind::Sinus, .wavelength_px = 30.0f, .amplitude_px = 3.0f}};

@@ -1,6 +1,9 @@
 // Line-set style on the CPU: chaining options, geometry modifiers, dashes, attributes and the
 // stroke builder's caps and joins (stroke/modifiers.h, stroke/stroke_geometry.h). Geometry is
-// checked by measuring what it covers: a small rasterizer counts 4×4 subsamples per pixel.
+// checked by measuring what it covers: a small rasterizer counts 4×4 subsamples per pixel
+// whose coverage (stroke_coverage of the interpolated coverage coordinates, what the shaders
+// compute; stroke/stroke_reference.h) is at least ½ — the stroke's outline, without the
+// antialiasing margin.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,6 +12,7 @@
 
 #include "stroke/modifiers.h"
 #include "stroke/stroke_geometry.h"
+#include "stroke/stroke_reference.h"
 
 namespace lw {
 namespace {
@@ -53,7 +57,7 @@ float polyline_length(const ScreenPath& path) {
     return length;
 }
 
-// Which 4×4 subsamples of a W×H pixel grid any triangle covers.
+// Which 4×4 subsamples of a W×H pixel grid lie inside the outline of the triangles' stroke.
 struct Coverage {
     static constexpr int kSub = 4;
     int width, height;
@@ -61,28 +65,16 @@ struct Coverage {
 
     Coverage(const std::vector<StrokeVertex>& triangles, int w, int h)
         : width(w * kSub), height(h * kSub), hit(size_t(width * height), 0) {
-        for (size_t t = 0; t + 2 < triangles.size(); t += 3)
-            add(triangles[t].pixel, triangles[t + 1].pixel, triangles[t + 2].pixel);
+        for (size_t t = 0; t + 2 < triangles.size(); t += 3) {
+            const StrokeVertex &a = triangles[t], &b = triangles[t + 1], &c = triangles[t + 2];
+            const EdgeGradients g = edge_gradients(a, b, c);
+            for_each_point_inside(a, b, c, w, h, kSub, [&](int ix, int iy, const glm::vec4& edge, float) {
+                if (stroke_coverage(edge, g.dxy_dx, g.dxy_dy, g.dz) >= 0.5f) hit[size_t(iy * width + ix)] = 1;
+            });
+        }
     }
     static glm::vec2 centre(int ix, int iy) {
         return {(float(ix) + 0.5f) / float(kSub), (float(iy) + 0.5f) / float(kSub)};
-    }
-    void add(glm::vec2 a, glm::vec2 b, glm::vec2 c) {
-        auto edge = [](glm::vec2 p, glm::vec2 q, glm::vec2 r) {
-            return (q.x - p.x) * (r.y - p.y) - (q.y - p.y) * (r.x - p.x);
-        };
-        const float area = edge(a, b, c);
-        if (area == 0.0f) return;
-        const int x0 = std::max(0, int(std::floor(std::min({a.x, b.x, c.x}) * kSub)));
-        const int x1 = std::min(width - 1, int(std::ceil(std::max({a.x, b.x, c.x}) * kSub)));
-        const int y0 = std::max(0, int(std::floor(std::min({a.y, b.y, c.y}) * kSub)));
-        const int y1 = std::min(height - 1, int(std::ceil(std::max({a.y, b.y, c.y}) * kSub)));
-        for (int iy = y0; iy <= y1; ++iy)
-            for (int ix = x0; ix <= x1; ++ix) {
-                const glm::vec2 p = centre(ix, iy);
-                const float w0 = edge(b, c, p) * area, w1 = edge(c, a, p) * area, w2 = edge(a, b, p) * area;
-                if (w0 >= 0.0f && w1 >= 0.0f && w2 >= 0.0f) hit[size_t(iy * width + ix)] = 1;
-            }
     }
     float area_px() const { return float(std::count(hit.begin(), hit.end(), 1)) / float(kSub * kSub); }
     // Covered length of the subsample column through pixel x (pixels).
@@ -116,48 +108,6 @@ LineSetStyle plain_style(float width, Cap cap, Join join = Join::Mitre) {
     style.cap = cap;
     style.join = join;
     return style;
-}
-
-// ---- The original builder ----
-
-TEST(LegacyStroke, OutputUnchanged) {
-    // Computed with append_stroke as it was before line-set styles were added.
-    ScreenPath open;
-    open.samples = {sample({10, 10}, 0), sample({20, 10}, 10), sample({25, 18}, 19.433981f),
-                    sample({25, 30}, 31.433981f)};
-    open.samples[1].alpha = 0.5f;
-    open.samples[2].alpha = 0.75f;
-    std::vector<StrokeVertex> out;
-    append_stroke(open, {.rho = 0.05f, .phi = 0.3f, .fold = {0.75f, 2.0f, 0.5f}, .width = 3.0f, .taper_px = 6.0f}, out);
-    const float expected_open[][4] = {  // x, y, u, v of the first quad and the last vertex
-        {10.0f, 10.2250004f, 0.600000024f, 0.0f},       {10.0f, 9.77499962f, 0.600000024f, 1.0f},
-        {19.1686287f, 11.5f, 1.60000002f, 0.0f},        {19.1686287f, 11.5f, 1.60000002f, 0.0f},
-        {10.0f, 9.77499962f, 0.600000024f, 1.0f},       {20.8313713f, 8.5f, 1.60000002f, 1.0f},
-        {23.5f, 18.4301949f, 2.54339814f, 0.0f},        {26.5f, 17.5698051f, 2.54339814f, 1.0f},
-        {25.2250004f, 30.0f, 3.74339819f, 1.0f}};
-    const size_t open_index[] = {0, 1, 2, 3, 4, 5, 8, 11, 17};
-    ASSERT_EQ(out.size(), 18u);
-    for (size_t k = 0; k < std::size(open_index); ++k) {
-        const StrokeVertex& v = out[open_index[k]];
-        EXPECT_FLOAT_EQ(v.pixel.x, expected_open[k][0]) << k;
-        EXPECT_FLOAT_EQ(v.pixel.y, expected_open[k][1]) << k;
-        EXPECT_FLOAT_EQ(v.tex.x, expected_open[k][2]) << k;
-        EXPECT_FLOAT_EQ(v.tex.y, expected_open[k][3]) << k;
-        EXPECT_FLOAT_EQ(v.tex.z, 0.5f);
-    }
-    EXPECT_FLOAT_EQ(out[2].color.w, 0.5f);
-
-    ScreenPath closed = polyline({{0, 0}, {10, 0}, {10, 10}}, 0.0f, true);
-    closed.samples[2].s = 20.0f;
-    out.clear();
-    append_stroke(closed, {.rho = 0.1f, .fold = {}, .width = 2.0f}, out);
-    ASSERT_EQ(out.size(), 18u);
-    EXPECT_FLOAT_EQ(out[0].pixel.x, 1.84775901f);
-    EXPECT_FLOAT_EQ(out[0].pixel.y, 0.765366912f);
-    EXPECT_FLOAT_EQ(out[8].pixel.x, 9.23463345f);
-    EXPECT_FLOAT_EQ(out[8].pixel.y, 8.15224075f);
-    EXPECT_FLOAT_EQ(out[17].pixel.x, -1.84775901f);
-    EXPECT_FLOAT_EQ(out[17].tex.x, 3.41421366f);
 }
 
 // ---- Chaining options ----
@@ -525,9 +475,12 @@ TEST(Caps, TextureCoordinatesContinuePastTheEnds) {
     std::vector<StrokeVertex> out;
     append_styled_stroke(path, tiling(period, phi), style, period, out);
     float u_min = 1e9f, u_max = -1e9f;
+    // Vertices lie half a pixel outside the outline (the antialiasing margin): v maps the
+    // stroke's 6 px to [0, 1], so it reaches 0.5 ± 0.5·3.5/3 there.
+    const float reach = 3.0f + kCoverageMarginPx;
     for (const StrokeVertex& v : out) {
-        EXPECT_GE(v.tex.y, 0.0f);
-        EXPECT_LE(v.tex.y, 1.0f);
+        EXPECT_GE(v.tex.y, 0.5f - 0.5f * reach / 3.0f - 1e-6f);
+        EXPECT_LE(v.tex.y, 0.5f + 0.5f * reach / 3.0f + 1e-6f);
         // u = (s + ∆)/period + φ where ∆ is the vertex's offset along the path.
         const float s = v.pixel.x - 20.0f + 10.0f;
         EXPECT_NEAR(v.tex.x, s / period + phi, 1e-5f);
@@ -536,8 +489,8 @@ TEST(Caps, TextureCoordinatesContinuePastTheEnds) {
         }
         u_min = std::min(u_min, v.tex.x), u_max = std::max(u_max, v.tex.x);
     }
-    EXPECT_NEAR(u_min, (10.0f - 3.0f) / period + phi, 1e-5f);
-    EXPECT_NEAR(u_max, (50.0f + 3.0f) / period + phi, 1e-5f);
+    EXPECT_NEAR(u_min, (10.0f - reach) / period + phi, 1e-5f);
+    EXPECT_NEAR(u_max, (50.0f + reach) / period + phi, 1e-5f);
 }
 
 TEST(Joins, RoundJoinRoundsTheOuterCorner) {
@@ -589,42 +542,3 @@ TEST(Styles, DegenerateInputsAreSafe) {
 }  // namespace
 }  // namespace lw
 
-namespace lw {
-namespace {
-
-// The renderer draws every styled set, today's SLAM strokes of the per-type shorthand too,
-// through append_styled_stroke: with no modifiers, butt caps, mitre joins and a symmetric
-// taper it is the stroke builder of before, vertex for vertex.
-TEST(StyledStroke, WithoutModifiersIsTheLegacyStroke) {
-    ScreenPath path;
-    for (int i = 0; i <= 40; ++i) {
-        const float a = 0.05f * float(i);
-        ScreenSample q{.pixel = {100.0f + 60.0f * std::cos(a), 80.0f + 40.0f * std::sin(1.3f * a)}, .depth = 1.0f,
-                       .s = 0.0f, .position = {}, .face = 0, .bary = {}, .alpha = 0.5f + 0.01f * float(i)};
-        if (i > 0) q.s = path.samples.back().s + glm::length(q.pixel - path.samples.back().pixel);
-        path.samples.push_back(q);
-    }
-    const StrokeParams params{.rho = 0.01f, .phi = 0.2f, .fold = {0.75f, 2.0f, 0.5f}, .width = 5.0f,
-                              .color = {0.1f, 0.2f, 0.3f}, .taper_px = 12.0f};
-    std::vector<StrokeVertex> legacy, styled;
-    append_stroke(path, params, legacy);
-    LineSetStyle style;
-    style.width = 5.0f;
-    style.color = params.color;
-    style.cap = Cap::Butt;
-    style.taper_in_px = style.taper_out_px = 12.0f;
-    StrokeParams untapered = params;
-    untapered.taper_px = 0.0f;
-    append_styled_stroke(path, untapered, style, 100.0f, styled);
-    ASSERT_EQ(styled.size(), legacy.size());
-    for (size_t i = 0; i < legacy.size(); ++i) {
-        EXPECT_NEAR(styled[i].pixel.x, legacy[i].pixel.x, 1e-4f) << i;
-        EXPECT_NEAR(styled[i].pixel.y, legacy[i].pixel.y, 1e-4f) << i;
-        EXPECT_NEAR(styled[i].tex.x, legacy[i].tex.x, 1e-5f) << i;
-        EXPECT_EQ(styled[i].tex.y, legacy[i].tex.y) << i;
-        EXPECT_NEAR(styled[i].color.a, legacy[i].color.a, 1e-6f) << i;
-    }
-}
-
-}  // namespace
-}  // namespace lw

@@ -2,6 +2,7 @@
 // CPU coverage reference, and two golden images stay stable.
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <set>
 #include <cstdlib>
 #include <filesystem>
@@ -26,11 +27,14 @@ struct RenderedFrame {
     FrameReadback frame;
 };
 
+// One sample per pixel: these tests check exact pixel sets (tests/test_antialiasing.cpp
+// checks multisampling).
 RenderedFrame render(Context& ctx, const fs::path& model, int width, int height, Shading shading = Shading::Toon) {
     SceneDesc desc = scene_for_model(model);
     desc.width = width;
     desc.height = height;
     desc.style.shading = shading;
+    desc.style.samples = 1;
     RenderedFrame r{.scene = load_scene(desc)};
     r.camera = camera_matrices(r.scene.camera, float(width) / float(height), r.scene.bounds);
     FrameRenderer renderer(ctx, uint32_t(width), uint32_t(height));
@@ -111,11 +115,17 @@ TEST_F(RenderTest, ShadingModesDiffer) {
     std::set<uint8_t> reds;
     for (size_t i = 0; i < unlit.pixels.size(); i += 4) reds.insert(unlit.pixels[i]);
     EXPECT_LE(reds.size(), 2u);
-    // Toon has exactly three bands of the base colour plus the background.
-    std::set<uint8_t> toon_reds;
-    for (size_t i = 0; i < toon.pixels.size(); i += 4) toon_reds.insert(toon.pixels[i]);
-    EXPECT_LE(toon_reds.size(), 4u);
-    EXPECT_GE(toon_reds.size(), 3u);
+    // Toon has three bands of the base colour plus the background; only the one-pixel ramps
+    // between bands (their antialiasing) hold other values.
+    std::map<uint8_t, size_t> toon_reds;
+    for (size_t i = 0; i < toon.pixels.size(); i += 4) ++toon_reds[toon.pixels[i]];
+    std::vector<size_t> counts;
+    for (const auto& [red, count] : toon_reds) counts.push_back(count);
+    std::sort(counts.rbegin(), counts.rend());
+    ASSERT_GE(counts.size(), 4u);
+    const size_t on_bands = counts[0] + counts[1] + counts[2] + counts[3];
+    EXPECT_GE(double(on_bands), 0.9 * double(toon.pixels.size() / 4)) << "bands and background";  // measured 0.96 (160×120)
+    EXPECT_GT(toon_reds.size(), 4u) << "band edges ramp";
 }
 
 // On CPU devices the frame extracts lines on the host (ComputeSite); the device path — the

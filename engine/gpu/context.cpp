@@ -262,6 +262,11 @@ Context::Context(const ContextDesc& desc) : compute_site_(desc.compute_site) {
         physical_device_ = devices[static_cast<size_t>(chosen)];
         info_ = infos[static_cast<size_t>(chosen)];
         vkGetPhysicalDeviceProperties(physical_device_, &properties_);
+        VkPhysicalDeviceDepthStencilResolveProperties resolve{
+            .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DEPTH_STENCIL_RESOLVE_PROPERTIES};
+        VkPhysicalDeviceProperties2 properties2{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, .pNext = &resolve};
+        vkGetPhysicalDeviceProperties2(physical_device_, &properties2);
+        depth_resolve_modes_ = resolve.supportedDepthResolveModes;
         vkGetPhysicalDeviceMemoryProperties(physical_device_, &memory_properties_);
 
         queue_family_ = static_cast<uint32_t>(find_queue_family(physical_device_));

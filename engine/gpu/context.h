@@ -110,6 +110,8 @@ public:
     double timestamp_period_ns() const { return properties_.limits.timestampPeriod; }
     bool has_timestamps() const { return timestamp_valid_bits_ > 0; }
     bool has_push_descriptors() const { return has_push_descriptors_; }
+    // How a multisampled depth attachment may be resolved (Vulkan 1.2: SAMPLE_ZERO at least).
+    VkResolveModeFlags depth_resolve_modes() const { return depth_resolve_modes_; }
 
     // A submitted command buffer and its fence: wait() blocks until the device is done
     // (the destructor waits too, so nothing in flight is ever freed).
@@ -160,6 +162,7 @@ private:
     uint32_t timestamp_valid_bits_ = 0;
     bool has_push_descriptors_ = false;
     bool has_debug_utils_ = false;
+    VkResolveModeFlags depth_resolve_modes_ = 0;
     DeviceInfo info_;
     std::optional<ComputeSite> compute_site_;
     VkPhysicalDeviceProperties properties_{};

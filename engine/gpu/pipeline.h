@@ -73,6 +73,7 @@ struct GraphicsPipelineDesc {
     uint32_t push_constant_size = 0;
     const char* name = nullptr;
     bool per_instance = false;  // the vertex binding advances per instance, not per vertex
+    VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;  // of the attachments it draws into
 };
 
 // A pipeline for dynamic rendering; viewport and scissor are dynamic state.

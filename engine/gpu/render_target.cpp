@@ -1,15 +1,39 @@
 #include "gpu/render_target.h"
 
 #include <cstring>
+#include <string>
 #include <utility>
 
 #include "core/error.h"
 
 namespace lw {
 
-RenderTarget::RenderTarget(const Context& ctx, uint32_t w, uint32_t h, VkFormat color_format)
+namespace {
+// 0 for counts other than 1, 4 and 8 (the choices offered).
+VkSampleCountFlagBits sample_count_bit_of(uint32_t n) {
+    return n == 1 ? VK_SAMPLE_COUNT_1_BIT : n == 4 ? VK_SAMPLE_COUNT_4_BIT : n == 8 ? VK_SAMPLE_COUNT_8_BIT
+                                                                                    : VkSampleCountFlagBits(0);
+}
+}  // namespace
+
+VkSampleCountFlagBits sample_count_bit(const Context& ctx, uint32_t samples) {
+    const VkSampleCountFlags supported = ctx.properties().limits.framebufferColorSampleCounts &
+                                         ctx.properties().limits.framebufferDepthSampleCounts;
+    const VkSampleCountFlagBits bit = sample_count_bit_of(samples);
+    if (bit != 0 && (supported & bit)) return bit;
+    std::string list;
+    for (const uint32_t n : {1u, 4u, 8u})
+        if (supported & sample_count_bit_of(n)) list += (list.empty() ? "" : " or ") + std::to_string(n);
+    throw Error("samples " + std::to_string(samples) + ": " +
+                (bit == 0 ? std::string("expected 1, 4 or 8")
+                          : "the device " + std::string(ctx.properties().deviceName) + " renders " + list +
+                                " samples per pixel (scene key \"samples\", --samples)"));
+}
+
+RenderTarget::RenderTarget(const Context& ctx, uint32_t w, uint32_t h, VkFormat color_format, uint32_t sample_count)
     : width(w),
       height(h),
+      samples(sample_count),
       color(ctx, {.width = w, .height = h, .format = color_format,
                   .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
                            VK_IMAGE_USAGE_TRANSFER_DST_BIT,  // cleared by transfer when lines-only
@@ -17,7 +41,17 @@ RenderTarget::RenderTarget(const Context& ctx, uint32_t w, uint32_t h, VkFormat 
       depth(ctx, {.width = w, .height = h, .format = VK_FORMAT_D32_SFLOAT,
                   .usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
                            VK_IMAGE_USAGE_SAMPLED_BIT,
-                  .name = "depth target"}) {}
+                  .name = "depth target"}) {
+    const VkSampleCountFlagBits bit = sample_count_bit(ctx, samples);
+    if (samples == 1) return;
+    // Transient: only the resolved images are ever read.
+    msaa_color = Image(ctx, {.width = w, .height = h, .format = color_format,
+                             .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT,
+                             .name = "multisampled color", .samples = bit});
+    msaa_depth = Image(ctx, {.width = w, .height = h, .format = VK_FORMAT_D32_SFLOAT,
+                             .usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT,
+                             .name = "multisampled depth", .samples = bit});
+}
 
 void RenderTarget::color_to_attachment(VkCommandBuffer cmd, VkImageLayout from) const {
     record_image_barrier(cmd, color,

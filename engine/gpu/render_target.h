@@ -13,13 +13,23 @@
 
 namespace lw {
 
+// The Vulkan sample-count bit of `samples` (1, 4 or 8) if the device renders colour and
+// depth at that count; an error listing the counts it does support otherwise.
+[[nodiscard]] VkSampleCountFlagBits sample_count_bit(const Context& ctx, uint32_t samples);
+
 struct RenderTarget {
     // `color_format`: R8G8B8A8_UNORM (what PNGs get), or B8G8R8A8_UNORM for a viewer whose
     // swapchain has that format (the frame then reaches it by a copy instead of a blit).
-    RenderTarget(const Context& ctx, uint32_t width, uint32_t height, VkFormat color_format = VK_FORMAT_R8G8B8A8_UNORM);
+    // `samples` > 1: the surface pass draws into multisampled twins of the colour and depth
+    // images and resolves them into `color` and `depth` (MSAA); every other pass draws into
+    // the single-sample images (strokes carry their own coverage).
+    RenderTarget(const Context& ctx, uint32_t width, uint32_t height, VkFormat color_format = VK_FORMAT_R8G8B8A8_UNORM,
+                 uint32_t samples = 1);
     uint32_t width, height;
+    uint32_t samples = 1;
     Image color;  // color_format
     Image depth;  // D32_SFLOAT, cleared to 1
+    Image msaa_color, msaa_depth;  // samples > 1 only: the surface pass's attachments
 
     // Colour from `from` (UNDEFINED discards, TRANSFER_SRC keeps) to COLOR_ATTACHMENT_OPTIMAL.
     void color_to_attachment(VkCommandBuffer cmd, VkImageLayout from) const;

@@ -86,6 +86,7 @@ struct ImageDesc {
     VkFormat format = VK_FORMAT_R8G8B8A8_UNORM;
     VkImageUsageFlags usage = 0;
     const char* name = nullptr;
+    VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;  // > 1: a multisampled attachment (2D)
 };
 
 // A 2D (or 3D, when depth > 1), single-mip image in Device memory with a view of its whole

@@ -70,13 +70,21 @@ void FrameRenderer::clear_slam(size_t set) {
 void FrameRenderer::resize(uint32_t width, uint32_t height) {
     if (width == target_.width && height == target_.height) return;
     vkDeviceWaitIdle(ctx_->device());  // nothing in flight may still use the old target
-    target_ = RenderTarget(*ctx_, width, height, target_.color.format());
+    target_ = RenderTarget(*ctx_, width, height, target_.color.format(), target_.samples);
     depth_readback_ = Buffer(*ctx_, {.size = VkDeviceSize(width) * height * 4, .usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                                      .purpose = MemoryPurpose::Readback, .name = "depth readback"});
     color_readback_ = Buffer(*ctx_, {.size = VkDeviceSize(width) * height * 4, .usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                                      .purpose = MemoryPurpose::Readback, .name = "color readback"});
     for (SetState& state : sets_) state.tracker.reset();
     if (layers_) layers_ = std::make_unique<LayerPass>(*ctx_, width, height, layer_styles_);
+}
+
+void FrameRenderer::set_samples(uint32_t samples) {
+    if (samples == target_.samples) return;
+    static_cast<void>(sample_count_bit(*ctx_, samples));  // the error, before anything changes
+    vkDeviceWaitIdle(ctx_->device());
+    target_ = RenderTarget(*ctx_, target_.width, target_.height, target_.color.format(), samples);
+    surface_pass_ = SurfacePass(*ctx_, target_.color.format(), samples);
 }
 
 void FrameRenderer::set_layers(std::vector<LayerStyle> styles) {
@@ -111,6 +119,10 @@ Frame FrameRenderer::render(const CameraMatrices& camera, const glm::vec3& eye, 
                             const LinesDesc& lines, const FrameOutputs& outputs, const CoherenceParams* coherence,
                             std::vector<LayerFrame>* layers) {
     if (!mesh_ && !layers_) throw Error("FrameRenderer: no mesh and no layers set");
+    // Multisampling applies to a shaded surface; a scene without one (lines over the
+    // background) takes one sample. Frames only tracked (outputs.draw off) take the scene's
+    // count all the same: their depth, and so their lines, must be the drawn frames'.
+    set_samples(surface.draw_surface && mesh_ ? surface.samples : 1);
     const bool draw_lines = lines.enabled && line_mesh_.has_value();
     const std::vector<LineSetDesc> sets = effective_line_sets(lines);
     const LineParams extraction = extraction_params(lines, sets);

@@ -116,6 +116,10 @@ public:
     // again; the coherence tracker starts afresh (its splat buffer has the old size).
     void resize(uint32_t width, uint32_t height);
 
+    // The surface pass's samples per pixel (1, 4 or 8; SurfaceStyle::samples sets it per
+    // frame): recreates the target and the pass when it changes.
+    void set_samples(uint32_t samples);
+
     // The target the last frame was drawn into; after render() its colour image holds the
     // final frame in TRANSFER_SRC_OPTIMAL (a viewer blits it to the screen).
     const RenderTarget& target() const { return target_; }

@@ -46,7 +46,7 @@ std::vector<LayerResult> LayerPass::prepare(std::vector<LayerFrame>& frames, boo
         layer.fill.clear();
         layer.strokes.clear();
         for (const glm::vec2& p : frame.fill)
-            layer.fill.push_back({p, glm::vec3(0.0f, 0.5f, 1.0f), glm::vec4(layer.style.fill_color, 1.0f)});
+            layer.fill.push_back({p, glm::vec3(0.0f, 0.5f, 1.0f), glm::vec4(layer.style.fill_color, 1.0f), kInteriorEdge});
         if (layer.tracker) {
             CoherenceParams params = layer.style.coherence;
             if (!coherent) params.policy = ParamPolicy::Arclength;

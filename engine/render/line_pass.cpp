@@ -5,16 +5,12 @@
 
 #include "lines_draw_frag.h"
 #include "lines_draw_vert.h"
+#include "stroke/stroke_geometry.h"
+#include "stroke/stroke_pass.h"
 
 namespace lw {
 
 namespace {
-
-struct LineVertex {
-    glm::vec2 pixel;
-    glm::vec4 color;
-    glm::vec2 arc;  // arc length, dashed flag
-};
 
 struct LineDrawPush {
     glm::vec2 viewport;
@@ -48,40 +44,31 @@ std::vector<size_t> simplify(const ScreenPath& path, float tolerance = 0.25f) {
     return kept;
 }
 
-// Two triangles per segment of each run, extended by half the width at both ends (square
-// caps) so that neighbouring quads cover the joint.
-std::vector<LineVertex> build_quads(const std::vector<ScreenPath>& paths, const LineDrawStyle& style) {
-    std::vector<LineVertex> vertices;
+// The stroke builder's triangles for each run, of the type's width (thinner and fainter for
+// hidden runs drawn faint or dashed), with round joins and square caps: antialiased like every
+// stroke (stroke_geometry.h). u is the arc length in pixels (ρ = 1, φ = 0) for the dashes, and
+// the level coordinate w, which a flat line does not need, says whether the run is dashed.
+std::vector<StrokeVertex> build_triangles(const std::vector<ScreenPath>& paths, const LineDrawStyle& style) {
+    std::vector<StrokeVertex> vertices;
     for (const ScreenPath& path : paths) {
         const float faint = path.visible || style.hidden != HiddenLines::Faint ? 1.0f : 0.25f;
-        const float dashed = !path.visible && style.hidden == HiddenLines::Dashed ? 1.0f : 0.0f;
+        const bool dashed = !path.visible && style.hidden == HiddenLines::Dashed;
         const float width = path.visible || style.hidden == HiddenLines::None ? style.width
                                                                               : std::max(1.0f, 0.6f * style.width);
         // Draw through the samples that matter: a sample is skipped while the polyline from
         // the last kept one stays within 0.25 px of a straight line and the alpha barely
         // changes. Visibility samples every δ px are far denser than straight runs need,
         // and lavapipe pays per triangle.
-        const std::vector<size_t> kept = simplify(path);
-        const size_t n = kept.size();
-        const size_t segments = path.closed ? n : n - 1;
-        for (size_t i = 0; i < segments; ++i) {
-            const ScreenSample& a = path.samples[kept[i]];
-            const ScreenSample& b = path.samples[kept[(i + 1) % n]];
-            glm::vec2 dir = b.pixel - a.pixel;
-            const float length = glm::length(dir);
-            if (length < 1e-6f) continue;
-            dir /= length;
-            const glm::vec2 side = glm::vec2(-dir.y, dir.x) * (0.5f * width);
-            const glm::vec2 cap = dir * (0.5f * width);
-            const float alpha_a = style.alpha * (style.fade ? a.alpha : 1.0f) * faint;
-            const float alpha_b = style.alpha * (style.fade ? b.alpha : 1.0f) * faint;
-            const glm::vec4 ca(style.color, alpha_a), cb(style.color, alpha_b);
-            const LineVertex v0{a.pixel - cap + side, ca, {a.s, dashed}};
-            const LineVertex v1{a.pixel - cap - side, ca, {a.s, dashed}};
-            const LineVertex v2{b.pixel + cap + side, cb, {a.s + length, dashed}};
-            const LineVertex v3{b.pixel + cap - side, cb, {a.s + length, dashed}};
-            vertices.insert(vertices.end(), {v0, v1, v2, v2, v1, v3});
-        }
+        ScreenPath kept = path;
+        kept.samples.clear();
+        for (const size_t i : simplify(path)) kept.samples.push_back(path.samples[i]);
+        const size_t n = kept.samples.size();
+        StrokeAttributes attributes{.width = std::vector<float>(n, width), .alpha = {},
+                                    .color = std::vector<glm::vec3>(n, style.color)};
+        for (const ScreenSample& q : kept.samples)
+            attributes.alpha.push_back(style.alpha * (style.fade ? q.alpha : 1.0f) * faint);
+        const StrokeParams params{.rho = 1.0f, .phi = 0.0f, .fold = {.level = 1.0f, .scale = 1.0f, .w = dashed ? 1.0f : 0.0f}};
+        append_stroke(kept, params, attributes, Cap::Square, Join::Round, vertices);
     }
     return vertices;
 }
@@ -91,12 +78,8 @@ std::vector<LineVertex> build_quads(const std::vector<ScreenPath>& paths, const 
 LinePass::LinePass(const Context& ctx, VkFormat color_format)
     : pipeline_(ctx, {.vertex_spirv = LW_SPIRV(lines_draw_vert_spv),
                       .fragment_spirv = LW_SPIRV(lines_draw_frag_spv),
-                      .vertex_stride = sizeof(LineVertex),
-                      .attributes = {{.location = 0, .format = VK_FORMAT_R32G32_SFLOAT, .offset = 0},
-                                     {.location = 1, .format = VK_FORMAT_R32G32B32A32_SFLOAT,
-                                      .offset = offsetof(LineVertex, color)},
-                                     {.location = 2, .format = VK_FORMAT_R32G32_SFLOAT,
-                                      .offset = offsetof(LineVertex, arc)}},
+                      .vertex_stride = sizeof(StrokeVertex),
+                      .attributes = stroke_vertex_attributes(),
                       .color_format = color_format,
                       .depth_format = VK_FORMAT_UNDEFINED,
                       .depth_test = false,
@@ -107,9 +90,9 @@ LinePass::LinePass(const Context& ctx, VkFormat color_format)
 
 Buffer LinePass::record(const Context& ctx, VkCommandBuffer cmd, RenderTarget& target,
                         const std::vector<ScreenPath>& paths, const LineDrawStyle& style) const {
-    const std::vector<LineVertex> vertices = build_quads(paths, style);
+    const std::vector<StrokeVertex> vertices = build_triangles(paths, style);
     if (vertices.empty()) return Buffer();
-    Buffer buffer = upload_vertices(ctx, std::as_bytes(std::span(vertices)), "line quads");
+    Buffer buffer = upload_vertices(ctx, std::as_bytes(std::span(vertices)), "line triangles");
     target.begin_overlay(cmd);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.get());
     const LineDrawPush push{{float(target.width), float(target.height)}, 8.0f, 0.0f};

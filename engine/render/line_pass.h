@@ -3,13 +3,14 @@
 // Input:  the `ScreenPath`s of one plain line set (render/line_sets.h) and its draw style:
 //         colour, alpha, width, whether the fade alpha applies, and the look of hidden runs
 //         (dashed or faint, the scene's "hidden"; plain for sets that select hidden lines).
-// Output: the paths composited (alpha blended, fade alpha per sample) into the render
-//         target's colour image, which is left in TRANSFER_SRC_OPTIMAL as the surface pass
-//         leaves it.
+// Output: the paths composited (alpha blended, fade alpha per sample, antialiased) into the
+//         render target's colour image, which is left in TRANSFER_SRC_OPTIMAL as the surface
+//         pass leaves it.
 //
-// This is the plain line look of the feature-lines stage: quads of the type's width along
-// each run with square caps so that consecutive quads overlap at joints. Textured strokes
-// (SLAMs, tapering, mitred joins) replace it in engine/stroke.
+// This is the plain line look of the feature-lines stage: flat strokes of the type's width
+// along each run, round joins and square caps, built by the stroke builder
+// (stroke/stroke_geometry.h) so that they are antialiased like every stroke. Textured strokes
+// (SLAMs, modifiers) are drawn by engine/stroke's pass.
 #pragma once
 
 #include <array>

@@ -2,6 +2,8 @@
 
 #include <cstring>
 
+#include "core/error.h"
+
 #include "surface_frag.h"
 #include "surface_vert.h"
 
@@ -36,8 +38,11 @@ GpuMesh upload_mesh(const Context& ctx, const TriangleMesh& mesh) {
         .index_count = static_cast<uint32_t>(mesh.indices.size())};
 }
 
-SurfacePass::SurfacePass(const Context& ctx, VkFormat color_format)
-    : pipeline_(ctx, {.vertex_spirv = LW_SPIRV(surface_vert_spv),
+SurfacePass::SurfacePass(const Context& ctx, VkFormat color_format, uint32_t samples)
+    : samples_(samples),
+      depth_resolve_(ctx.depth_resolve_modes() & VK_RESOLVE_MODE_MAX_BIT ? VK_RESOLVE_MODE_MAX_BIT
+                                                                         : VK_RESOLVE_MODE_SAMPLE_ZERO_BIT),
+      pipeline_(ctx, {.vertex_spirv = LW_SPIRV(surface_vert_spv),
                       .fragment_spirv = LW_SPIRV(surface_frag_spv),
                       .vertex_stride = sizeof(Vertex),
                       .attributes = {{.location = 0, .format = VK_FORMAT_R32G32B32_SFLOAT, .offset = 0},
@@ -46,7 +51,8 @@ SurfacePass::SurfacePass(const Context& ctx, VkFormat color_format)
                       .cull_mode = VK_CULL_MODE_NONE,  // glTF parts may be single-sided or open
                       .color_format = color_format,
                       .push_constant_size = sizeof(SurfacePush),
-                      .name = "surface"}),
+                      .name = "surface",
+                      .samples = sample_count_bit(ctx, samples)}),
       depth_only_(ctx, {.vertex_spirv = LW_SPIRV(surface_vert_spv),
                         .vertex_stride = sizeof(Vertex),
                         .attributes = {{.location = 0, .format = VK_FORMAT_R32G32B32_SFLOAT, .offset = 0},
@@ -55,7 +61,8 @@ SurfacePass::SurfacePass(const Context& ctx, VkFormat color_format)
                         .cull_mode = VK_CULL_MODE_NONE,
                         .color_format = VK_FORMAT_UNDEFINED,
                         .push_constant_size = sizeof(SurfacePush),
-                        .name = "surface depth only"}) {}
+                        .name = "surface depth only",
+                        .samples = sample_count_bit(ctx, samples)}) {}
 
 glm::vec3 key_light_direction(const CameraMatrices& camera) {
     const glm::vec3 view_space = glm::normalize(glm::vec3(-0.4f, 0.6f, 0.7f));
@@ -64,6 +71,28 @@ glm::vec3 key_light_direction(const CameraMatrices& camera) {
 
 namespace {
 
+// Depth tests and writes, and (multisampled) the resolve, which writes the single-sample
+// image in the colour-attachment-output stage with colour-attachment access (Vulkan spec,
+// "Multisample resolve operations": for depth attachments too).
+constexpr VkPipelineStageFlags2 kDepthStages = VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT |
+                                               VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT |
+                                               VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT;
+constexpr VkAccessFlags2 kDepthAccess = VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
+                                        VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT |
+                                        VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT;
+
+// An attachment image from whatever it held (discarded) to attachment use.
+void to_attachment(VkCommandBuffer cmd, const Image& image, VkImageLayout layout, VkPipelineStageFlags2 stages,
+                   VkAccessFlags2 access) {
+    record_image_barrier(cmd, image,
+                         {.old_layout = VK_IMAGE_LAYOUT_UNDEFINED,
+                          .new_layout = layout,
+                          .src_stage = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                          .src_access = VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT,
+                          .dst_stage = stages,
+                          .dst_access = access});
+}
+
 // Depth: cleared to 1 (far), written by the mesh, then left readable by copies.
 void begin_depth(VkCommandBuffer cmd, RenderTarget& target) {
     record_image_barrier(cmd, target.depth,
@@ -71,18 +100,16 @@ void begin_depth(VkCommandBuffer cmd, RenderTarget& target) {
                           .new_layout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
                           .src_stage = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
                           .src_access = VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT,
-                          .dst_stage = VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT |
-                                       VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
-                          .dst_access = VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
-                                        VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT});
+                          .dst_stage = kDepthStages,
+                          .dst_access = kDepthAccess});
 }
 
 void end_depth(VkCommandBuffer cmd, RenderTarget& target) {
     record_image_barrier(cmd, target.depth,
                          {.old_layout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
                           .new_layout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                          .src_stage = VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
-                          .src_access = VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+                          .src_stage = kDepthStages,
+                          .src_access = kDepthAccess,
                           .dst_stage = VK_PIPELINE_STAGE_2_COPY_BIT,
                           .dst_access = VK_ACCESS_2_TRANSFER_READ_BIT});
 }
@@ -118,8 +145,18 @@ VkClearColorValue clear_color(const SurfaceStyle& style) {
 
 }  // namespace
 
+void SurfacePass::resolve_depth(VkCommandBuffer cmd, RenderTarget& target, VkRenderingAttachmentInfo& depth) const {
+    to_attachment(cmd, target.msaa_depth, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, kDepthStages, kDepthAccess);
+    depth.resolveMode = depth_resolve_;
+    depth.resolveImageView = target.depth.view();
+    depth.resolveImageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+    depth.imageView = target.msaa_depth.view();
+    depth.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+}
+
 void SurfacePass::record_depth_only(VkCommandBuffer cmd, RenderTarget& target, const GpuMesh* mesh,
                                     const CameraMatrices& camera, const SurfaceStyle& style) const {
+    if (target.samples != samples_) throw Error("surface pass: the target's sample count differs from the pipeline's");
     // The colour is the background: a clear, no fragment shading (much cheaper on lavapipe).
     record_image_barrier(cmd, target.color,
                          {.old_layout = VK_IMAGE_LAYOUT_UNDEFINED,
@@ -140,6 +177,9 @@ void SurfacePass::record_depth_only(VkCommandBuffer cmd, RenderTarget& target, c
                           .dst_access = VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT});
     begin_depth(cmd, target);
     VkRenderingAttachmentInfo depth = depth_attachment(target);
+    // Multisampled like the shaded surface, so that a frame's depth (and so its lines) is the
+    // same whether it is drawn or only tracked (a state-only farm run).
+    if (samples_ > 1) resolve_depth(cmd, target, depth);
     VkRenderingInfo rendering{.sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
                               .renderArea = {{0, 0}, {target.width, target.height}},
                               .layerCount = 1,
@@ -152,6 +192,7 @@ void SurfacePass::record_depth_only(VkCommandBuffer cmd, RenderTarget& target, c
 
 void SurfacePass::record(VkCommandBuffer cmd, RenderTarget& target, const GpuMesh& mesh,
                          const CameraMatrices& camera, const glm::vec3& eye, const SurfaceStyle& style) const {
+    if (target.samples != samples_) throw Error("surface pass: the target's sample count differs from the pipeline's");
     if (!style.draw_surface) {
         record_depth_only(cmd, target, &mesh, camera, style);
         return;
@@ -165,6 +206,18 @@ void SurfacePass::record(VkCommandBuffer cmd, RenderTarget& target, const GpuMes
                                     .storeOp = VK_ATTACHMENT_STORE_OP_STORE};
     color.clearValue.color = clear_color(style);
     VkRenderingAttachmentInfo depth = depth_attachment(target);
+    if (samples_ > 1) {
+        // Draw into the multisampled images, resolve into the target's (kept: STORE on the
+        // resolve targets is implied, the samples themselves are discarded).
+        to_attachment(cmd, target.msaa_color, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                      VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
+        color.resolveMode = VK_RESOLVE_MODE_AVERAGE_BIT;
+        color.resolveImageView = target.color.view();
+        color.resolveImageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+        color.imageView = target.msaa_color.view();
+        color.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+        resolve_depth(cmd, target, depth);
+    }
     VkRenderingInfo rendering{.sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
                               .renderArea = {{0, 0}, {target.width, target.height}},
                               .layerCount = 1,

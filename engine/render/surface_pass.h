@@ -6,6 +6,13 @@
 //         frame_renderer.h for reading them back). The depth image is also what the
 //         visibility stage tests line samples against.
 //
+// Antialiasing: with a multisampled target (RenderTarget::samples 4 or 8) the surface is
+// drawn into the target's multisampled images and resolved at the end of the pass: colour
+// by the average of the samples, depth by their maximum where the device can (the farthest
+// surface in the pixel, as the visibility test's 3×3 neighbourhood takes it), else sample 0.
+// Depth-only frames are multisampled too, so that a frame's depth does not depend on
+// whether it is drawn.
+//
 // Headless is the only platform here: render into VkImages with dynamic rendering, copy
 // to a host-visible buffer, read back (STYLE.md: lavapipe has no headless surface).
 #pragma once
@@ -37,7 +44,9 @@ struct GpuMesh {
 
 class SurfacePass {
 public:
-    explicit SurfacePass(const Context& ctx, VkFormat color_format = VK_FORMAT_R8G8B8A8_UNORM);
+    // `samples`: the sample count of the targets it draws into (1, 4 or 8).
+    explicit SurfacePass(const Context& ctx, VkFormat color_format = VK_FORMAT_R8G8B8A8_UNORM, uint32_t samples = 1);
+    uint32_t samples() const { return samples_; }
 
     // Records the pass: clears, draws, and leaves both images in TRANSFER_SRC_OPTIMAL. With
     // `style.draw_surface` off, the colour is only cleared and the mesh drawn depth-only.
@@ -52,7 +61,11 @@ public:
 private:
     void record_depth_only(VkCommandBuffer cmd, RenderTarget& target, const GpuMesh* mesh,
                            const CameraMatrices& camera, const SurfaceStyle& style) const;
+    // Points `depth` at the multisampled depth, resolved into the target's (samples > 1).
+    void resolve_depth(VkCommandBuffer cmd, RenderTarget& target, VkRenderingAttachmentInfo& depth) const;
 
+    uint32_t samples_ = 1;
+    VkResolveModeFlagBits depth_resolve_ = VK_RESOLVE_MODE_SAMPLE_ZERO_BIT;
     GraphicsPipeline pipeline_;
     GraphicsPipeline depth_only_;  // lines over the background: depth, no shading
 };

@@ -335,6 +335,12 @@ SceneDesc parse_scene_json(const std::string& text, const std::filesystem::path&
         else
             scene.style.background = r.color("background");
     }
+    if (r.has("samples")) {
+        const json& n = r.at("samples");
+        if (!n.is_number_integer() || (n.get<long long>() != 1 && n.get<long long>() != 4 && n.get<long long>() != 8))
+            r.fail_key("samples", "expected 1, 4 or 8 (samples per pixel of the shaded surface)");
+        scene.style.samples = static_cast<uint32_t>(n.get<long long>());
+    }
     if (r.has("lines")) scene.lines = read_lines(r, source);
     if (r.has("line_sets")) {
         if (!scene.lines.enabled) r.fail_key("line_sets", "cannot be combined with \"lines\": false");

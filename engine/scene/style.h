@@ -25,6 +25,9 @@ struct SurfaceStyle {
     // that colour), and PNGs are written with straight alpha.
     bool transparent = false;
     bool draw_surface = true;  // false: depth only, the surface takes the background colour
+    // Samples per pixel of the surface pass (MSAA: 1, 4 or 8; scene key "samples"). Lines and
+    // strokes are antialiased by their own coverage whatever this is.
+    uint32_t samples = 4;
 };
 
 }  // namespace lw

@@ -7,13 +7,6 @@ namespace lw {
 
 namespace {
 
-glm::vec2 unit_normal(glm::vec2 a, glm::vec2 b) {
-    const glm::vec2 d = b - a;
-    const float len = glm::length(d);
-    return len > 0.0f ? glm::vec2(-d.y, d.x) / len : glm::vec2(0.0f);
-}
-
-
 // ---- The line-set builder (caps, joins, per-sample attributes) ----
 
 constexpr float kPi = 3.14159265358979f;
@@ -37,7 +30,8 @@ float cross(glm::vec2 a, glm::vec2 b) { return a.x * b.y - a.y * b.x; }
 struct Node {
     glm::vec2 p;
     float s;
-    float half;  // half width, pixels
+    float half;      // half width of the outline, pixels (at least 1e-3, so that it has directions)
+    float ink_half;  // the sample's half width, ≥ 0: a zero-width stroke is drawn without ink
     glm::vec4 color;
     glm::vec2 d_in{0.0f}, d_out{0.0f};  // unit directions of the adjacent segments; 0 at open ends
 };
@@ -47,8 +41,8 @@ std::vector<Node> make_nodes(const ScreenPath& path, const StrokeAttributes& att
     for (size_t i = 0; i < path.samples.size(); ++i) {
         const ScreenSample& q = path.samples[i];
         if (!nodes.empty() && glm::length(q.pixel - nodes.back().p) <= kMergePx) continue;
-        nodes.push_back({q.pixel, q.s, 0.5f * std::max(attributes.width[i], 0.0f),
-                         glm::vec4(attributes.color[i], attributes.alpha[i])});
+        const float half = 0.5f * std::max(attributes.width[i], 0.0f);
+        nodes.push_back({q.pixel, q.s, std::max(half, 1e-3f), half, glm::vec4(attributes.color[i], attributes.alpha[i])});
     }
     if (path.closed)
         while (nodes.size() > 1 && glm::length(nodes.back().p - nodes.front().p) <= kMergePx) nodes.pop_back();
@@ -68,19 +62,34 @@ float polyline_length(const std::vector<Node>& nodes, bool closed) {
     return length;
 }
 
+// How far a node's triangles reach out, over its outline: the coverage margin past it.
+float outset_scale(const Node& nd) { return (nd.half + kCoverageMarginPx) / nd.half; }
+
 struct Emitter {
     const StrokeParams& params;
     std::vector<StrokeVertex>& out;
 
-    StrokeVertex at(glm::vec2 pixel, float s, float v, glm::vec4 color) const {
+    // The vertex drawn at `drawn_offset` from the node, with arc length s, v and coverage
+    // coordinates `edge` (xyz; w is the node's half width) where it is drawn.
+    StrokeVertex drawn(const Node& nd, glm::vec2 drawn_offset, float s, float v, glm::vec3 edge) const {
         const float u = params.fold.scale * (params.rho * s + params.phi);
-        return {pixel, glm::vec3(u, v, params.fold.w), color};
+        return {nd.p + drawn_offset, glm::vec3(u, v, params.fold.w), nd.color, glm::vec4(edge, nd.ink_half)};
+    }
+    // The vertex of the outline point at `offset` from the node (v and the coverage
+    // coordinates `edge_xy`, `edge_z` given there), pushed out from the node by the margin.
+    StrokeVertex at(const Node& nd, glm::vec2 offset, float s, float v, glm::vec2 edge_xy, float edge_z = 0.0f) const {
+        const float k = outset_scale(nd);
+        return drawn(nd, offset * k, s, 0.5f + (v - 0.5f) * k, glm::vec3(edge_xy * k, edge_z * k));
     }
     // Off an end along tangent t: s continues along t, v follows the offset across (0.5 at
-    // the centre, 0 at +half·perp(t), 1 at −half·perp(t)).
-    StrokeVertex off_end(const Node& nd, glm::vec2 t, glm::vec2 offset) const {
-        const float across = nd.half > 0.0f ? glm::dot(offset, perp(t)) / nd.half : 0.0f;
-        return at(nd.p + offset, nd.s + glm::dot(offset, t), std::clamp(0.5f - 0.5f * across, 0.0f, 1.0f), nd.color);
+    // the centre, 0 at +half·perp(t), 1 at −half·perp(t)). Round ends measure coverage by
+    // the distance to the end point, square ones across and along separately.
+    StrokeVertex off_end(const Node& nd, glm::vec2 t, glm::vec2 offset, Cap cap) const {
+        const float across = glm::dot(offset, perp(t)), along = glm::dot(offset, t);
+        const float v = std::clamp(0.5f - 0.5f * across / nd.half, 0.0f, 1.0f);
+        const float s = nd.s + along * outset_scale(nd);
+        if (cap == Cap::Round) return at(nd, offset, s, v, {across, along});
+        return at(nd, offset, s, v, {across, 0.0f}, std::abs(along));
     }
     void triangle(const StrokeVertex& a, const StrokeVertex& b, const StrokeVertex& c) {
         out.insert(out.end(), {a, b, c});
@@ -136,9 +145,11 @@ void append_round_join(Emitter& em, const Node& nd, const JoinEnds& e) {
     const float v_outer = plus ? 0.0f : 1.0f;
     const glm::vec2 from = plus ? e.in_plus : e.in_minus, to = plus ? e.out_plus : e.out_minus;
     const glm::vec2 inner = plus ? e.in_minus : e.in_plus;
-    auto rim = [&](glm::vec2 offset) { return em.at(nd.p + offset, nd.s, v_outer, nd.color); };
-    const StrokeVertex centre = em.at(nd.p, nd.s, 0.5f, nd.color);
-    const StrokeVertex in = em.at(nd.p + inner, nd.s, 1.0f - v_outer, nd.color);
+    // Coverage by the distance to the node: the rim is the outline; the inner mitre point,
+    // on the outline too, mirrors `from` so that the gap triangles ramp like the body.
+    auto rim = [&](glm::vec2 offset) { return em.at(nd, offset, nd.s, v_outer, offset); };
+    const StrokeVertex centre = em.at(nd, glm::vec2(0.0f), nd.s, 0.5f, glm::vec2(0.0f));
+    const StrokeVertex in = em.at(nd, inner, nd.s, 1.0f - v_outer, -from);
     // The centre lies inside (inner, from, to): two triangles close the gap to the fan.
     em.triangle(in, rim(from), centre);
     em.triangle(in, centre, rim(to));
@@ -153,8 +164,20 @@ void append_round_join(Emitter& em, const Node& nd, const JoinEnds& e) {
 // (the cap lies behind it) and +1 at the end.
 void append_cap(Emitter& em, const Node& nd, glm::vec2 t, float ahead, Cap cap) {
     const glm::vec2 side = perp(t) * nd.half, out = t * (ahead * nd.half);
-    auto rim = [&](glm::vec2 offset) { return em.off_end(nd, t, offset); };
-    if (cap == Cap::Square) {
+    auto rim = [&](glm::vec2 offset) { return em.off_end(nd, t, offset, cap); };
+    if (cap == Cap::Butt) {
+        // The end's fringe: the margin past the end, z the half width plus the distance past
+        // it (so that the shader's share before the end, at half − z, is a box filter's).
+        const float k = outset_scale(nd), z0 = nd.half;
+        const glm::vec2 p = side * k, q = t * (ahead * kCoverageMarginPx);
+        const float s_out = nd.s + ahead * kCoverageMarginPx, v0 = 0.5f - 0.5f * k, v1 = 0.5f + 0.5f * k;
+        const float x = nd.half * k;
+        const StrokeVertex a = em.drawn(nd, p, nd.s, v0, {x, 0.0f, z0}), b = em.drawn(nd, -p, nd.s, v1, {-x, 0.0f, z0});
+        const StrokeVertex c = em.drawn(nd, p + q, s_out, v0, {x, 0.0f, z0 + kCoverageMarginPx});
+        const StrokeVertex d = em.drawn(nd, -p + q, s_out, v1, {-x, 0.0f, z0 + kCoverageMarginPx});
+        em.triangle(a, b, c);
+        em.triangle(c, b, d);
+    } else if (cap == Cap::Square) {
         const StrokeVertex a = rim(side), b = rim(-side), c = rim(side + out), d = rim(-side + out);
         em.triangle(a, b, c);
         em.triangle(c, b, d);
@@ -170,18 +193,25 @@ void append_dot(Emitter& em, const std::vector<Node>& nodes, Cap cap) {
     Node centre = nodes[nodes.size() / 2];
     centre.p = 0.5f * (nodes.front().p + nodes.back().p);
     centre.s = 0.5f * (nodes.front().s + nodes.back().s);
-    for (const Node& nd : nodes) centre.half = std::max(centre.half, nd.half);
+    for (const Node& nd : nodes) {
+        centre.half = std::max(centre.half, nd.half);
+        centre.ink_half = std::max(centre.ink_half, nd.ink_half);
+    }
     const glm::vec2 chord = unit_or_zero(nodes.back().p - nodes.front().p);
     const glm::vec2 t = glm::length(chord) > 0.0f ? chord : glm::vec2(1.0f, 0.0f);
     const glm::vec2 side = perp(t) * centre.half;
-    auto rim = [&](glm::vec2 offset) { return em.off_end(centre, t, offset); };
+    auto rim = [&](glm::vec2 offset) { return em.off_end(centre, t, offset, cap); };
     if (cap == Cap::Round) {
         em.fan(rim(glm::vec2(0.0f)), side, side, 2.0f * kPi, 2 * kHalfDiscSegments, rim);
     } else if (cap == Cap::Square) {
+        // Two halves, so that the distance along runs from 0 on the middle to each end.
         const glm::vec2 out = t * centre.half;
-        const StrokeVertex a = rim(side - out), b = rim(-side - out), c = rim(side + out), d = rim(-side + out);
+        const StrokeVertex a = rim(side - out), b = rim(-side - out), c = rim(side), d = rim(-side);
+        const StrokeVertex e = rim(side + out), f = rim(-side + out);
         em.triangle(a, b, c);
         em.triangle(c, b, d);
+        em.triangle(c, d, e);
+        em.triangle(e, d, f);
     }
 }
 
@@ -193,65 +223,18 @@ void append_body(Emitter& em, const std::vector<Node>& nodes, const std::vector<
         const Node &a = nodes[i], &b = nodes[j];
         // The closing segment continues the arclength past the last sample (as above).
         const float sb = j == 0 ? a.s + glm::length(b.p - a.p) : b.s;
-        const StrokeVertex a_plus = em.at(a.p + ends[i].out_plus, a.s, 0.0f, a.color);
-        const StrokeVertex a_minus = em.at(a.p + ends[i].out_minus, a.s, 1.0f, a.color);
-        const StrokeVertex b_plus = em.at(b.p + ends[j].in_plus, sb, 0.0f, b.color);
-        const StrokeVertex b_minus = em.at(b.p + ends[j].in_minus, sb, 1.0f, b.color);
+        // Coverage by the signed distance across (the outline is half a width from the centre
+        // line, on either side), which interpolates through 0 on the centre line.
+        const StrokeVertex a_plus = em.at(a, ends[i].out_plus, a.s, 0.0f, {a.half, 0.0f});
+        const StrokeVertex a_minus = em.at(a, ends[i].out_minus, a.s, 1.0f, {-a.half, 0.0f});
+        const StrokeVertex b_plus = em.at(b, ends[j].in_plus, sb, 0.0f, {b.half, 0.0f});
+        const StrokeVertex b_minus = em.at(b, ends[j].in_minus, sb, 1.0f, {-b.half, 0.0f});
         em.triangle(a_plus, a_minus, b_plus);
         em.triangle(b_plus, a_minus, b_minus);
     }
 }
 
 }  // namespace
-
-void append_stroke(const ScreenPath& path, const StrokeParams& params, std::vector<StrokeVertex>& out) {
-    const auto& s = path.samples;
-    const size_t n = s.size();
-    if (n < 2) return;
-    const bool closed = path.closed;
-    const float length = s.back().s - s.front().s;
-
-    // Offset of each sample: the mitre of its two segments (one at open ends).
-    std::vector<glm::vec2> left(n), right(n);
-    for (size_t i = 0; i < n; ++i) {
-        const bool has_prev = i > 0 || closed, has_next = i + 1 < n || closed;
-        const glm::vec2 n_prev = has_prev ? unit_normal(s[(i + n - 1) % n].pixel, s[i].pixel) : glm::vec2(0.0f);
-        const glm::vec2 n_next = has_next ? unit_normal(s[i].pixel, s[(i + 1) % n].pixel) : glm::vec2(0.0f);
-        glm::vec2 miter = n_prev + n_next;
-        const float miter_len = glm::length(miter);
-        glm::vec2 offset(0.0f);
-        float half = 0.5f * params.width * s[i].width;
-        if (params.taper_px > 0.0f && !closed) {
-            const float from_end = std::min(s[i].s - s.front().s, s.back().s - s[i].s);
-            half *= std::clamp(from_end / std::min(params.taper_px, 0.5f * std::max(length, 1e-3f)), 0.15f, 1.0f);
-        }
-        if (miter_len > 1e-6f) {
-            miter /= miter_len;
-            const glm::vec2 reference = glm::length(n_next) > 0.0f ? n_next : n_prev;
-            const float cos_half = std::max(glm::dot(miter, reference), 1e-3f);
-            offset = miter * std::min(half / cos_half, params.mitre_limit * half);
-        }
-        left[i] = s[i].pixel + offset;
-        right[i] = s[i].pixel - offset;
-    }
-
-    auto vertex = [&](size_t i, bool is_left, float u) {
-        return StrokeVertex{is_left ? left[i] : right[i], glm::vec3(u, is_left ? 0.0f : 1.0f, params.fold.w),
-                            glm::vec4(params.color, s[i].alpha)};
-    };
-    const size_t segments = closed ? n : n - 1;
-    for (size_t i = 0; i < segments; ++i) {
-        const size_t j = (i + 1) % n;
-        const float ui = params.fold.scale * (params.rho * s[i].s + params.phi);
-        // The closing segment continues the arclength past the last sample.
-        const float sj = j == 0 ? s[i].s + glm::length(s[0].pixel - s[i].pixel) : s[j].s;
-        const float uj = params.fold.scale * (params.rho * sj + params.phi);
-        const StrokeVertex a = vertex(i, true, ui), b = vertex(i, false, ui);
-        const StrokeVertex c = vertex(j, true, uj), d = vertex(j, false, uj);
-        out.insert(out.end(), {a, b, c, c, b, d});
-    }
-}
-
 
 void append_stroke(const ScreenPath& path, const StrokeParams& params, const StrokeAttributes& attributes,
                    Cap cap, Join join, std::vector<StrokeVertex>& out) {

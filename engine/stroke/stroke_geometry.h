@@ -1,34 +1,34 @@
 // engine/stroke/stroke_geometry.h — textured quads along screen paths.
 //
-// Two builders share the vertex format and the texture-coordinate convention:
+// Input: a `ScreenPath`, its parameterization T(s) = ρs + φ with its SLAM fold (`StrokeParams`:
+// ρ, φ, the fold and `mitre_limit`), per-sample width, colour and alpha (`StrokeAttributes`,
+// made by stroke/modifiers.h), a cap and a join. Output: a triangle list of `StrokeVertex`.
+// Caps on open ends are Freestyle's butt / square / round, joins are mitred (clamped to
+// `mitre_limit` half widths) or round. A path of one sample, or whose samples span at most
+// one pixel of arc length, is a dot: a full disc (round caps) or a square (square caps) of
+// the widest sample's width at its midpoint; nothing with butt caps unless it has some
+// length. Consecutive samples closer than 1e-4 px are merged (the first one's attributes win)
+// so that zero-length segments never define a direction.
 //
-// `append_stroke(path, params, out)` — the original one. The renderer no longer draws with it
-// (line sets and layers take the one below); it stays as the reference the line-set builder
-// is checked against with butt caps and mitre joins (tests/test_modifiers.cpp).
-// Input: a visible `ScreenPath` (≥ 2 samples, else nothing), its
-// parameterization T(s) = ρs + φ with its SLAM fold, and a width, colour and taper for the
-// whole path. Output: a triangle list of `StrokeVertex`: two vertices per sample (left and
-// right of the path), consecutive samples joined without cracks. Joins are mitred along the
-// bisector of the two segments, the mitre clamped to `mitre_limit` half widths so that sharp
-// turns do not spike; ends taper linearly over `taper_px` (never below 15 % of the width).
-//
-// `append_stroke(path, params, attributes, cap, join, out)` — the line-set one. Width,
-// colour and alpha come per sample from `attributes` (stroke/modifiers.h makes them); of
-// `params` it reads ρ, φ, the fold and `mitre_limit` only. It adds caps on open ends
-// (Freestyle's butt / square / round) and round joins. A path of one sample, or whose
-// samples span at most one pixel of arc length, is a dot: a full disc (round caps) or a
-// square (square caps) of the widest sample's width at its midpoint; nothing with butt caps
-// unless it has some length. Consecutive samples closer than 1e-4 px are merged (the first
-// one's attributes win) so that zero-length segments never define a direction.
+// Antialiasing (analytic coverage over one pixel of falloff): the triangles are the stroke's
+// outline pushed out by `kCoverageMarginPx`, and each vertex carries `edge`, its position
+// relative to the centre line, from which the fragment shader computes the share of the pixel
+// inside the outline (`stroke_coverage` below, mirrored in shaders/stroke_coverage.glsl). It
+// is ½ on the outline, and the ink integrated across a stroke is its width, thinner than a
+// pixel too. Butt ends get a fringe past the end with the coverage a box filter gives there
+// (full up to the end: the ink ends ⅛ px late).
 //
 // Texture coordinates: u = fold.scale · T(s) along (periods of the sampled level), v across
 // (0 on the side of the normal (−dy, dx) of the direction d, 1 on the other, 0.5 on the
-// centre line), w = the level coordinate 2l − 1. On caps u continues T past the end with s
-// extended along the end tangent, and v follows the offset across; round-join fans keep the
-// sample's u and go from 0.5 at the centre to the outer side's v, so a SLAM texture stays
-// continuous across every seam between body, join and cap.
+// centre line; outside [0, 1] in the half-pixel margin, where the shader clamps it), w = the
+// level coordinate 2l − 1. On caps u continues T past the end with s extended along the end
+// tangent, and v follows the offset across; round-join fans keep the sample's u and go from
+// 0.5 at the centre to the outer side's v, so a SLAM texture stays continuous across every
+// seam between body, join and cap.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -46,7 +46,56 @@ struct StrokeVertex {
     glm::vec2 pixel;
     glm::vec3 tex;    // u, v, w
     glm::vec4 color;  // rgb, alpha (the path's fade alpha)
+    // Coverage coordinates, pixels: xy the offset from the centre line (signed across it on
+    // the body; from the node on round ends and joins, whose coverage is radial), z the
+    // distance past a square end, or past a butt end plus the half width (0 elsewhere), w the
+    // half width of the stroke there.
+    glm::vec4 edge{0.0f};
 };
+
+// How far the triangles reach past the outline: half the diagonal of a pixel, the farthest a
+// pixel's square reaches from its centre in any direction (so every pixel that a box filter
+// gives some ink is drawn).
+constexpr float kCoverageMarginPx = 0.7072f;
+
+// Coverage coordinates of a point deep inside a shape (coverage 1): the fills of vector layers,
+// whose triangles are drawn by the stroke pass without an outline to ramp across (their edges
+// are not antialiased; an outline stroke over them is).
+constexpr glm::vec4 kInteriorEdge{0.0f, 0.0f, 0.0f, 1e6f};
+
+// P(u·n ≤ t) for u uniform on a pixel's square [−½, ½]² and n a unit vector: the share of the
+// pixel on the inner side of a straight edge at signed distance t from its centre (box
+// filter). u·n is the sum of two uniform variables, of widths a ≥ b (|n|'s components): its
+// density is a trapezoid, linear in t where it is flat (the whole ramp when n is axis-aligned)
+// and quadratic over its slopes. The shaders compute the same (shaders/stroke_coverage.glsl).
+inline float square_cdf(float t, glm::vec2 n) {
+    const float a = std::max(std::abs(n.x), std::abs(n.y)), b = std::min(std::abs(n.x), std::abs(n.y));
+    const float flat = 0.5f * (a - b), reach = 0.5f * (a + b), at = std::abs(t);
+    const float upper = at <= flat ? 0.5f + at / a : at < reach ? 1.0f - (reach - at) * (reach - at) / (2.0f * a * b) : 1.0f;
+    return t >= 0.0f ? upper : 1.0f - upper;
+}
+
+// A pixel's coverage by a stroke, from the coverage coordinates `edge` interpolated at its
+// centre and their screen gradients (d/dx and d/dy of edge.xy, and of edge.z): the box-filter
+// share of the pixel inside the stroke's outline, taken as straight lines at the distance and
+// direction the coordinates give. Across (or radially round ends and joins) it is exact for
+// any width, thinner than a pixel too; past square and butt ends it multiplies in the share
+// before the end (an approximation only at the corners). Mirrored in stroke_coverage.glsl.
+inline float stroke_coverage(const glm::vec4& edge, glm::vec2 dxy_dx, glm::vec2 dxy_dy, glm::vec2 dz) {
+    const glm::vec2 e(edge.x, edge.y);
+    const float r = glm::length(e), half = std::max(edge.w, 0.0f);
+    // The gradient of r = |edge.xy|; on the centre line, that of |edge.x|.
+    glm::vec2 grad = r > 1e-4f ? glm::vec2(glm::dot(e, dxy_dx), glm::dot(e, dxy_dy)) / r : glm::vec2(dxy_dx.x, dxy_dy.x);
+    float g = glm::length(grad);
+    const glm::vec2 n = g > 1e-6f ? grad / g : glm::vec2(1.0f, 0.0f);
+    if (!(g > 1e-6f)) g = 1.0f;
+    float coverage = std::clamp(square_cdf((half - r) / g, n) - square_cdf((-half - r) / g, n), 0.0f, 1.0f);
+    if (edge.z > 0.0f) {
+        const float gz = glm::length(dz);
+        coverage *= gz > 1e-6f ? square_cdf((half - edge.z) / gz, dz / gz) : 1.0f;
+    }
+    return coverage;
+}
 
 struct StrokeParams {
     float rho = 0.0f, phi = 0.0f;
@@ -64,8 +113,6 @@ struct StrokeAttributes {
     std::vector<float> alpha;      // [0, 1]
     std::vector<glm::vec3> color;  // linear rgb
 };
-
-void append_stroke(const ScreenPath& path, const StrokeParams& params, std::vector<StrokeVertex>& out);
 
 void append_stroke(const ScreenPath& path, const StrokeParams& params, const StrokeAttributes& attributes,
                    Cap cap, Join join, std::vector<StrokeVertex>& out);

@@ -15,15 +15,18 @@ struct StrokePush {  // mirrors shaders/stroke.vert
 };
 }  // namespace
 
+std::vector<VertexAttribute> stroke_vertex_attributes() {
+    return {{.location = 0, .format = VK_FORMAT_R32G32_SFLOAT, .offset = 0},
+            {.location = 1, .format = VK_FORMAT_R32G32B32_SFLOAT, .offset = offsetof(StrokeVertex, tex)},
+            {.location = 2, .format = VK_FORMAT_R32G32B32A32_SFLOAT, .offset = offsetof(StrokeVertex, color)},
+            {.location = 3, .format = VK_FORMAT_R32G32B32A32_SFLOAT, .offset = offsetof(StrokeVertex, edge)}};
+}
+
 StrokePass::StrokePass(const Context& ctx, VkFormat color_format)
     : pipeline_(ctx, {.vertex_spirv = LW_SPIRV(stroke_vert_spv),
                       .fragment_spirv = LW_SPIRV(stroke_frag_spv),
                       .vertex_stride = sizeof(StrokeVertex),
-                      .attributes = {{.location = 0, .format = VK_FORMAT_R32G32_SFLOAT, .offset = 0},
-                                     {.location = 1, .format = VK_FORMAT_R32G32B32_SFLOAT,
-                                      .offset = offsetof(StrokeVertex, tex)},
-                                     {.location = 2, .format = VK_FORMAT_R32G32B32A32_SFLOAT,
-                                      .offset = offsetof(StrokeVertex, color)}},
+                      .attributes = stroke_vertex_attributes(),
                       .color_format = color_format,
                       .depth_format = VK_FORMAT_UNDEFINED,
                       .depth_test = false,

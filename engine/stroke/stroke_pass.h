@@ -15,6 +15,10 @@
 
 namespace lw {
 
+// The vertex layout of `StrokeVertex` (locations 0–3: pixel, tex, color, edge), shared by
+// every pass that draws the builder's triangles.
+[[nodiscard]] std::vector<VertexAttribute> stroke_vertex_attributes();
+
 class StrokePass {
 public:
     explicit StrokePass(const Context& ctx, VkFormat color_format = VK_FORMAT_R8G8B8A8_UNORM);

@@ -19,6 +19,10 @@ void add_scene_options(CLI::App* cmd, SceneOptions& o, bool offline) {
                     "Background: a colour (#rrggbb, #rgb, rgb(r, g, b), a basic name) or \"transparent\": alpha 0 "
                     "where nothing is drawn, PNGs with straight alpha and EXRs premultiplied, to composite the "
                     "lines over a plate (default: the scene's \"background\", else white)");
+    cmd->add_option("--samples", o.samples,
+                    "Samples per pixel of the shaded surface: 1, 4 or 8 (MSAA; lines and strokes are antialiased "
+                    "by their own coverage whatever this is; default: the scene's \"samples\", else 4)")
+        ->check(CLI::IsMember({1, 4, 8}));
     cmd->add_option("--slam", o.slam, "Draw silhouettes and suggestive contours as strokes textured by this SLAM (.exr)");
     cmd->add_option("--stroke-width", o.stroke_width, "Width of SLAM strokes in pixels (default 6)")
         ->check(CLI::PositiveNumber);
@@ -67,6 +71,7 @@ SceneDesc scene_from_options(const SceneOptions& o) {
         }
         desc.style.transparent = false;
     }
+    if (o.samples > 0) desc.style.samples = static_cast<uint32_t>(o.samples);
     if (!o.slam.empty()) use_slam_strokes(desc.lines, o.slam, o.stroke_width);
     return desc;
 }

@@ -20,6 +20,7 @@ struct SceneOptions {
     std::string compute = "auto";
     std::string size;
     std::string background;  // a colour, "transparent", or empty: the scene's
+    int samples = 0;         // 1, 4 or 8; 0: the scene's
     std::string slam;
     float stroke_width = 6.0f;
     std::string param;
