@@ -2,8 +2,7 @@
 #extension GL_GOOGLE_include_directive : require
 // Stroke pass, fragment stage: ink from the SLAM, a 3D texture with trilinear filtering
 // (Bénard et al. 2010, §4.3), times the pixel's coverage (antialiasing, stroke_coverage.glsl).
-// u repeats along the stroke, v spans its width (clamped in the half-pixel margin outside
-// it), and the level coordinate w = 2l − 1 ∈ [0, 1] maps onto the texel centres of the level
+// u repeats along the stroke, v spans its width (clamped in the coverage margin outside it), and the level coordinate w = 2l − 1 ∈ [0, 1] maps onto the texel centres of the level
 // stack.
 #include "stroke_coverage.glsl"
 

@@ -23,12 +23,10 @@ float stroke_coverage(vec4 edge, vec2 dxy_dx, vec2 dxy_dy, vec2 dz) {
     float g = length(grad);
     vec2 n = g > 1e-6 ? grad / g : vec2(1.0, 0.0);
     if (!(g > 1e-6)) g = 1.0;
-    float coverage = clamp(square_cdf((half_width - r) / g, n) - square_cdf((-half_width - r) / g, n), 0.0, 1.0);
-    if (edge.z > 0.0) {
-        float gz = length(dz);
-        coverage *= gz > 1e-6 ? square_cdf((half_width - edge.z) / gz, dz / gz) : 1.0;
-    }
-    return coverage;
+    float gz = length(dz);
+    float across = clamp(square_cdf((half_width - r) / g, n) - square_cdf((-half_width - r) / g, n), 0.0, 1.0);
+    float before_end = gz > 1e-6 ? square_cdf((half_width - edge.z) / gz, dz / gz) : (edge.z <= half_width ? 1.0 : 0.0);
+    return across * before_end;
 }
 
 // The same for the fragment being shaded.

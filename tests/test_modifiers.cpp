@@ -475,8 +475,8 @@ TEST(Caps, TextureCoordinatesContinuePastTheEnds) {
     std::vector<StrokeVertex> out;
     append_styled_stroke(path, tiling(period, phi), style, period, out);
     float u_min = 1e9f, u_max = -1e9f;
-    // Vertices lie half a pixel outside the outline (the antialiasing margin): v maps the
-    // stroke's 6 px to [0, 1], so it reaches 0.5 ± 0.5·3.5/3 there.
+    // Vertices lie kCoverageMarginPx outside the outline (the antialiasing margin): v maps
+    // the stroke's 6 px to [0, 1], so it reaches 0.5 ± 0.5·(3 + margin)/3 there.
     const float reach = 3.0f + kCoverageMarginPx;
     for (const StrokeVertex& v : out) {
         EXPECT_GE(v.tex.y, 0.5f - 0.5f * reach / 3.0f - 1e-6f);

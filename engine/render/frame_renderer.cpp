@@ -122,7 +122,7 @@ Frame FrameRenderer::render(const CameraMatrices& camera, const glm::vec3& eye, 
     // Multisampling applies to a shaded surface; a scene without one (lines over the
     // background) takes one sample. Frames only tracked (outputs.draw off) take the scene's
     // count all the same: their depth, and so their lines, must be the drawn frames'.
-    set_samples(surface.draw_surface && mesh_ ? surface.samples : 1);
+    set_samples(surface.draw_surface && mesh_ ? surface_samples(surface) : 1);
     const bool draw_lines = lines.enabled && line_mesh_.has_value();
     const std::vector<LineSetDesc> sets = effective_line_sets(lines);
     const LineParams extraction = extraction_params(lines, sets);

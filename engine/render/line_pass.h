@@ -1,4 +1,4 @@
-// engine/render/line_pass.h — draws screen-space paths as flat quads over the colour target.
+// engine/render/line_pass.h — draws screen-space paths as flat strokes over the colour target.
 //
 // Input:  the `ScreenPath`s of one plain line set (render/line_sets.h) and its draw style:
 //         colour, alpha, width, whether the fade alpha applies, and the look of hidden runs
@@ -8,7 +8,7 @@
 //         pass leaves it.
 //
 // This is the plain line look of the feature-lines stage: flat strokes of the type's width
-// along each run, round joins and square caps, built by the stroke builder
+// along each run, mitre joins and square caps, built by the stroke builder
 // (stroke/stroke_geometry.h) so that they are antialiased like every stroke. Textured strokes
 // (SLAMs, modifiers) are drawn by engine/stroke's pass.
 #pragma once
@@ -36,7 +36,7 @@ class LinePass {
 public:
     explicit LinePass(const Context& ctx, VkFormat color_format = VK_FORMAT_R8G8B8A8_UNORM);
 
-    // Builds the quads of `paths` and records their drawing; the returned buffer must live
+    // Builds the triangles of `paths` and records their drawing; the returned buffer must live
     // until the command buffer has completed.
     [[nodiscard]] Buffer record(const Context& ctx, VkCommandBuffer cmd, RenderTarget& target,
                                 const std::vector<ScreenPath>& paths, const LineDrawStyle& style) const;

@@ -45,7 +45,7 @@ struct FaceGroups {
 [[nodiscard]] std::vector<ScreenPath> select_line_set(const std::vector<ScreenPath>& runs, const LineSetDesc& set,
                                                       const FaceGroups* groups);
 
-// Sets that are drawn as plain flat quads (the line pass): no SLAM, dashes, tapers,
+// Sets that are drawn as plain flat strokes (the line pass): no SLAM, dashes, tapers,
 // modifiers, or caps and joins other than the line pass's own.
 [[nodiscard]] bool is_plain_line_set(const LineSetStyle& style);
 

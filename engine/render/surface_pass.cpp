@@ -95,13 +95,7 @@ void to_attachment(VkCommandBuffer cmd, const Image& image, VkImageLayout layout
 
 // Depth: cleared to 1 (far), written by the mesh, then left readable by copies.
 void begin_depth(VkCommandBuffer cmd, RenderTarget& target) {
-    record_image_barrier(cmd, target.depth,
-                         {.old_layout = VK_IMAGE_LAYOUT_UNDEFINED,
-                          .new_layout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
-                          .src_stage = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
-                          .src_access = VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT,
-                          .dst_stage = kDepthStages,
-                          .dst_access = kDepthAccess});
+    to_attachment(cmd, target.depth, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, kDepthStages, kDepthAccess);
 }
 
 void end_depth(VkCommandBuffer cmd, RenderTarget& target) {
@@ -192,11 +186,11 @@ void SurfacePass::record_depth_only(VkCommandBuffer cmd, RenderTarget& target, c
 
 void SurfacePass::record(VkCommandBuffer cmd, RenderTarget& target, const GpuMesh& mesh,
                          const CameraMatrices& camera, const glm::vec3& eye, const SurfaceStyle& style) const {
-    if (target.samples != samples_) throw Error("surface pass: the target's sample count differs from the pipeline's");
     if (!style.draw_surface) {
         record_depth_only(cmd, target, &mesh, camera, style);
         return;
     }
+    if (target.samples != samples_) throw Error("surface pass: the target's sample count differs from the pipeline's");
     target.color_to_attachment(cmd, VK_IMAGE_LAYOUT_UNDEFINED);
     begin_depth(cmd, target);
     VkRenderingAttachmentInfo color{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,

@@ -145,7 +145,7 @@ std::string scene_json(const SceneDesc& desc, const ViewCamera& camera, const st
                                                         : "toon";
     root["color"] = vec3(style.color);
     root["background"] = style.transparent ? json("transparent") : vec3(style.background);
-    root["samples"] = style.samples;
+    if (style.samples != 0) root["samples"] = style.samples;
 
     const LinesDesc& lines = desc.lines;
     if (!lines.enabled) {

@@ -18,7 +18,7 @@ glm::vec2 unit_or_zero(glm::vec2 d) {
     const float len = glm::length(d);
     return len > 0.0f ? d / len : glm::vec2(0.0f);
 }
-// The normal convention of unit_normal: (−dy, dx), the v = 0 side.
+// The normal of a direction d: (−dy, dx), the v = 0 side.
 glm::vec2 perp(glm::vec2 d) { return {-d.y, d.x}; }
 glm::vec2 rotate(glm::vec2 v, float angle) {
     const float c = std::cos(angle), s = std::sin(angle);
@@ -46,6 +46,17 @@ std::vector<Node> make_nodes(const ScreenPath& path, const StrokeAttributes& att
     }
     if (path.closed)
         while (nodes.size() > 1 && glm::length(nodes.back().p - nodes.front().p) <= kMergePx) nodes.pop_back();
+    // An open path of one segment gets a middle node: its end segments carry the distance
+    // past their end for the coverage (append_body), one end each.
+    if (!path.closed && nodes.size() == 2) {
+        Node middle = nodes[0];
+        middle.p = 0.5f * (nodes[0].p + nodes[1].p);
+        middle.s = 0.5f * (nodes[0].s + nodes[1].s);
+        middle.half = 0.5f * (nodes[0].half + nodes[1].half);
+        middle.ink_half = 0.5f * (nodes[0].ink_half + nodes[1].ink_half);
+        middle.color = 0.5f * (nodes[0].color + nodes[1].color);
+        nodes.insert(nodes.begin() + 1, middle);
+    }
     const size_t n = nodes.size();
     const size_t segments = n < 2 ? 0 : path.closed ? n : n - 1;
     for (size_t i = 0; i < segments; ++i) {
@@ -77,9 +88,11 @@ struct Emitter {
     }
     // The vertex of the outline point at `offset` from the node (v and the coverage
     // coordinates `edge_xy`, `edge_z` given there), pushed out from the node by the margin.
-    StrokeVertex at(const Node& nd, glm::vec2 offset, float s, float v, glm::vec2 edge_xy, float edge_z = 0.0f) const {
+    StrokeVertex at(const Node& nd, glm::vec2 offset, float s, float v, glm::vec2 edge_xy,
+                    float edge_z = kNoEndZ) const {
         const float k = outset_scale(nd);
-        return drawn(nd, offset * k, s, 0.5f + (v - 0.5f) * k, glm::vec3(edge_xy * k, edge_z * k));
+        return drawn(nd, offset * k, s, 0.5f + (v - 0.5f) * k,
+                     glm::vec3(edge_xy * k, edge_z == kNoEndZ ? kNoEndZ : edge_z * k));
     }
     // Off an end along tangent t: s continues along t, v follows the offset across (0.5 at
     // the centre, 0 at +half·perp(t), 1 at −half·perp(t)). Round ends measure coverage by
@@ -93,6 +106,11 @@ struct Emitter {
     }
     void triangle(const StrokeVertex& a, const StrokeVertex& b, const StrokeVertex& c) {
         out.insert(out.end(), {a, b, c});
+    }
+    // The quad a b d c (a, b across one end; c, d across the other, c on a's side).
+    void quad(const StrokeVertex& a, const StrokeVertex& b, const StrokeVertex& c, const StrokeVertex& d) {
+        triangle(a, b, c);
+        triangle(c, b, d);
     }
     // Triangles around `centre` whose rim turns from offset `from` by `sweep` radians and ends
     // exactly at `to` (so that it meets the neighbouring quads' vertices bit for bit).
@@ -115,7 +133,8 @@ struct JoinEnds {
     int outer = 0;  // +1: a round-join fan on the v = 0 side, −1: on the v = 1 side, 0: none
 };
 
-// Today's mitre (append_stroke above), except that a full reversal keeps the half width.
+// The mitre of a node's two segments along their bisector, clamped to `limit` half widths; a
+// full reversal keeps the half width.
 glm::vec2 mitre_offset(const Node& nd, float limit) {
     const glm::vec2 n_in = perp(nd.d_in), n_out = perp(nd.d_out);
     const glm::vec2 reference = glm::length(n_out) > 0.0f ? n_out : n_in;
@@ -145,14 +164,17 @@ void append_round_join(Emitter& em, const Node& nd, const JoinEnds& e) {
     const float v_outer = plus ? 0.0f : 1.0f;
     const glm::vec2 from = plus ? e.in_plus : e.in_minus, to = plus ? e.out_plus : e.out_minus;
     const glm::vec2 inner = plus ? e.in_minus : e.in_plus;
-    // Coverage by the distance to the node: the rim is the outline; the inner mitre point,
-    // on the outline too, mirrors `from` so that the gap triangles ramp like the body.
+    // Coverage by the distance to the node: the rim is the outline. The inner mitre point, on
+    // the outline too, mirrors `from` in the triangle that meets the incoming quad and `to` in
+    // the one that meets the outgoing quad, so that each ramps like the body it borders (and
+    // both agree on their shared side, the bisector).
     auto rim = [&](glm::vec2 offset) { return em.at(nd, offset, nd.s, v_outer, offset); };
     const StrokeVertex centre = em.at(nd, glm::vec2(0.0f), nd.s, 0.5f, glm::vec2(0.0f));
-    const StrokeVertex in = em.at(nd, inner, nd.s, 1.0f - v_outer, -from);
+    const StrokeVertex in_from = em.at(nd, inner, nd.s, 1.0f - v_outer, -from);
+    const StrokeVertex in_to = em.at(nd, inner, nd.s, 1.0f - v_outer, -to);
     // The centre lies inside (inner, from, to): two triangles close the gap to the fan.
-    em.triangle(in, rim(from), centre);
-    em.triangle(in, centre, rim(to));
+    em.triangle(in_from, rim(from), centre);
+    em.triangle(in_to, centre, rim(to));
     float sweep = std::atan2(cross(from, to), glm::dot(from, to));
     // A U-turn has no shorter side: go round ahead of the incoming direction.
     if (std::abs(sweep) > kPi - 1e-4f) sweep = plus ? -kPi : kPi;
@@ -168,19 +190,17 @@ void append_cap(Emitter& em, const Node& nd, glm::vec2 t, float ahead, Cap cap) 
     if (cap == Cap::Butt) {
         // The end's fringe: the margin past the end, z the half width plus the distance past
         // it (so that the shader's share before the end, at half − z, is a box filter's).
-        const float k = outset_scale(nd), z0 = nd.half;
+        const float k = outset_scale(nd), z0 = nd.ink_half;
         const glm::vec2 p = side * k, q = t * (ahead * kCoverageMarginPx);
         const float s_out = nd.s + ahead * kCoverageMarginPx, v0 = 0.5f - 0.5f * k, v1 = 0.5f + 0.5f * k;
         const float x = nd.half * k;
         const StrokeVertex a = em.drawn(nd, p, nd.s, v0, {x, 0.0f, z0}), b = em.drawn(nd, -p, nd.s, v1, {-x, 0.0f, z0});
         const StrokeVertex c = em.drawn(nd, p + q, s_out, v0, {x, 0.0f, z0 + kCoverageMarginPx});
         const StrokeVertex d = em.drawn(nd, -p + q, s_out, v1, {-x, 0.0f, z0 + kCoverageMarginPx});
-        em.triangle(a, b, c);
-        em.triangle(c, b, d);
+        em.quad(a, b, c, d);
     } else if (cap == Cap::Square) {
         const StrokeVertex a = rim(side), b = rim(-side), c = rim(side + out), d = rim(-side + out);
-        em.triangle(a, b, c);
-        em.triangle(c, b, d);
+        em.quad(a, b, c, d);
     } else if (cap == Cap::Round) {
         // perp(t) turned by +90° is −t: +π sweeps behind the start, −π ahead of the end.
         em.fan(rim(glm::vec2(0.0f)), side, -side, ahead < 0.0f ? kPi : -kPi, kHalfDiscSegments, rim);
@@ -208,29 +228,41 @@ void append_dot(Emitter& em, const std::vector<Node>& nodes, Cap cap) {
         const glm::vec2 out = t * centre.half;
         const StrokeVertex a = rim(side - out), b = rim(-side - out), c = rim(side), d = rim(-side);
         const StrokeVertex e = rim(side + out), f = rim(-side + out);
-        em.triangle(a, b, c);
-        em.triangle(c, b, d);
-        em.triangle(c, d, e);
-        em.triangle(e, d, f);
+        em.quad(a, b, c, d);
+        em.quad(c, d, e, f);
     }
 }
 
-void append_body(Emitter& em, const std::vector<Node>& nodes, const std::vector<JoinEnds>& ends, bool closed) {
+// The end segments of an open path with butt or square caps carry the distance past their
+// end in edge.z (plus the half width for butt ends, as the fringe has it), measured along the
+// end's tangent from where each vertex is drawn: so the pixels just before an end ramp too,
+// as a box filter has them, instead of staying full up to it.
+void mark_end_distance(StrokeVertex& v, const Node& end, glm::vec2 outward, Cap cap) {
+    v.edge.z = glm::dot(v.pixel - end.p, outward) + (cap == Cap::Butt ? end.ink_half : 0.0f);
+}
+
+void append_body(Emitter& em, const std::vector<Node>& nodes, const std::vector<JoinEnds>& ends, bool closed,
+                 Cap cap) {
     const size_t n = nodes.size();
     const size_t segments = closed ? n : n - 1;
+    const bool end_ramps = !closed && cap != Cap::Round && segments >= 2;
     for (size_t i = 0; i < segments; ++i) {
         const size_t j = (i + 1) % n;
         const Node &a = nodes[i], &b = nodes[j];
-        // The closing segment continues the arclength past the last sample (as above).
+        // The closing segment continues the arclength past the last sample.
         const float sb = j == 0 ? a.s + glm::length(b.p - a.p) : b.s;
         // Coverage by the signed distance across (the outline is half a width from the centre
         // line, on either side), which interpolates through 0 on the centre line.
-        const StrokeVertex a_plus = em.at(a, ends[i].out_plus, a.s, 0.0f, {a.half, 0.0f});
-        const StrokeVertex a_minus = em.at(a, ends[i].out_minus, a.s, 1.0f, {-a.half, 0.0f});
-        const StrokeVertex b_plus = em.at(b, ends[j].in_plus, sb, 0.0f, {b.half, 0.0f});
-        const StrokeVertex b_minus = em.at(b, ends[j].in_minus, sb, 1.0f, {-b.half, 0.0f});
-        em.triangle(a_plus, a_minus, b_plus);
-        em.triangle(b_plus, a_minus, b_minus);
+        StrokeVertex a_plus = em.at(a, ends[i].out_plus, a.s, 0.0f, {a.half, 0.0f});
+        StrokeVertex a_minus = em.at(a, ends[i].out_minus, a.s, 1.0f, {-a.half, 0.0f});
+        StrokeVertex b_plus = em.at(b, ends[j].in_plus, sb, 0.0f, {b.half, 0.0f});
+        StrokeVertex b_minus = em.at(b, ends[j].in_minus, sb, 1.0f, {-b.half, 0.0f});
+        if (end_ramps && (i == 0 || i + 1 == segments)) {
+            const Node& end = i == 0 ? nodes.front() : nodes.back();
+            const glm::vec2 outward = i == 0 ? -nodes.front().d_out : nodes.back().d_in;
+            for (StrokeVertex* v : {&a_plus, &a_minus, &b_plus, &b_minus}) mark_end_distance(*v, end, outward, cap);
+        }
+        em.quad(a_plus, a_minus, b_plus, b_minus);
     }
 }
 
@@ -252,7 +284,7 @@ void append_stroke(const ScreenPath& path, const StrokeParams& params, const Str
     std::vector<JoinEnds> ends;
     ends.reserve(nodes.size());
     for (const Node& nd : nodes) ends.push_back(join_ends(nd, join, params.mitre_limit));
-    append_body(em, nodes, ends, path.closed);
+    append_body(em, nodes, ends, path.closed, cap);
     for (size_t i = 0; i < nodes.size(); ++i)
         if (ends[i].outer != 0) append_round_join(em, nodes[i], ends[i]);
     if (path.closed) return;

@@ -1,4 +1,4 @@
-// engine/stroke/stroke_geometry.h — textured quads along screen paths.
+// engine/stroke/stroke_geometry.h — stroke triangles along screen paths.
 //
 // Input: a `ScreenPath`, its parameterization T(s) = ρs + φ with its SLAM fold (`StrokeParams`:
 // ρ, φ, the fold and `mitre_limit`), per-sample width, colour and alpha (`StrokeAttributes`,
@@ -13,14 +13,15 @@
 // Antialiasing (analytic coverage over one pixel of falloff): the triangles are the stroke's
 // outline pushed out by `kCoverageMarginPx`, and each vertex carries `edge`, its position
 // relative to the centre line, from which the fragment shader computes the share of the pixel
-// inside the outline (`stroke_coverage` below, mirrored in shaders/stroke_coverage.glsl). It
-// is ½ on the outline, and the ink integrated across a stroke is its width, thinner than a
-// pixel too. Butt ends get a fringe past the end with the coverage a box filter gives there
-// (full up to the end: the ink ends ⅛ px late).
+// inside the outline (`stroke_coverage` below, mirrored in shaders/stroke_coverage.glsl). On
+// the body it is exact: the ink integrated across a stroke is its width, thinner than a pixel
+// too (and ½ on the outline of strokes at least 1.4 px wide). Butt ends get a fringe past the
+// end, and the end segments of open paths carry the distance to their end, so that ends ramp
+// as well (an open path of one segment is drawn as two, for one end each).
 //
 // Texture coordinates: u = fold.scale · T(s) along (periods of the sampled level), v across
 // (0 on the side of the normal (−dy, dx) of the direction d, 1 on the other, 0.5 on the
-// centre line; outside [0, 1] in the half-pixel margin, where the shader clamps it), w = the
+// centre line; outside [0, 1] in the coverage margin, where the shader clamps it), w = the
 // level coordinate 2l − 1. On caps u continues T past the end with s extended along the end
 // tangent, and v follows the offset across; round-join fans keep the sample's u and go from
 // 0.5 at the centre to the outer side's v, so a SLAM texture stays continuous across every
@@ -42,15 +43,18 @@ namespace lw {
 // The line-set builder draws a path of at most this much arc length (pixels) as a dot.
 constexpr float kDotLengthPx = 1.0f;
 
+constexpr float kNoEndZ = -1e6f;  // StrokeVertex::edge.z far from any end: no share lost to one
+
 struct StrokeVertex {
     glm::vec2 pixel;
     glm::vec3 tex;    // u, v, w
     glm::vec4 color;  // rgb, alpha (the path's fade alpha)
     // Coverage coordinates, pixels: xy the offset from the centre line (signed across it on
-    // the body; from the node on round ends and joins, whose coverage is radial), z the
-    // distance past a square end, or past a butt end plus the half width (0 elsewhere), w the
-    // half width of the stroke there.
-    glm::vec4 edge{0.0f};
+    // the body; from the node on round ends and joins, whose coverage is radial); z near a
+    // square end the signed distance past the end sample (the cap's edge lies at z = w), near
+    // a butt end the half width plus the signed distance past the end (its edge at z = w),
+    // kNoEndZ elsewhere; w the half width of the stroke there.
+    glm::vec4 edge{0.0f, 0.0f, kNoEndZ, 0.0f};
 };
 
 // How far the triangles reach past the outline: half the diagonal of a pixel, the farthest a
@@ -61,7 +65,7 @@ constexpr float kCoverageMarginPx = 0.7072f;
 // Coverage coordinates of a point deep inside a shape (coverage 1): the fills of vector layers,
 // whose triangles are drawn by the stroke pass without an outline to ramp across (their edges
 // are not antialiased; an outline stroke over them is).
-constexpr glm::vec4 kInteriorEdge{0.0f, 0.0f, 0.0f, 1e6f};
+constexpr glm::vec4 kInteriorEdge{0.0f, 0.0f, kNoEndZ, 1e6f};
 
 // P(u·n ≤ t) for u uniform on a pixel's square [−½, ½]² and n a unit vector: the share of the
 // pixel on the inner side of a straight edge at signed distance t from its centre (box
@@ -78,23 +82,23 @@ inline float square_cdf(float t, glm::vec2 n) {
 // A pixel's coverage by a stroke, from the coverage coordinates `edge` interpolated at its
 // centre and their screen gradients (d/dx and d/dy of edge.xy, and of edge.z): the box-filter
 // share of the pixel inside the stroke's outline, taken as straight lines at the distance and
-// direction the coordinates give. Across (or radially round ends and joins) it is exact for
-// any width, thinner than a pixel too; past square and butt ends it multiplies in the share
-// before the end (an approximation only at the corners). Mirrored in stroke_coverage.glsl.
+// direction the coordinates give. Across the body it is exact for any width, thinner than a
+// pixel too. Round ends and joins take their arc for a straight edge, which is close for
+// radii over a pixel (a round dot 1 px wide gets 1.0 px² of ink for π/4). Near square and
+// butt ends it multiplies in the share before the end (exact but at the corners).
+// Mirrored in stroke_coverage.glsl.
 inline float stroke_coverage(const glm::vec4& edge, glm::vec2 dxy_dx, glm::vec2 dxy_dy, glm::vec2 dz) {
     const glm::vec2 e(edge.x, edge.y);
     const float r = glm::length(e), half = std::max(edge.w, 0.0f);
+    const float gz = glm::length(dz);
     // The gradient of r = |edge.xy|; on the centre line, that of |edge.x|.
     glm::vec2 grad = r > 1e-4f ? glm::vec2(glm::dot(e, dxy_dx), glm::dot(e, dxy_dy)) / r : glm::vec2(dxy_dx.x, dxy_dy.x);
     float g = glm::length(grad);
     const glm::vec2 n = g > 1e-6f ? grad / g : glm::vec2(1.0f, 0.0f);
     if (!(g > 1e-6f)) g = 1.0f;
-    float coverage = std::clamp(square_cdf((half - r) / g, n) - square_cdf((-half - r) / g, n), 0.0f, 1.0f);
-    if (edge.z > 0.0f) {
-        const float gz = glm::length(dz);
-        coverage *= gz > 1e-6f ? square_cdf((half - edge.z) / gz, dz / gz) : 1.0f;
-    }
-    return coverage;
+    const float across = std::clamp(square_cdf((half - r) / g, n) - square_cdf((-half - r) / g, n), 0.0f, 1.0f);
+    const float before_end = gz > 1e-6f ? square_cdf((half - edge.z) / gz, dz / gz) : edge.z <= half ? 1.0f : 0.0f;
+    return across * before_end;
 }
 
 struct StrokeParams {

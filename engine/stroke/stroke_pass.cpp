@@ -39,7 +39,7 @@ StrokePass::StrokePass(const Context& ctx, VkFormat color_format)
 Buffer StrokePass::record(const Context& ctx, VkCommandBuffer cmd, const RenderTarget& target,
                           const std::vector<StrokeVertex>& vertices, const SlamTexture& slam) const {
     if (vertices.empty()) return Buffer();
-    Buffer buffer = upload_vertices(ctx, std::as_bytes(std::span(vertices)), "stroke quads");
+    Buffer buffer = upload_vertices(ctx, std::as_bytes(std::span(vertices)), "stroke triangles");
     target.begin_overlay(cmd);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.get());
     pipeline_.push_image(ctx, cmd, 0, slam.view(), slam.sampler());

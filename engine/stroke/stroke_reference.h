@@ -25,13 +25,20 @@ struct EdgeGradients {
 
 // Calls `visit(ix, iy, edge, alpha)` for every point ((ix + ½)/sub, (iy + ½)/sub) of a
 // `sub`×`sub` grid per pixel of a width × height image (sub = 1: the pixel centres) that lies
-// inside the triangle, with the coverage coordinates and alpha interpolated there.
+// inside the triangle, with the coverage coordinates and alpha interpolated there. A point on
+// an edge belongs to the triangle when the edge is a top or left one (Vulkan's tie-breaking
+// rule), so that triangles sharing an edge never both draw a pixel.
 template <class Visit>
 void for_each_point_inside(const StrokeVertex& a, const StrokeVertex& b, const StrokeVertex& c, int width, int height,
                            int sub, Visit&& visit) {
     auto side = [](glm::vec2 p, glm::vec2 q, glm::vec2 r) { return (q.x - p.x) * (r.y - p.y) - (q.y - p.y) * (r.x - p.x); };
     const float area = side(a.pixel, b.pixel, c.pixel);
     if (area == 0.0f) return;
+    // The edges run with the inside on their positive side; in y-down pixels a top edge then
+    // runs in +x and a left edge upwards.
+    const float sign = area > 0.0f ? 1.0f : -1.0f;
+    const glm::vec2 e0 = (c.pixel - b.pixel) * sign, e1 = (a.pixel - c.pixel) * sign, e2 = (b.pixel - a.pixel) * sign;
+    auto owns = [](float w, glm::vec2 e) { return w > 0.0f || (w == 0.0f && (e.y < 0.0f || (e.y == 0.0f && e.x > 0.0f))); };
     const float lo_x = std::min({a.pixel.x, b.pixel.x, c.pixel.x}), hi_x = std::max({a.pixel.x, b.pixel.x, c.pixel.x});
     const float lo_y = std::min({a.pixel.y, b.pixel.y, c.pixel.y}), hi_y = std::max({a.pixel.y, b.pixel.y, c.pixel.y});
     const int x0 = std::max(0, int(std::floor(lo_x * float(sub)))), x1 = std::min(width * sub - 1, int(std::ceil(hi_x * float(sub))));
@@ -40,9 +47,11 @@ void for_each_point_inside(const StrokeVertex& a, const StrokeVertex& b, const S
         for (int ix = x0; ix <= x1; ++ix) {
             const glm::vec2 p((float(ix) + 0.5f) / float(sub), (float(iy) + 0.5f) / float(sub));
             const float w0 = side(b.pixel, c.pixel, p) / area, w1 = side(c.pixel, a.pixel, p) / area;
-            const float w2 = 1.0f - w0 - w1;
-            if (w0 < 0.0f || w1 < 0.0f || w2 < 0.0f) continue;
-            visit(ix, iy, w0 * a.edge + w1 * b.edge + w2 * c.edge, w0 * a.color.a + w1 * b.color.a + w2 * c.color.a);
+            const float w2 = side(a.pixel, b.pixel, p) / area;
+            if (!owns(w0, e0) || !owns(w1, e1) || !owns(w2, e2)) continue;
+            const float sum = w0 + w1 + w2;
+            visit(ix, iy, (w0 * a.edge + w1 * b.edge + w2 * c.edge) / sum,
+                  (w0 * a.color.a + w1 * b.color.a + w2 * c.color.a) / sum);
         }
 }
 

@@ -85,7 +85,9 @@ wait_jobs "$jobs" 300
 # (README "Render farm": a chunk's own history sets it, p90 ≈ 0.45 period for any K); what
 # it gives is checked: a chunk no further than K from the shot's start starts where one
 # render does (frames 6-11 identical), and a chunk's first frames slide no more than one
-# render's (first → second frame, worst chunk, within 1.5×).
+# render's (first → second frame, worst chunk, within 1.5×, or within 0.002 periods: one
+# render's own frame-to-frame slide varies from 0.001 to 0.004 periods over this shot, so
+# below that there is no settling to tell from the fit's noise).
 "$linework" coherence-report "$work/warm_dumps" --against "$work/one_dumps" | grep -E "against|frame (0|6|12|18):"
 for f in $(seq -f %04g 6 11); do
   "$linework" diff "$work/one/frame_$f.png" "$work/warm/frames/frame_$f.png" --max-error 0 > /dev/null ||
@@ -102,7 +104,7 @@ slide() {
 for c in 12 18; do
   warm=$(slide "$work/warm_dumps" $c) one=$(slide "$work/one_dumps" $c)
   echo "sliding from frame $c to $((c + 1)): warm-up chunk $warm, one render $one periods"
-  awk -v w="$warm" -v o="$one" 'BEGIN { exit !(w <= 1.5 * o + 1e-4) }' ||
+  awk -v w="$warm" -v o="$one" 'BEGIN { exit !(w <= 1.5 * o || w <= 0.002) }' ||
     fail "the warm-up chunk at $c still settles (slides $warm against one render's $one)"
 done
 echo "PASS"

@@ -57,6 +57,7 @@ struct BenchOptions {
     bool extract_only = false;      // lines: the host extraction alone (extract_bench.h)
     std::string types;
     int threads = 1, repeat = 50;
+    int samples = 1;  // samples per pixel of the surface pass (MSAA)
 };
 
 struct Series {
@@ -104,10 +105,11 @@ int run_surface(const BenchOptions& b) {
     lw::Context ctx({.device = lw::parse_device_choice(b.device)});
     BenchScene s = prepare(b, ctx);
     lw::GpuMesh mesh = lw::upload_mesh(ctx, s.scene.mesh);
-    lw::SurfacePass pass(ctx);
-    lw::RenderTarget target(ctx, uint32_t(s.width), uint32_t(s.height));
+    const uint32_t samples = uint32_t(b.samples);
+    lw::SurfacePass pass(ctx, VK_FORMAT_R8G8B8A8_UNORM, samples);
+    lw::RenderTarget target(ctx, uint32_t(s.width), uint32_t(s.height), VK_FORMAT_R8G8B8A8_UNORM, samples);
     lw::GpuTimer timer(ctx);
-    const lw::SurfaceStyle style;
+    const lw::SurfaceStyle style{.samples = samples};
     Series gpu, wall;
     for (int frame = -2; frame < b.frames; ++frame) {  // two warm-up frames
         lw::Timer w;
@@ -122,7 +124,7 @@ int run_surface(const BenchOptions& b) {
         wall.values.push_back(ms);
         gpu.values.push_back(timer.results().front().ms);
     }
-    std::printf("surface pass %dx%d, %d frames:\n", s.width, s.height, b.frames);
+    std::printf("surface pass %dx%d, %u sample(s) per pixel, %d frames:\n", s.width, s.height, samples, b.frames);
     gpu.print("GPU surface");
     wall.print("wall (submit+wait)");
     return 0;
@@ -158,6 +160,7 @@ int run_lines(const BenchOptions& b) {
 
     lw::SurfaceStyle surface;
     surface.draw_surface = b.shaded;
+    surface.samples = uint32_t(b.samples);  // the flag's default is 1, not the scenes' 4
 
     Series coherence_ms;
     size_t coherent_samples = 0;
@@ -237,6 +240,9 @@ void add_options(CLI::App* cmd, BenchOptions& o) {
     cmd->add_option("--target", o.camera.target, "Point looked at x,y,z");
     cmd->add_option("--up", o.camera.up, "Up vector x,y,z");
     cmd->add_option("--fov", o.camera.fov, "Vertical field of view in degrees");
+    cmd->add_option("--samples", o.samples, "Samples per pixel of the surface pass: 1, 4 or 8 (MSAA)")
+        ->check(CLI::IsMember({1, 4, 8}))
+        ->capture_default_str();
 }
 
 }  // namespace

@@ -61,6 +61,23 @@ bool draw_and_present(ViewerState& s, SceneSession& session, Swapchain& swapchai
     return presented;
 }
 
+namespace {
+
+// The surface's samples per pixel: the scene's or --samples, else 4, but 1 on a CPU device,
+// where 4 cost about 2.2× a frame (docs/BENCHMARKS.md "Antialiasing") and the viewer is for
+// moving the camera. A view saved then says "samples": 1, so that it renders as shown.
+uint32_t viewer_samples(const SurfaceStyle& style, const Context& ctx) {
+    if (style.samples == 0 && ctx.info().type == VK_PHYSICAL_DEVICE_TYPE_CPU) {
+        std::printf("surface: 1 sample per pixel on a CPU device (4 would cost about 2.2x a frame; --samples 4, "
+                    "the scene's \"samples\" or the panel)\n");
+        return 1;
+    }
+    std::printf("surface: %u samples per pixel\n", surface_samples(style));
+    return style.samples;
+}
+
+}  // namespace
+
 int run_view(const ViewOptions& o) {
     if (o.benchmark < 0) throw usage_error("--benchmark: must be 0 or more frames");
     if (o.subdivide < 0 || o.subdivide > 4) throw usage_error("--subdivide: 0 to 4");
@@ -76,6 +93,8 @@ int run_view(const ViewOptions& o) {
                  .instance_extensions = window.required_instance_extensions(), .swapchain = true,
                  .compute_site = parse_compute_site(o.scene.compute)});
     std::printf("device: %s\n", ctx.info().describe().c_str());
+    SceneDesc styled = desc;
+    styled.style.samples = viewer_samples(desc.style, ctx);
     const bool fixed_step = player || o.benchmark > 0;  // scripted runs see the same frames every time
     // Everything that records or owns GPU work lives in this scope, so that the validation
     // layer has spoken about its destruction before the exit status is decided.
@@ -84,7 +103,7 @@ int run_view(const ViewOptions& o) {
         SessionOptions options = session_options(o.scene, desc);
         options.color_format = swapchain.format();  // the frame reaches the window by a copy
         options.subdivide = o.subdivide;
-        SceneDesc sized = desc;  // the window's framebuffer may differ from the scene's size
+        SceneDesc sized = styled;  // the window's framebuffer may differ from the scene's size
         sized.width = int(swapchain.extent().width);
         sized.height = int(swapchain.extent().height);
         SceneSession session(ctx, sized, options);

@@ -237,6 +237,10 @@ void draw_panel(ViewerState& s) {
         ImGui::ColorEdit3("surface", &s.desc.style.color.x, ImGuiColorEditFlags_NoInputs);
         ImGui::SameLine();
         ImGui::ColorEdit3("background", &s.desc.style.background.x, ImGuiColorEditFlags_NoInputs);
+        // 1 and 4 are the counts every Vulkan device renders (8: the scene key or --samples).
+        int msaa = surface_samples(s.desc.style) == 1 ? 0 : 1;
+        if (surface_samples(s.desc.style) != 8 && ImGui::Combo("samples", &msaa, "1 (fastest)\0" "4 (antialiased)\0"))
+            s.desc.style.samples = msaa == 0 ? 1u : 4u;
     }
     if (s.animated && ImGui::CollapsingHeader("Animation", ImGuiTreeNodeFlags_DefaultOpen)) {
         if (ImGui::Button(s.playing ? "pause (space)" : "play (space)")) s.playing = !s.playing;
