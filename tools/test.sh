@@ -9,7 +9,7 @@ cd "$(dirname "$0")/.."
 
 bash tools/bootstrap.sh
 # The farm test's scheduler: a one-node Slurm started and stopped by the test (tests/farm).
-test_packages=(slurm-wlm munge)
+test_packages=(slurm-wlm munge librsvg2-bin)  # a local Slurm; rsvg-convert draws the SVG export (tests/test_svg_export.cpp)
 for p in "${test_packages[@]}"; do
   if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
     echo "test: installing ${test_packages[*]}"

@@ -1,10 +1,17 @@
-// engine/lines/svg_export.h — visible brush paths as SVG.
+// engine/lines/svg_export.h — a frame's lines as SVG, drawn as the PNG draws them.
 //
-// Output contract: pixel coordinates with the image size as the viewBox; one `<g id=NAME>`
-// per line set in drawing order (the per-type shorthand: "silhouette", "suggestive",
-// "crease", "border", always all four, possibly empty); one `<polyline>` per visible path;
-// a closed loop repeats its first point. Stroke width and colour per set are attributes of
-// the group.
+// Output contract: pixel coordinates with the image size as the viewBox; per line set, in
+// drawing order (the per-type shorthand: "silhouette", "suggestive", "crease", "border",
+// always all four, possibly empty):
+//   - `<g id=NAME>`: the strokes as filled shapes — the outlines the renderer draws (widths,
+//     tapers, caps and joins as geometry), one `<path>` per run of like colour and opacity
+//     (fades as `fill-opacity`), nonzero fill; what standard renderers (browsers, Inkscape,
+//     rsvg) draw as the PNG shows it, up to antialiasing and the SLAM texture, which SVG has
+//     no way to carry (textured strokes are drawn in their solid ink);
+//   - `<g id=NAME-hidden>` inside it when the set draws hidden lines: their shapes in their
+//     look (faint: a quarter of the opacity; dashed: the dashes as shapes);
+//   - `<g id=NAME-centerlines display="none">` after it: one `<polyline>` per visible path
+//     (a closed loop repeats its first point), the paths themselves for tools to read back.
 #pragma once
 
 #include <array>
@@ -14,6 +21,7 @@
 
 #include <glm/glm.hpp>
 
+#include "stroke/stroke_geometry.h"
 #include "types/screen_path.h"
 
 namespace lw {
@@ -22,7 +30,10 @@ struct SvgGroup {
     std::string id;
     glm::vec3 color{0.0f};
     float width = 1.0f;
-    const std::vector<ScreenPath>* paths = nullptr;  // null: an empty group
+    const std::vector<ScreenPath>* paths = nullptr;  // the set's paths (null: none)
+    // The set's strokes as the renderer builds them without the coverage margin (triangles
+    // with per-vertex colour and alpha), visible and hidden runs apart.
+    std::vector<StrokeVertex> shapes, hidden_shapes;
 };
 
 [[nodiscard]] std::string lines_svg(int width, int height, const std::vector<SvgGroup>& groups);

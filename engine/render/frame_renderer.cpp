@@ -12,11 +12,41 @@
 
 namespace lw {
 
+namespace {
+
+// A set's strokes as record_sets draws them, without the coverage margin: the line pass's
+// look for plain sets (dashes cut as geometry), the styled builder's for the others (a SLAM
+// set in its solid ink). Ribbons are synthesized as images and have none.
+void add_svg_shapes(const LinesDesc& lines, const LineSetDesc& set, const LineSetFrame& out, SvgGroup& group) {
+    if (!set.style.ribbon.empty()) return;
+    if (is_plain_line_set(set.style)) {
+        const LineDrawStyle style{.color = set.style.color, .alpha = set.style.alpha, .width = set.style.width,
+                                  .fade = set.style.fade, .hidden = lines.sets.empty() ? lines.hidden : HiddenLines::None};
+        for (const ScreenPath& path : out.paths)
+            for (const StrokeVertex& v : line_triangles({path}, style, 0.0f, true))
+                (path.visible ? group.shapes : group.hidden_shapes).push_back(v);
+        return;
+    }
+    const std::vector<PathParam> tiled = tiling_params(out.paths, out.coherence);
+    for (size_t p = 0; p < out.paths.size(); ++p) {
+        const PathParam& param = !out.params.empty() && out.paths[p].visible ? out.params[p] : tiled[p];
+        const StrokeParams stroke{.rho = param.rho, .phi = param.phi, .fold = param.fold, .width = set.style.width,
+                                  .color = set.style.color, .coverage_margin_px = 0.0f};
+        append_styled_stroke(out.paths[p], stroke, set.style, period_px(out.coherence),
+                             out.paths[p].visible ? group.shapes : group.hidden_shapes);
+    }
+}
+
+}  // namespace
+
 std::vector<SvgGroup> line_set_svg_groups(const LinesDesc& lines, const Frame& frame) {
     std::vector<SvgGroup> groups;
-    for (const LineSetDesc& set : effective_line_sets(lines))
-        groups.push_back({.id = set.name, .color = set.style.color, .width = set.style.width});
-    for (const LineSetFrame& set : frame.sets) groups[set.set].paths = &set.paths;
+    const std::vector<LineSetDesc> sets = effective_line_sets(lines);
+    for (const LineSetDesc& set : sets) groups.push_back({.id = set.name, .color = set.style.color, .width = set.style.width});
+    for (const LineSetFrame& out : frame.sets) {
+        groups[out.set].paths = &out.paths;
+        add_svg_shapes(lines, sets[out.set], out, groups[out.set]);
+    }
     return groups;
 }
 

@@ -5,6 +5,7 @@
 
 #include "lines_draw_frag.h"
 #include "lines_draw_vert.h"
+#include "stroke/modifiers.h"
 #include "stroke/stroke_geometry.h"
 #include "stroke/stroke_pass.h"
 
@@ -44,13 +45,16 @@ std::vector<size_t> simplify(const ScreenPath& path, float tolerance = 0.25f) {
     return kept;
 }
 
+}  // namespace
+
 // The stroke builder's triangles for each run, of the type's width (thinner and fainter for
 // hidden runs drawn faint or dashed), with mitre joins and square caps: antialiased like every
 // stroke (stroke_geometry.h). Mitres, not round joins: the fans of round joins at every sharp
 // turn of dense feature lines cost lavapipe 1.4× the drawing (FlightHelmet, 1920×1080: 13 → 18
 // ms), and at 1.5–2.5 px the two look alike. u is the arc length in pixels (ρ = 1, φ = 0) for the dashes, and
 // the level coordinate w, which a flat line does not need, says whether the run is dashed.
-std::vector<StrokeVertex> build_triangles(const std::vector<ScreenPath>& paths, const LineDrawStyle& style) {
+std::vector<StrokeVertex> line_triangles(const std::vector<ScreenPath>& paths, const LineDrawStyle& style,
+                                         float margin_px, bool geometric_dashes) {
     std::vector<StrokeVertex> vertices;
     for (const ScreenPath& path : paths) {
         const float faint = path.visible || style.hidden != HiddenLines::Faint ? 1.0f : 0.25f;
@@ -69,13 +73,23 @@ std::vector<StrokeVertex> build_triangles(const std::vector<ScreenPath>& paths, 
                                     .color = std::vector<glm::vec3>(n, style.color)};
         for (const ScreenSample& q : kept.samples)
             attributes.alpha.push_back(style.alpha * (style.fade ? q.alpha : 1.0f) * faint);
-        const StrokeParams params{.rho = 1.0f, .phi = 0.0f, .fold = {.level = 1.0f, .scale = 1.0f, .w = dashed ? 1.0f : 0.0f}};
-        append_stroke(kept, params, attributes, Cap::Square, Join::Mitre, vertices);
+        const StrokeParams params{.rho = 1.0f, .phi = 0.0f, .fold = {.level = 1.0f, .scale = 1.0f, .w = dashed ? 1.0f : 0.0f},
+                                  .coverage_margin_px = margin_px};
+        if (!(dashed && geometric_dashes)) {
+            append_stroke(kept, params, attributes, Cap::Square, Join::Mitre, vertices);
+            continue;
+        }
+        // The shader's dashes: on where fract(s / period) ≤ ½, butt-ended.
+        for (const ScreenPath& dash : dash_path(kept, StrokeParams{}, 1.0f, {0.5f * kDashPeriodPx, 0.5f * kDashPeriodPx})) {
+            const size_t m = dash.samples.size();
+            StrokeAttributes piece{.width = std::vector<float>(m, width), .alpha = {}, .color = std::vector<glm::vec3>(m, style.color)};
+            for (const ScreenSample& q : dash.samples)
+                piece.alpha.push_back(style.alpha * (style.fade ? q.alpha : 1.0f) * faint);
+            append_stroke(dash, params, piece, Cap::Butt, Join::Mitre, vertices);
+        }
     }
     return vertices;
 }
-
-}  // namespace
 
 LinePass::LinePass(const Context& ctx, VkFormat color_format)
     : pipeline_(ctx, {.vertex_spirv = LW_SPIRV(lines_draw_vert_spv),
@@ -92,12 +106,12 @@ LinePass::LinePass(const Context& ctx, VkFormat color_format)
 
 Buffer LinePass::record(const Context& ctx, VkCommandBuffer cmd, RenderTarget& target,
                         const std::vector<ScreenPath>& paths, const LineDrawStyle& style) const {
-    const std::vector<StrokeVertex> vertices = build_triangles(paths, style);
+    const std::vector<StrokeVertex> vertices = line_triangles(paths, style, kCoverageMarginPx, false);
     if (vertices.empty()) return Buffer();
     Buffer buffer = upload_vertices(ctx, std::as_bytes(std::span(vertices)), "line triangles");
     target.begin_overlay(cmd);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.get());
-    const LineDrawPush push{{float(target.width), float(target.height)}, 8.0f, 0.0f};
+    const LineDrawPush push{{float(target.width), float(target.height)}, kDashPeriodPx, 0.0f};
     pipeline_.draw(cmd, buffer, static_cast<uint32_t>(vertices.size()), &push, sizeof(push));
     target.end_overlay(cmd);
     return buffer;

@@ -21,6 +21,7 @@
 #include "lines/visibility.h"
 #include "render/surface_pass.h"
 #include "scene/style.h"
+#include "stroke/stroke_geometry.h"
 
 namespace lw {
 
@@ -31,6 +32,16 @@ struct LineDrawStyle {
     bool fade = true;                         // multiply by each sample's fade alpha
     HiddenLines hidden = HiddenLines::None;   // hidden runs: None draws them as visible ones
 };
+
+// Dashed hidden runs: on for the first half of every period of arc length.
+constexpr float kDashPeriodPx = 8.0f;
+
+// The triangles the pass draws for `paths` in `style` (stroke/stroke_geometry.h), reaching
+// `margin_px` past the outline (kCoverageMarginPx; 0: the bare outline, the SVG's shapes).
+// The pass cuts dashes per fragment; with `geometric_dashes` dashed runs are cut into their
+// dashes here instead (butt-ended), for output without a shader.
+[[nodiscard]] std::vector<StrokeVertex> line_triangles(const std::vector<ScreenPath>& paths, const LineDrawStyle& style,
+                                                       float margin_px, bool geometric_dashes);
 
 class LinePass {
 public:

@@ -74,7 +74,7 @@ float polyline_length(const std::vector<Node>& nodes, bool closed) {
 }
 
 // How far a node's triangles reach out, over its outline: the coverage margin past it.
-float outset_scale(const Node& nd) { return (nd.half + kCoverageMarginPx) / nd.half; }
+float outset_scale(const Node& nd, float margin) { return (nd.half + margin) / nd.half; }
 
 struct Emitter {
     const StrokeParams& params;
@@ -90,7 +90,7 @@ struct Emitter {
     // coordinates `edge_xy`, `edge_z` given there), pushed out from the node by the margin.
     StrokeVertex at(const Node& nd, glm::vec2 offset, float s, float v, glm::vec2 edge_xy,
                     float edge_z = kNoEndZ) const {
-        const float k = outset_scale(nd);
+        const float k = outset_scale(nd, params.coverage_margin_px);
         return drawn(nd, offset * k, s, 0.5f + (v - 0.5f) * k,
                      glm::vec3(edge_xy * k, edge_z == kNoEndZ ? kNoEndZ : edge_z * k));
     }
@@ -100,7 +100,7 @@ struct Emitter {
     StrokeVertex off_end(const Node& nd, glm::vec2 t, glm::vec2 offset, Cap cap) const {
         const float across = glm::dot(offset, perp(t)), along = glm::dot(offset, t);
         const float v = std::clamp(0.5f - 0.5f * across / nd.half, 0.0f, 1.0f);
-        const float s = nd.s + along * outset_scale(nd);
+        const float s = nd.s + along * outset_scale(nd, params.coverage_margin_px);
         if (cap == Cap::Round) return at(nd, offset, s, v, {across, along});
         return at(nd, offset, s, v, {across, 0.0f}, std::abs(along));
     }
@@ -187,16 +187,17 @@ void append_round_join(Emitter& em, const Node& nd, const JoinEnds& e) {
 void append_cap(Emitter& em, const Node& nd, glm::vec2 t, float ahead, Cap cap) {
     const glm::vec2 side = perp(t) * nd.half, out = t * (ahead * nd.half);
     auto rim = [&](glm::vec2 offset) { return em.off_end(nd, t, offset, cap); };
-    if (cap == Cap::Butt) {
+    const float margin = em.params.coverage_margin_px;
+    if (cap == Cap::Butt && margin > 0.0f) {
         // The end's fringe: the margin past the end, z the half width plus the distance past
         // it (so that the shader's share before the end, at half − z, is a box filter's).
-        const float k = outset_scale(nd), z0 = nd.ink_half;
-        const glm::vec2 p = side * k, q = t * (ahead * kCoverageMarginPx);
-        const float s_out = nd.s + ahead * kCoverageMarginPx, v0 = 0.5f - 0.5f * k, v1 = 0.5f + 0.5f * k;
+        const float k = outset_scale(nd, margin), z0 = nd.ink_half;
+        const glm::vec2 p = side * k, q = t * (ahead * margin);
+        const float s_out = nd.s + ahead * margin, v0 = 0.5f - 0.5f * k, v1 = 0.5f + 0.5f * k;
         const float x = nd.half * k;
         const StrokeVertex a = em.drawn(nd, p, nd.s, v0, {x, 0.0f, z0}), b = em.drawn(nd, -p, nd.s, v1, {-x, 0.0f, z0});
-        const StrokeVertex c = em.drawn(nd, p + q, s_out, v0, {x, 0.0f, z0 + kCoverageMarginPx});
-        const StrokeVertex d = em.drawn(nd, -p + q, s_out, v1, {-x, 0.0f, z0 + kCoverageMarginPx});
+        const StrokeVertex c = em.drawn(nd, p + q, s_out, v0, {x, 0.0f, z0 + margin});
+        const StrokeVertex d = em.drawn(nd, -p + q, s_out, v1, {-x, 0.0f, z0 + margin});
         em.quad(a, b, c, d);
     } else if (cap == Cap::Square) {
         const StrokeVertex a = rim(side), b = rim(-side), c = rim(side + out), d = rim(-side + out);

@@ -108,6 +108,9 @@ struct StrokeParams {
     glm::vec3 color{0.0f};
     float taper_px = 0.0f;     // 0: no taper
     float mitre_limit = 2.0f;  // in half widths
+    // How far the triangles reach past the outline for the coverage ramp; 0: the bare
+    // outline, no butt fringes (the SVG export's filled shapes).
+    float coverage_margin_px = kCoverageMarginPx;
 };
 
 // Per-sample stroke attributes, one entry per sample of the path they were evaluated for

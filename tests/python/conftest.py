@@ -35,15 +35,18 @@ def cli_error(*args):
 
 
 def svg_groups(path):
-    """{group id: [N×2 float64 array per <polyline>]} of an SVG `linework render --svg` wrote."""
+    """{line set: [N×2 float64 array per <polyline>]} of an SVG `linework render --svg` wrote."""
     ns = {"svg": "http://www.w3.org/2000/svg"}
     groups = {}
     for g in ET.parse(path).getroot().findall("svg:g", ns):
+        # The drawing is <g id=NAME> (filled shapes); its paths are <g id=NAME-centerlines>.
+        if not g.get("id", "").endswith("-centerlines"):
+            continue
         polylines = []
         for p in g.findall("svg:polyline", ns):
             pts = [tuple(map(float, xy.split(","))) for xy in p.get("points").split()]
             polylines.append(np.array(pts))
-        groups[g.get("id")] = polylines
+        groups[g.get("id")[: -len("-centerlines")]] = polylines
     return groups
 
 

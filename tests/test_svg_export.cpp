@@ -1,0 +1,126 @@
+// `linework render --svg`: the SVG drawn by a standard renderer (rsvg-convert, librsvg) shows
+// what the PNG shows — widths, tapers, caps, fades and dashes as geometry — and hidden lines
+// come in their own group. Ink is 1 − red/255 over white; the two images are compared by the
+// IoU of their inked pixels (ink > ½).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "core/image.h"
+#include "io/image_io.h"
+#include "test_support.h"
+
+namespace lw {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct SvgRender {
+    ImageRGBA8 png, svg_drawn;
+    std::string svg;
+};
+
+// Renders `input` with `flags` over white (lines only) at 320×240, and the SVG through rsvg.
+SvgRender render_both(const fs::path& dir, const std::string& input, const std::string& flags) {
+    SvgRender r;
+    const auto run = test::run_linework("render " + input + " --lines-only --size 320x240 --device cpu -o " +
+                                        test::quote(dir / "out") + " --svg " + test::quote(dir / "lines.svg") + " " + flags);
+    EXPECT_EQ(run.exit_code, 0) << run.output;
+    const auto rsvg = test::run_command("rsvg-convert -w 320 -h 240 -b white " + test::quote(dir / "lines.svg") + " -o " +
+                                        test::quote(dir / "svg.png") + " 2>&1");
+    EXPECT_EQ(rsvg.exit_code, 0) << "rsvg-convert (librsvg2-bin, installed by tools/test.sh): " << rsvg.output;
+    r.png = read_image_rgba8(dir / "out/frame_0000.png");
+    r.svg_drawn = read_image_rgba8(dir / "svg.png");
+    std::ifstream in(dir / "lines.svg");
+    std::stringstream text;
+    text << in.rdbuf();
+    r.svg = text.str();
+    return r;
+}
+
+struct InkComparison {
+    double iou = 0.0;
+    size_t png_ink = 0, svg_ink = 0;
+};
+
+InkComparison compare_ink(const ImageRGBA8& a, const ImageRGBA8& b) {
+    InkComparison c;
+    size_t both = 0;
+    for (size_t i = 0; i < a.pixels.size() && i < b.pixels.size(); i += 4) {
+        const bool ia = a.pixels[i] < 128, ib = b.pixels[i] < 128;
+        c.png_ink += ia;
+        c.svg_ink += ib;
+        both += ia && ib;
+    }
+    const size_t either = c.png_ink + c.svg_ink - both;
+    c.iou = either ? double(both) / double(either) : 0.0;
+    return c;
+}
+
+size_t count(const std::string& text, const std::string& what) {
+    size_t n = 0;
+    for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+    return n;
+}
+
+// The default lines (plain, fading suggestive contours) and the same with dashed hidden lines.
+TEST(SvgExport, StandardRendererDrawsThePng) {
+    const fs::path dir = test::temp_dir();
+    const std::string spot = test::quote(test::data_dir() / "models/spot/spot.glb");
+    for (const std::string hidden : {"none", "dashed", "faint"}) {
+        const SvgRender r = render_both(dir / hidden, spot, "--hidden " + hidden);
+        const InkComparison c = compare_ink(r.png, r.svg_drawn);
+        EXPECT_GE(c.iou, 0.9) << "hidden " << hidden << ": PNG " << c.png_ink << " inked pixels, SVG " << c.svg_ink;
+        RecordProperty("iou_hidden_" + hidden, std::to_string(c.iou));
+        EXPECT_GT(c.png_ink, 500u);
+        // Widths are geometry: the drawing has no strokes; the centre lines are there, not drawn.
+        EXPECT_EQ(count(r.svg, "stroke-width="), count(r.svg, "-centerlines\" display=\"none\""));
+        EXPECT_EQ(count(r.svg, "-centerlines\""), 4u);
+        EXPECT_GT(count(r.svg, "<path fill="), 4u);
+        EXPECT_EQ(r.svg.find("-hidden\"") != std::string::npos, hidden != "none") << hidden;
+    }
+}
+
+// Line sets with tapers, width ramps, round caps, dashes, noise and translucent hidden lines.
+TEST(SvgExport, StyledLineSetsKeepTheirShapes) {
+    const fs::path dir = test::temp_dir();
+    const fs::path scene = dir / "styled.json";
+    std::ofstream(scene) << R"({"model": ")" << (test::data_dir() / "models/spot/spot.glb").string() << R"(",
+      "camera": {"eye": [2.9, 0.7, 1.1], "target": [0.0, 0.05, 0.0], "fov": 35},
+      "line_sets": [
+        {"name": "hidden", "select": {"types": ["silhouette", "crease"], "visibility": "hidden"},
+         "style": {"width": 1.2, "alpha": 0.35, "color": [0.2, 0.3, 0.6], "dashes": [6, 5], "cap": "round"}},
+        {"name": "outline", "select": {"types": ["silhouette", "border"]},
+         "style": {"width": 6, "taper": 14,
+                   "width_modifiers": [{"input": "distance", "range": [2.5, 4.5], "ramp": [[0, 1.2], [1, 0.6]]}]}},
+        {"name": "suggestive", "select": {"types": ["suggestive"]},
+         "style": {"width": 2.5, "color": [0.15, 0.1, 0.05], "cap": "round", "taper": 6,
+                   "geometry": [{"kind": "noise", "wavelength": 18, "amplitude": 0.8, "seed": 3}]}},
+        {"name": "creases", "select": {"types": ["crease"]},
+         "style": {"width": 1.5, "color": [0.5, 0.2, 0.1], "cap": "round",
+                   "width_modifiers": [{"input": "along", "ramp": [[0, 0.4], [0.5, 1.3], [1, 0.4]]}]}}]})";
+    const SvgRender r = render_both(dir, test::quote(scene), "");
+    const InkComparison c = compare_ink(r.png, r.svg_drawn);
+    EXPECT_GE(c.iou, 0.9) << "PNG " << c.png_ink << " inked pixels, SVG " << c.svg_ink;
+    RecordProperty("iou_styled", std::to_string(c.iou));
+    EXPECT_NE(r.svg.find("<g id=\"hidden-hidden\">"), std::string::npos) << "a set of hidden lines draws them apart";
+    EXPECT_NE(r.svg.find("fill-opacity=\"0.349\""), std::string::npos) << "its alpha as opacity";
+}
+
+// Under --frames, one SVG per frame beside the given name: lines_0003.svg for frame 3.
+TEST(SvgExport, OneFilePerFrame) {
+    const fs::path dir = test::temp_dir();
+    const auto run = test::run_linework("render " + test::quote(test::data_dir() / "models/spot/spot.glb") +
+                                        " --size 160x120 --device cpu --frames 2:3 --orbit 10 -o " +
+                                        test::quote(dir / "out") + " --svg " + test::quote(dir / "lines.svg"));
+    ASSERT_EQ(run.exit_code, 0) << run.output;
+    EXPECT_TRUE(fs::exists(dir / "lines_0002.svg"));
+    EXPECT_TRUE(fs::exists(dir / "lines_0003.svg"));
+    EXPECT_FALSE(fs::exists(dir / "lines.svg"));
+}
+
+}  // namespace
+}  // namespace lw
