@@ -51,6 +51,11 @@ TEST(Cli, RendersTheDefaultScene) {
     ASSERT_EQ(r.exit_code, 0) << r.output;
     EXPECT_NE(r.output.find("device: llvmpipe"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("size: 200x150"), std::string::npos) << r.output;
+    // spot's box (min and max of its positions, in glTF units).
+    EXPECT_NE(r.output.find("bounds: min (-0.4716, -0.7368, -0.6689), max (0.4716, 0.9536, 1.049), centre (0, 0.1084, "
+                            "0.19), radius 1.294"),
+              std::string::npos)
+        << r.output;
     EXPECT_NE(r.output.find("frame 0: "), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("wrote " + (out / "frame_0000.png").string()), std::string::npos) << r.output;
     EXPECT_GT(fs::file_size(out / "frame_0000.png"), 500u);

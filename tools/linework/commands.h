@@ -18,6 +18,7 @@
 namespace lw {
 class Context;
 struct LinesDesc;
+struct Bounds;
 }
 
 namespace lw::cli {
@@ -47,6 +48,10 @@ glm::ivec2 parse_size(const std::string& text, const std::string& option);
 void use_slam_strokes(LinesDesc& lines, const std::string& slam, float width);
 // 1 (after one line on stderr) when validation was on and reported anything, else 0.
 int exit_code_after_validation(const Context& ctx, bool validation);
+// The "bounds:" line render and view print: the model's box in scene units (what a camera
+// in the scene file is written against) and its centre, which the automatic camera looks at
+// from the glTF front (+Z) and a little above.
+void print_bounds(const Bounds& bounds);
 
 // Runs f; an engine ParameterError about one of `flags` (engine name → flag, e.g.
 // {"ribbon piece", "--piece"}) is re-thrown naming the flag that set it.

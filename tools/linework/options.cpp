@@ -7,6 +7,7 @@
 #include "core/error.h"
 #include "gpu/context.h"
 #include "scene/style.h"
+#include "scene/triangle_mesh.h"
 
 namespace lw::cli {
 
@@ -67,6 +68,13 @@ void use_slam_strokes(LinesDesc& lines, const std::string& slam, float width) {
         style.width = width;
         style.taper_px = 2.0f * width;
     }
+}
+
+void print_bounds(const Bounds& b) {
+    const glm::vec3 c = b.center();
+    std::printf("bounds: min (%.4g, %.4g, %.4g), max (%.4g, %.4g, %.4g), centre (%.4g, %.4g, %.4g), radius %.4g\n",
+                double(b.min.x), double(b.min.y), double(b.min.z), double(b.max.x), double(b.max.y), double(b.max.z),
+                double(c.x), double(c.y), double(c.z), double(b.radius()));
 }
 
 int exit_code_after_validation(const Context& ctx, bool validation) {

@@ -118,6 +118,7 @@ void print_header(const RenderOptions& o, const SceneSession& session, const Con
     const SceneDesc& desc = session.desc();
     std::printf("scene: %s (%zu triangles, loaded in %.0f ms)\n", o.scene.input.c_str(),
                 session.scene().mesh.triangle_count(), load_ms);
+    if (!session.scene().mesh.indices.empty()) print_bounds(session.scene().bounds);
     std::printf("device: %s\n", ctx.info().describe().c_str());
     std::printf("size: %dx%d\n", desc.width, desc.height);
     if (const LineMesh* lm = session.renderer().line_mesh())
