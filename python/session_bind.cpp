@@ -97,7 +97,7 @@ pyb::tuple load_mesh(const std::filesystem::path& path) {
 
 void bind_session(pyb::module_& m) {
     pyb::class_<Polyline>(m, "Polyline",
-                          "One run of a brush path as the SVG's <polyline> holds it (closed loops without the "
+                          "One run of a brush path as the SVG's centre-line <polyline> holds it (closed loops without the "
                           "repeated first point), with per-point data the SVG lacks.")
         .def_property_readonly("points", [](const Polyline& p) { return store_view<float>(p, &LineStore::points, 2); },
                                "N×2 float32 pixels, x right, y down: the SVG's coordinates")
@@ -190,8 +190,8 @@ speak raises RuntimeError. Bad input raises ValueError with the command line's m
                  return s.lines(frame, t, hidden);
              },
              pyb::arg("t") = pyb::none(), pyb::kw_only(), pyb::arg("frame") = pyb::none(), pyb::arg("hidden") = false,
-             "The frame's lines: a dict from SVG group id (the line set; with per-type keys the type names "
-             "silhouette, suggestive, crease, border) to a list of Polyline — the SVG's polylines. hidden=True "
+             "The frame's lines: a dict from line set (with per-type keys the type names silhouette, "
+             "suggestive, crease, border) to a list of Polyline — the SVG's NAME-centerlines polylines. hidden=True "
              "adds the hidden runs that sets selecting hidden lines hold.")
         .def("frame", [](Session& s, std::optional<float> t, std::optional<int> frame, bool image, bool depth,
                             bool lines, bool hidden) { return s.frame_at(frame, t, image, depth, lines, hidden); },

@@ -80,7 +80,7 @@ Frame Session::draw(const PathTime& when, uint64_t seed, const FrameOutputs& out
 }
 
 pyb::dict Session::lines_of(const Frame& frame, bool hidden) const {
-    const std::vector<SvgGroup> svg = session_->svg_groups(frame);
+    const std::vector<SvgGroup> svg = session_->svg_groups(frame, false);  // the paths, not the shapes
     auto store = std::make_shared<LineStore>();
     size_t samples = 0;
     for (const SvgGroup& group : svg)

@@ -110,7 +110,6 @@ INSTANTIATE_TEST_SUITE_P(
                       GpuCase{"FlightHelmet/FlightHelmet.gltf", {0.2f, 0.1f, 1.0f}}),
     [](const auto& param_info) { return "Case" + std::to_string(param_info.index); });
 
-// A well-formedness check: every tag closes in order, attributes are quoted.
 
 TEST_F(LinesTest, SvgIsValidAndLinesUpWithThePng) {
     const int width = 320, height = 240;

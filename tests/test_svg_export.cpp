@@ -4,12 +4,15 @@
 // IoU of their inked pixels (ink > ½).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 
 #include "core/image.h"
+#include "render/line_pass.h"
 #include "io/image_io.h"
 #include "test_support.h"
 
@@ -32,6 +35,7 @@ SvgRender render_both(const fs::path& dir, const std::string& input, const std::
     const auto rsvg = test::run_command("rsvg-convert -w 320 -h 240 -b white " + test::quote(dir / "lines.svg") + " -o " +
                                         test::quote(dir / "svg.png") + " 2>&1");
     EXPECT_EQ(rsvg.exit_code, 0) << "rsvg-convert (librsvg2-bin, installed by tools/test.sh): " << rsvg.output;
+    if (run.exit_code != 0 || rsvg.exit_code != 0) return r;  // empty images: the comparison fails too
     r.png = read_image_rgba8(dir / "out/frame_0000.png");
     r.svg_drawn = read_image_rgba8(dir / "svg.png");
     std::ifstream in(dir / "lines.svg");
@@ -66,22 +70,49 @@ size_t count(const std::string& text, const std::string& what) {
     return n;
 }
 
-// The default lines (plain, fading suggestive contours) and the same with dashed hidden lines.
+// The default lines (plain, fading suggestive contours), and the same with dashed and with
+// faint hidden lines. Measured: IoU 0.989, 0.975 and 0.989 (the issue asks for 0.9).
 TEST(SvgExport, StandardRendererDrawsThePng) {
     const fs::path dir = test::temp_dir();
     const std::string spot = test::quote(test::data_dir() / "models/spot/spot.glb");
     for (const std::string hidden : {"none", "dashed", "faint"}) {
         const SvgRender r = render_both(dir / hidden, spot, "--hidden " + hidden);
         const InkComparison c = compare_ink(r.png, r.svg_drawn);
-        EXPECT_GE(c.iou, 0.9) << "hidden " << hidden << ": PNG " << c.png_ink << " inked pixels, SVG " << c.svg_ink;
+        EXPECT_GE(c.iou, 0.95) << "hidden " << hidden << ": PNG " << c.png_ink << " inked pixels, SVG " << c.svg_ink;
         RecordProperty("iou_hidden_" + hidden, std::to_string(c.iou));
         EXPECT_GT(c.png_ink, 500u);
         // Widths are geometry: the drawing has no strokes; the centre lines are there, not drawn.
         EXPECT_EQ(count(r.svg, "stroke-width="), count(r.svg, "-centerlines\" display=\"none\""));
         EXPECT_EQ(count(r.svg, "-centerlines\""), 4u);
         EXPECT_GT(count(r.svg, "<path fill="), 4u);
-        EXPECT_EQ(r.svg.find("-hidden\"") != std::string::npos, hidden != "none") << hidden;
+        const size_t hidden_group = r.svg.find("-hidden\"");
+        EXPECT_EQ(hidden_group != std::string::npos, hidden != "none") << hidden;
+        // Faint hidden lines (too light for the ink threshold) at a quarter of the opacity.
+        if (hidden == "faint") EXPECT_NE(r.svg.find("fill-opacity=\"0.25", hidden_group), std::string::npos);
     }
+}
+
+// The dashes cut as geometry are the shader's: every dash triangle lies where fract(s / 8) ≤ ½
+// (u, the arc length, at its centroid), and the gaps hold none.
+TEST(SvgExport, GeometricDashesAreTheShadersDashes) {
+    ScreenPath path;
+    path.visible = false;
+    for (int i = 0; i <= 40; ++i) {
+        const float a = 0.05f * float(i);
+        const glm::vec2 p(50.0f + 30.0f * std::cos(a), 40.0f + 30.0f * std::sin(a));
+        const float s = path.samples.empty() ? 3.0f : path.samples.back().s + glm::length(p - path.samples.back().pixel);
+        path.samples.push_back(ScreenSample{.pixel = p, .depth = 1.0f, .s = s, .position = {}, .face = 0, .bary = {}, .alpha = 1.0f});
+    }
+    const std::vector<StrokeVertex> triangles =
+        line_triangles({path}, LineDrawStyle{.width = 2.0f, .hidden = HiddenLines::Dashed}, 0.0f, true);
+    ASSERT_GT(triangles.size(), 30u);
+    std::vector<bool> period_drawn(32, false);
+    for (size_t t = 0; t + 2 < triangles.size(); t += 3) {
+        const float u = (triangles[t].tex.x + triangles[t + 1].tex.x + triangles[t + 2].tex.x) / 3.0f;
+        EXPECT_LE(u / kDashPeriodPx - std::floor(u / kDashPeriodPx), 0.5f + 1e-4f) << "u " << u;
+        period_drawn[size_t(u / kDashPeriodPx) % 32] = true;
+    }
+    EXPECT_GE(std::count(period_drawn.begin(), period_drawn.end(), true), 7);  // 60 px of dashes: 7–8 periods
 }
 
 // Line sets with tapers, width ramps, round caps, dashes, noise and translucent hidden lines.
@@ -104,7 +135,7 @@ TEST(SvgExport, StyledLineSetsKeepTheirShapes) {
                    "width_modifiers": [{"input": "along", "ramp": [[0, 0.4], [0.5, 1.3], [1, 0.4]]}]}}]})";
     const SvgRender r = render_both(dir, test::quote(scene), "");
     const InkComparison c = compare_ink(r.png, r.svg_drawn);
-    EXPECT_GE(c.iou, 0.9) << "PNG " << c.png_ink << " inked pixels, SVG " << c.svg_ink;
+    EXPECT_GE(c.iou, 0.95) << "PNG " << c.png_ink << " inked pixels, SVG " << c.svg_ink;
     RecordProperty("iou_styled", std::to_string(c.iou));
     EXPECT_NE(r.svg.find("<g id=\"hidden-hidden\">"), std::string::npos) << "a set of hidden lines draws them apart";
     EXPECT_NE(r.svg.find("fill-opacity=\"0.349\""), std::string::npos) << "its alpha as opacity";

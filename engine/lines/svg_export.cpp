@@ -13,8 +13,9 @@ namespace lw {
 namespace {
 
 
-// Widths with two decimals; coordinates with three, so that a path read back from the file
-// lies within 5e-4 px of the one drawn (the Python module's lines are compared to it).
+// Two decimals for the shapes' coordinates (a hundredth of a pixel); three for the centre
+// lines, so that a path read back from the file lies within 5e-4 px of the one drawn (the
+// Python module's lines are compared to it).
 std::string number(float v, int decimals = 2) {
     char text[32];
     std::snprintf(text, sizeof text, "%.*f", decimals, double(v));
@@ -23,18 +24,24 @@ std::string number(float v, int decimals = 2) {
 
 std::string point(glm::vec2 p) { return number(p.x, 3) + "," + number(p.y, 3); }
 
-// The triangles as filled `<path>`s, one per run of consecutive triangles of one colour and
-// opacity (to 1/255: what the PNG can tell apart), each triangle wound the same way so that
-// the nonzero rule fills their union.
+// The triangles as filled `<path>`s, one per run of consecutive triangles of one colour (to
+// 1/255, what the PNG tells apart) whose opacity stays within 0.02 of the run's first, drawn at
+// the run's mean: a fading line is a few paths, not one per triangle (every path is
+// antialiased on its own, so each break is a faint seam). Each triangle is wound the same way
+// so that the nonzero rule fills their union.
 std::string shape_paths(const std::vector<StrokeVertex>& triangles, const std::string& indent) {
-    std::string out, key, d;
-    float opacity = 1.0f;
+    std::string out, color, d;
+    float first_alpha = 1.0f, alpha_sum = 0.0f;
+    int count = 0;
     auto flush = [&] {
         if (d.empty()) return;
-        out += indent + "<path fill=\"" + key.substr(0, 7) + "\"";
+        const float opacity = std::round(alpha_sum / float(count) * 255.0f) / 255.0f;
+        out += indent + "<path fill=\"" + color + "\"";
         if (opacity < 1.0f) out += " fill-opacity=\"" + number(opacity, 3) + "\"";
         out += " d=\"" + d + "\"/>\n";
         d.clear();
+        alpha_sum = 0.0f;
+        count = 0;
     };
     for (size_t t = 0; t + 2 < triangles.size(); t += 3) {
         const StrokeVertex *a = &triangles[t], *b = &triangles[t + 1], *c = &triangles[t + 2];
@@ -45,12 +52,14 @@ std::string shape_paths(const std::vector<StrokeVertex>& triangles, const std::s
         const glm::vec4 mean = (a->color + b->color + c->color) / 3.0f;
         const float alpha = std::round(std::clamp(mean.a, 0.0f, 1.0f) * 255.0f) / 255.0f;
         if (alpha <= 0.0f) continue;
-        const std::string k = hex_color(glm::vec3(mean)) + number(alpha, 3);
-        if (k != key) {
+        const std::string fill = hex_color(glm::vec3(mean));
+        if (fill != color || std::abs(alpha - first_alpha) > 0.02f) {
             flush();
-            key = k;
-            opacity = alpha;
+            color = fill;
+            first_alpha = alpha;
         }
+        alpha_sum += alpha;
+        ++count;
         d += (d.empty() ? "M" : " M") + number(a->pixel.x) + "," + number(a->pixel.y) + " " + number(b->pixel.x) + "," +
              number(b->pixel.y) + " " + number(c->pixel.x) + "," + number(c->pixel.y) + "Z";
     }

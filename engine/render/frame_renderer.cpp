@@ -39,13 +39,13 @@ void add_svg_shapes(const LinesDesc& lines, const LineSetDesc& set, const LineSe
 
 }  // namespace
 
-std::vector<SvgGroup> line_set_svg_groups(const LinesDesc& lines, const Frame& frame) {
+std::vector<SvgGroup> line_set_svg_groups(const LinesDesc& lines, const Frame& frame, bool with_shapes) {
     std::vector<SvgGroup> groups;
     const std::vector<LineSetDesc> sets = effective_line_sets(lines);
     for (const LineSetDesc& set : sets) groups.push_back({.id = set.name, .color = set.style.color, .width = set.style.width});
     for (const LineSetFrame& out : frame.sets) {
         groups[out.set].paths = &out.paths;
-        add_svg_shapes(lines, sets[out.set], out, groups[out.set]);
+        if (with_shapes) add_svg_shapes(lines, sets[out.set], out, groups[out.set]);
     }
     return groups;
 }

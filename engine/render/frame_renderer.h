@@ -85,7 +85,9 @@ struct Frame {
 
 // The frame's lines as SVG groups: one per line set of `lines` (effective_line_sets), in
 // drawing order, with its colour and width; sets that drew nothing are empty groups.
-[[nodiscard]] std::vector<SvgGroup> line_set_svg_groups(const LinesDesc& lines, const Frame& frame);
+// `with_shapes` off: the paths alone (what tools reading the lines back need; building the
+// strokes' shapes costs as much again as drawing them).
+[[nodiscard]] std::vector<SvgGroup> line_set_svg_groups(const LinesDesc& lines, const Frame& frame, bool with_shapes = true);
 
 class FrameRenderer {
 public:

@@ -291,7 +291,9 @@ void SceneSession::restore(const Snapshot& snapshot) {
     last_seconds_ = snapshot.seconds;
 }
 
-std::vector<SvgGroup> SceneSession::svg_groups(const Frame& frame) const { return line_set_svg_groups(desc_.lines, frame); }
+std::vector<SvgGroup> SceneSession::svg_groups(const Frame& frame, bool with_shapes) const {
+    return line_set_svg_groups(desc_.lines, frame, with_shapes);
+}
 
 std::vector<DumpGroup> SceneSession::dump_groups(const Frame& frame) const {
     std::vector<DumpGroup> groups;

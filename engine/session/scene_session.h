@@ -128,7 +128,7 @@ public:
     void restore(const Snapshot& snapshot);
 
     // The frame's lines as SVG groups (one per line set, in order) and dump groups.
-    [[nodiscard]] std::vector<SvgGroup> svg_groups(const Frame& frame) const;
+    [[nodiscard]] std::vector<SvgGroup> svg_groups(const Frame& frame, bool with_shapes = true) const;
     [[nodiscard]] std::vector<DumpGroup> dump_groups(const Frame& frame) const;
 
 private:

@@ -16,7 +16,8 @@ void add_frame_options(CLI::App* cmd, RenderOptions& o) {
     cmd->add_flag("--exr", o.exr, "Also write OUT/frame_0000.exr (RGBA + depth channel Z)");
     cmd->add_flag("--lines-only", o.lines_only, "Draw the lines over the background, without shading");
     cmd->add_flag("--no-lines", o.no_lines, "Shading only, no feature lines");
-    cmd->add_option("--svg", o.svg, "Also write the visible lines as SVG (pixel coordinates, one <g> per line set)");
+    cmd->add_option("--svg", o.svg, "Also write the lines as SVG, drawn as the PNG draws them (filled shapes per line set, hidden lines "
+                    "in NAME-hidden, centre lines in a hidden NAME-centerlines group; under --frames FILE_NNNN.svg)");
     cmd->add_option("--hidden", o.hidden, "Hidden lines: none (default), dashed or faint")
         ->check(CLI::IsMember({"none", "dashed", "faint"}));
     cmd->add_option("--orbit", o.orbit, "Turn the camera DEG degrees about the bounding-box centre over the frames");

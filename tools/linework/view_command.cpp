@@ -108,7 +108,7 @@ int run_view(const ViewOptions& o) {
         sized.height = int(swapchain.extent().height);
         SceneSession session(ctx, sized, options);
         std::printf("scene: %s (%zu triangles)\n", o.scene.input.c_str(), session.scene().mesh.triangle_count());
-        print_bounds(session.scene().bounds);
+        if (session.has_model()) print_bounds(session.scene().bounds);
         ViewerState s = initial_state(session, !o.no_panel, o.output);
         s.coherence = session.coherence();
         s.device = ctx.info().describe();
