@@ -240,6 +240,10 @@ std::vector<LineSetDesc> read_line_sets(scene_detail::ObjectReader& scene, const
         if (!r.has("name")) r.fail_key("name", "required (it names the set's SVG group and dump entries)");
         set.name = r.string_of("name");
         if (!is_svg_id(set.name)) r.fail_key("name", "letters, digits, _ and - (an SVG id), got \"" + set.name + "\"");
+        // The SVG export names a set's hidden lines and centre lines NAME-hidden and NAME-centerlines.
+        for (const std::string suffix : {"-hidden", "-centerlines"})
+            if (set.name.size() > suffix.size() && set.name.ends_with(suffix))
+                r.fail_key("name", "\"" + set.name + "\": names may not end in -hidden or -centerlines (the SVG's groups of a set)");
         for (const LineSetDesc& other : sets)
             if (other.name == set.name) r.fail_key("name", "\"" + set.name + "\" is used by an earlier set");
         if (r.has("enabled")) set.enabled = r.boolean("enabled");
