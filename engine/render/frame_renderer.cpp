@@ -14,27 +14,40 @@ namespace lw {
 
 namespace {
 
+// The line pass's style of a plain set: the shorthand keeps the scene's look of hidden runs;
+// sets that select hidden lines style them themselves.
+LineDrawStyle plain_draw_style(const LinesDesc& lines, const LineSetDesc& set) {
+    return {.color = set.style.color, .alpha = set.style.alpha, .width = set.style.width, .fade = set.style.fade,
+            .hidden = lines.sets.empty() ? lines.hidden : HiddenLines::None};
+}
+
+// A styled set's strokes, `margin_px` past their outlines, visible paths into `visible` and
+// hidden ones into `hidden`. Hidden runs have no fit: they tile.
+void append_set_strokes(const LineSetFrame& out, const LineSetDesc& set, float margin_px,
+                        std::vector<StrokeVertex>& visible, std::vector<StrokeVertex>& hidden) {
+    const std::vector<PathParam> tiled = tiling_params(out.paths, out.coherence);
+    for (size_t p = 0; p < out.paths.size(); ++p) {
+        const PathParam& param = !out.params.empty() && out.paths[p].visible ? out.params[p] : tiled[p];
+        const StrokeParams stroke{.rho = param.rho, .phi = param.phi, .fold = param.fold, .width = set.style.width,
+                                  .color = set.style.color, .coverage_margin_px = margin_px};
+        append_styled_stroke(out.paths[p], stroke, set.style, period_px(out.coherence),
+                             out.paths[p].visible ? visible : hidden);
+    }
+}
+
 // A set's strokes as record_sets draws them, without the coverage margin: the line pass's
 // look for plain sets (dashes cut as geometry), the styled builder's for the others (a SLAM
 // set in its solid ink). Ribbons are synthesized as images and have none.
 void add_svg_shapes(const LinesDesc& lines, const LineSetDesc& set, const LineSetFrame& out, SvgGroup& group) {
     if (!set.style.ribbon.empty()) return;
     if (is_plain_line_set(set.style)) {
-        const LineDrawStyle style{.color = set.style.color, .alpha = set.style.alpha, .width = set.style.width,
-                                  .fade = set.style.fade, .hidden = lines.sets.empty() ? lines.hidden : HiddenLines::None};
+        const LineDrawStyle style = plain_draw_style(lines, set);
         for (const ScreenPath& path : out.paths)
             for (const StrokeVertex& v : line_triangles({path}, style, 0.0f, true))
                 (path.visible ? group.shapes : group.hidden_shapes).push_back(v);
         return;
     }
-    const std::vector<PathParam> tiled = tiling_params(out.paths, out.coherence);
-    for (size_t p = 0; p < out.paths.size(); ++p) {
-        const PathParam& param = !out.params.empty() && out.paths[p].visible ? out.params[p] : tiled[p];
-        const StrokeParams stroke{.rho = param.rho, .phi = param.phi, .fold = param.fold, .width = set.style.width,
-                                  .color = set.style.color, .coverage_margin_px = 0.0f};
-        append_styled_stroke(out.paths[p], stroke, set.style, period_px(out.coherence),
-                             out.paths[p].visible ? group.shapes : group.hidden_shapes);
-    }
+    append_set_strokes(out, set, 0.0f, group.shapes, group.hidden_shapes);
 }
 
 }  // namespace
@@ -276,14 +289,7 @@ void FrameRenderer::prepare_sets(Frame& frame, const std::vector<LineSetDesc>& s
             frame.sets.push_back(std::move(out));
             continue;  // ribbons are synthesized over the read-back frame; plain sets by the line pass
         }
-        const std::vector<PathParam> tiled = tiling_params(out.paths, out.coherence);
-        for (size_t p = 0; p < out.paths.size(); ++p) {
-            // Hidden runs have no fit: they tile.
-            const PathParam& param = !out.params.empty() && out.paths[p].visible ? out.params[p] : tiled[p];
-            const StrokeParams stroke{.rho = param.rho, .phi = param.phi, .fold = param.fold,
-                                      .width = set.style.width, .color = set.style.color};
-            append_styled_stroke(out.paths[p], stroke, set.style, period_px(out.coherence), (*strokes)[i]);
-        }
+        append_set_strokes(out, set, kCoverageMarginPx, (*strokes)[i], (*strokes)[i]);
         frame.sets.push_back(std::move(out));
     }
     frame.timings.coherence_ms = param_timer.elapsed_ms();
@@ -301,12 +307,7 @@ void FrameRenderer::record_sets(VkCommandBuffer cmd, const Frame& frame, const s
             keep_alive.push_back(stroke_pass_->record(*ctx_, cmd, target_, strokes[out.set],
                                                       state.texture ? *state.texture : *solid_));
         } else if (is_plain_line_set(set.style) && !state.texture) {
-            // The shorthand keeps the scene's look of hidden runs; sets that select hidden
-            // lines style them themselves.
-            const LineDrawStyle style{.color = set.style.color, .alpha = set.style.alpha, .width = set.style.width,
-                                      .fade = set.style.fade,
-                                      .hidden = lines.sets.empty() ? lines.hidden : HiddenLines::None};
-            keep_alive.push_back(line_pass_.record(*ctx_, cmd, target_, out.paths, style));
+            keep_alive.push_back(line_pass_.record(*ctx_, cmd, target_, out.paths, plain_draw_style(lines, set)));
         }
     }
 }
