@@ -42,7 +42,8 @@ std::string read_scene_text(const std::filesystem::path& path) {
 // Keys a live session takes without starting afresh; any other change reopens it.
 bool live_key(const std::string& key) {
     return key == "lines" || key == "line_sets" || key == "size" || key == "camera" || key == "fov" ||
-           key == "shading" || key == "color" || key == "background" || key == "samples" || key == "version";
+           key == "shading" || key == "color" || key == "background" || key == "samples" || key == "version" ||
+           key == "description";
 }
 
 }  // namespace

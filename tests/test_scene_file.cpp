@@ -61,6 +61,16 @@ TEST(SceneFile, ColoursMayBeStrings) {
               std::string::npos);
 }
 
+// "description" says what the image is for: kept as written, written back (a saved view keeps
+// it), and a string or an error naming the key.
+TEST(SceneFile, DescriptionIsKeptAndWrittenBack) {
+    const SceneDesc s = parse_scene_json(R"({"model": "a.glb", "description": "the cow, for the README"})", "x.json");
+    EXPECT_EQ(s.description, "the cow, for the README");
+    const std::string written = scene_json(s, ViewCamera{.eye = {0, 0, 3}, .target = {0, 0, 0}}, ".");
+    EXPECT_EQ(parse_scene_json(written, "y.json").description, "the cow, for the README") << written;
+    EXPECT_EQ(error_of(R"({"model": "a.glb", "description": 3})").rfind("scenes/x.json: description: ", 0), 0u);
+}
+
 TEST(SceneFile, ErrorsNameTheKey) {
     EXPECT_EQ(error_of(R"({"model": "a.glb", "sise": [1, 2]})").rfind("scenes/x.json: sise: unknown key", 0), 0u);
     EXPECT_EQ(error_of(R"({"model": "a.glb", "camera": {"eye": [0,0,1], "target": [0,0,0], "fovv": 3}})")

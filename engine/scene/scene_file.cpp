@@ -282,6 +282,7 @@ SceneDesc parse_scene_json(const std::string& text, const std::filesystem::path&
     ObjectReader r(root, "", source);
 
     if (r.has("version") && r.number("version", 1, 1) != 1) r.fail_key("version", "unsupported");
+    if (r.has("description")) scene.description = r.string_of("description");
     if (r.has("layers")) scene.layers = read_layers(r, source);
     if (models_given && r.has("model")) r.fail_key("model", "not allowed beside a mesh given as arrays");
     if (!r.has("model") && scene.layers.empty() && !models_given)

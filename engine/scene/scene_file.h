@@ -36,6 +36,7 @@ struct AnimationDesc {
 
 struct SceneDesc {
     std::filesystem::path source;                // the scene file; empty for a bare model
+    std::string description;                     // "description": what the image is for (not drawn)
     std::vector<std::filesystem::path> models;   // none only in a scene of vector layers alone
     int width = 960;
     int height = 720;

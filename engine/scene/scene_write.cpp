@@ -125,6 +125,7 @@ json line_sets(const std::vector<LineSetDesc>& sets, const std::filesystem::path
 
 std::string scene_json(const SceneDesc& desc, const ViewCamera& camera, const std::filesystem::path& dest_dir) {
     json root;
+    if (!desc.description.empty()) root["description"] = desc.description;
     if (desc.models.size() == 1) {
         root["model"] = relative_to(desc.models.front(), dest_dir);
     } else if (!desc.models.empty()) {
