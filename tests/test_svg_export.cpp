@@ -88,7 +88,9 @@ TEST(SvgExport, StandardRendererDrawsThePng) {
         const size_t hidden_group = r.svg.find("-hidden\"");
         EXPECT_EQ(hidden_group != std::string::npos, hidden != "none") << hidden;
         // Faint hidden lines (too light for the ink threshold) at a quarter of the opacity.
-        if (hidden == "faint") EXPECT_NE(r.svg.find("fill-opacity=\"0.25", hidden_group), std::string::npos);
+        if (hidden == "faint") {
+            EXPECT_NE(r.svg.find("fill-opacity=\"0.25", hidden_group), std::string::npos);
+        }
     }
 }
 

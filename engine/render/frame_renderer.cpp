@@ -28,8 +28,7 @@ void append_set_strokes(const LineSetFrame& out, const LineSetDesc& set, float m
     const std::vector<PathParam> tiled = tiling_params(out.paths, out.coherence);
     for (size_t p = 0; p < out.paths.size(); ++p) {
         const PathParam& param = !out.params.empty() && out.paths[p].visible ? out.params[p] : tiled[p];
-        const StrokeParams stroke{.rho = param.rho, .phi = param.phi, .fold = param.fold, .width = set.style.width,
-                                  .color = set.style.color, .coverage_margin_px = margin_px};
+        const StrokeParams stroke{.rho = param.rho, .phi = param.phi, .fold = param.fold, .coverage_margin_px = margin_px};
         append_styled_stroke(out.paths[p], stroke, set.style, period_px(out.coherence),
                              out.paths[p].visible ? visible : hidden);
     }

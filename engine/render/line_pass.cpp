@@ -68,25 +68,23 @@ std::vector<StrokeVertex> line_triangles(const std::vector<ScreenPath>& paths, c
         ScreenPath kept = path;
         kept.samples.clear();
         for (const size_t i : simplify(path)) kept.samples.push_back(path.samples[i]);
-        const size_t n = kept.samples.size();
-        StrokeAttributes attributes{.width = std::vector<float>(n, width), .alpha = {},
-                                    .color = std::vector<glm::vec3>(n, style.color)};
-        for (const ScreenSample& q : kept.samples)
-            attributes.alpha.push_back(style.alpha * (style.fade ? q.alpha : 1.0f) * faint);
+        // The type's width and colour, the style's alpha times each sample's fade.
+        auto attributes_of = [&](const ScreenPath& piece) {
+            const size_t n = piece.samples.size();
+            StrokeAttributes a{.width = std::vector<float>(n, width), .alpha = {},
+                               .color = std::vector<glm::vec3>(n, style.color)};
+            for (const ScreenSample& q : piece.samples) a.alpha.push_back(style.alpha * (style.fade ? q.alpha : 1.0f) * faint);
+            return a;
+        };
         const StrokeParams params{.rho = 1.0f, .phi = 0.0f, .fold = {.level = 1.0f, .scale = 1.0f, .w = dashed ? 1.0f : 0.0f},
                                   .coverage_margin_px = margin_px};
         if (!(dashed && geometric_dashes)) {
-            append_stroke(kept, params, attributes, Cap::Square, Join::Mitre, vertices);
+            append_stroke(kept, params, attributes_of(kept), Cap::Square, Join::Mitre, vertices);
             continue;
         }
         // The shader's dashes: on where fract(s / period) ≤ ½, butt-ended.
-        for (const ScreenPath& dash : dash_path(kept, StrokeParams{}, 1.0f, {0.5f * kDashPeriodPx, 0.5f * kDashPeriodPx})) {
-            const size_t m = dash.samples.size();
-            StrokeAttributes piece{.width = std::vector<float>(m, width), .alpha = {}, .color = std::vector<glm::vec3>(m, style.color)};
-            for (const ScreenSample& q : dash.samples)
-                piece.alpha.push_back(style.alpha * (style.fade ? q.alpha : 1.0f) * faint);
-            append_stroke(dash, params, piece, Cap::Butt, Join::Mitre, vertices);
-        }
+        for (const ScreenPath& dash : dash_path(kept, StrokeParams{}, 1.0f, {0.5f * kDashPeriodPx, 0.5f * kDashPeriodPx}))
+            append_stroke(dash, params, attributes_of(dash), Cap::Butt, Join::Mitre, vertices);
     }
     return vertices;
 }

@@ -1,8 +1,8 @@
 // engine/stroke/stroke_geometry.h — stroke triangles along screen paths.
 //
 // Input: a `ScreenPath`, its parameterization T(s) = ρs + φ with its SLAM fold (`StrokeParams`:
-// ρ, φ, the fold and `mitre_limit`), per-sample width, colour and alpha (`StrokeAttributes`,
-// made by stroke/modifiers.h), a cap and a join. Output: a triangle list of `StrokeVertex`.
+// ρ, φ, the fold, `mitre_limit` and the coverage margin), per-sample width, colour and alpha
+// (`StrokeAttributes`, made by stroke/modifiers.h), a cap and a join. Output: a triangle list of `StrokeVertex`.
 // Caps on open ends are Freestyle's butt / square / round, joins are mitred (clamped to
 // `mitre_limit` half widths) or round. A path of one sample, or whose samples span at most
 // one pixel of arc length, is a dot: a full disc (round caps) or a square (square caps) of
@@ -104,9 +104,6 @@ inline float stroke_coverage(const glm::vec4& edge, glm::vec2 dxy_dx, glm::vec2 
 struct StrokeParams {
     float rho = 0.0f, phi = 0.0f;
     SlamFold fold;
-    float width = 2.0f;
-    glm::vec3 color{0.0f};
-    float taper_px = 0.0f;     // 0: no taper
     float mitre_limit = 2.0f;  // in half widths
     // How far the triangles reach past the outline for the coverage ramp; 0: the bare
     // outline, no butt fringes (the SVG export's filled shapes).
