@@ -5,11 +5,15 @@
 // Toon bands are antialiased analytically: each step ramps over one pixel of the Lambert term
 // (its screen derivative), since multisampling shades once per pixel and cannot smooth them.
 // Faces are lit from whichever side faces the eye: open scans and single-sided parts of
-// glTF models must not turn black from behind.
+// glTF models must not turn black from behind. A material's colour (glTF base colour, its
+// texture; scene/material.h) is linear and is encoded to sRGB before the shading scales it,
+// so that an unlit texture shows its texels as stored.
+#define SURFACE_FRAGMENT
 #include "surface_shared.glsl"
 
 layout(location = 0) in vec3 in_world;
 layout(location = 1) in vec3 in_normal;
+layout(location = 2) in vec2 in_uv;
 
 layout(location = 0) out vec4 out_color;
 
@@ -19,8 +23,15 @@ float band_step(float x, float t) {
     return clamp((x - t) / pixel + 0.5, 0.0, 1.0);
 }
 
+vec3 srgb_encode(vec3 c) {
+    c = clamp(c, 0.0, 1.0);
+    return mix(12.92 * c, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(vec3(0.0031308), c));
+}
+
 void main() {
-    int mode = int(pc.base_color.w);
+    vec4 color = material_color(in_uv);
+    if (pc.material.x != 0) color.rgb = srgb_encode(color.rgb);
+    int mode = int(pc.eye.w);
     vec3 to_eye = normalize(pc.eye.xyz - in_world);
     vec3 n;
     if (mode == SHADING_FLAT) {
@@ -39,5 +50,7 @@ void main() {
     } else {
         intensity = 1.0;
     }
-    out_color = vec4(pc.base_color.rgb * intensity, 1.0);
+    alpha_test(color.a);  // last: derivatives above need the whole quad
+    // Blended faces keep their alpha (the pipeline composites them over); the rest are opaque.
+    out_color = vec4(color.rgb * intensity, pc.material.z != 0 ? color.a : 1.0);
 }

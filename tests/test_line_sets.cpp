@@ -191,8 +191,8 @@ TEST(LineSets, SelectByMaterialAndModel) {
     desc.width = 320;
     desc.height = 240;
     const LoadedScene probe = load_scene(desc);
-    ASSERT_GE(probe.models[0].material_names.size(), 2u);
-    const std::string material = probe.models[0].material_names[0];
+    ASSERT_GE(probe.models[0].materials.size(), 2u);
+    const std::string material = probe.models[0].materials[0].name;
     desc.lines.sets = {LineSetDesc{.name = "all"},
                        LineSetDesc{.name = "one", .select = {.materials = {material}}},
                        LineSetDesc{.name = "none", .select = {.models = {"other.glb"}}}};

@@ -120,8 +120,8 @@ TEST(MeshFile, AsciiPlyWithMaterialsOfTheObjGroups) {
     ASSERT_EQ(mesh.triangle_count(), 2u);
     ASSERT_EQ(mesh.face_material.size(), 2u);
     EXPECT_NE(mesh.face_material[0], mesh.face_material[1]);
-    EXPECT_EQ(obj.material_names.at(size_t(mesh.face_material[0])), "red");
-    EXPECT_EQ(obj.material_names.at(size_t(mesh.face_material[1])), "blue");
+    EXPECT_EQ(obj.materials.at(size_t(mesh.face_material[0])).name, "red");
+    EXPECT_EQ(obj.materials.at(size_t(mesh.face_material[1])).name, "blue");
 
     std::ofstream(dir / "tri.ply") << "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
                                       "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"

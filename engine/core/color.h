@@ -14,6 +14,11 @@ namespace lw {
 // lw::Error "`where`: colour "…" …".
 [[nodiscard]] glm::vec3 parse_color(const std::string& text, const std::string& where);
 
+// The sRGB transfer function (IEC 61966-2-1) each way, on [0, 1]: texels and PNGs are
+// stored encoded, glTF factors and filtering are linear.
+[[nodiscard]] float srgb_to_linear(float encoded);
+[[nodiscard]] float linear_to_srgb(float linear);
+
 // "#rrggbb", components clamped to [0, 1].
 [[nodiscard]] std::string hex_color(glm::vec3 c);
 

@@ -6,9 +6,62 @@
 #include <limits>
 #include <string>
 
+#include "core/color.h"
 #include "core/error.h"
 
 namespace lw {
+
+namespace {
+
+// A level as linear, alpha-weighted colour (r·a, g·a, b·a, a): what averaging needs.
+std::vector<float> premultiplied_linear(const ImageRGBA8& image) {
+    float decode[256];
+    for (int v = 0; v < 256; ++v) decode[v] = srgb_to_linear(float(v) / 255.0f);
+    std::vector<float> out(image.pixels.size());
+    for (size_t i = 0; i < image.pixels.size(); i += 4) {
+        const float a = float(image.pixels[i + 3]) / 255.0f;
+        for (size_t c = 0; c < 3; ++c) out[i + c] = decode[image.pixels[i + c]] * a;
+        out[i + 3] = a;
+    }
+    return out;
+}
+
+uint8_t to_byte(float v) { return uint8_t(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); }
+
+}  // namespace
+
+std::vector<ImageRGBA8> srgb_mip_chain(const ImageRGBA8& image) {
+    std::vector<ImageRGBA8> levels{image};
+    std::vector<float> above = premultiplied_linear(image);
+    int w = image.width, h = image.height;
+    while (w > 1 || h > 1) {
+        const int nw = std::max(1, w / 2), nh = std::max(1, h / 2);
+        std::vector<float> level(size_t(nw) * size_t(nh) * 4, 0.0f);
+        ImageRGBA8 encoded{nw, nh, std::vector<uint8_t>(level.size())};
+        for (int y = 0; y < nh; ++y) {
+            // The source rows and columns this texel averages: two, three at an odd edge.
+            const int y0 = std::min(2 * y, h - 1), y1 = (y == nh - 1) ? h - 1 : 2 * y + 1;
+            for (int x = 0; x < nw; ++x) {
+                const int x0 = std::min(2 * x, w - 1), x1 = (x == nw - 1) ? w - 1 : 2 * x + 1;
+                float sum[4] = {0, 0, 0, 0};
+                for (int sy = y0; sy <= y1; ++sy)
+                    for (int sx = x0; sx <= x1; ++sx)
+                        for (int c = 0; c < 4; ++c) sum[c] += above[(size_t(sy) * size_t(w) + size_t(sx)) * 4 + size_t(c)];
+                const float n = float((y1 - y0 + 1) * (x1 - x0 + 1));
+                float* texel = &level[(size_t(y) * size_t(nw) + size_t(x)) * 4];
+                for (int c = 0; c < 4; ++c) texel[c] = sum[c] / n;
+                uint8_t* out = encoded.at(x, y);
+                const float a = texel[3];
+                for (int c = 0; c < 3; ++c) out[c] = a > 0.0f ? to_byte(linear_to_srgb(texel[c] / a)) : 0;
+                out[3] = to_byte(a);
+            }
+        }
+        levels.push_back(std::move(encoded));
+        above = std::move(level);
+        w = nw, h = nh;
+    }
+    return levels;
+}
 
 void composite_over_white(ImageRGBA8& image) {
     for (size_t i = 0; i < image.pixels.size(); i += 4) {

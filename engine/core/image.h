@@ -37,6 +37,12 @@ void composite_over_white(ImageRGBA8& image);
 // unchanged, so an opaque frame comes back as it was.
 [[nodiscard]] ImageRGBA8 straight_alpha(const ImageRGBA8& premultiplied);
 
+// Mip levels of an sRGB-encoded RGBA8 image, the image first, down to 1 × 1: each level
+// halves the last (sizes rounded down, glTF's and Vulkan's rule), each texel the mean of the
+// 2 × 2 (at an odd edge 3-wide) texels above it, in linear light and weighted by alpha so
+// that the colour of cut-out texels does not bleed into their neighbours.
+[[nodiscard]] std::vector<ImageRGBA8> srgb_mip_chain(const ImageRGBA8& image);
+
 // Compares RGBA images of equal size (throws lw::Error otherwise). `tolerance` is the
 // per-channel difference a pixel may have before it counts as differing.
 [[nodiscard]] ImageDiff compare_images(const ImageRGBA8& a, const ImageRGBA8& b, int tolerance = 0);

@@ -10,6 +10,8 @@ TriangleMesh subdivide_once(const TriangleMesh& in) {
     TriangleMesh out;
     out.positions = in.positions;
     out.normals = in.normals;
+    out.texcoords = in.texcoords;
+    const bool textured = in.texcoords.size() == in.positions.size();
     out.indices.reserve(in.indices.size() * 4);
     std::unordered_map<uint64_t, uint32_t> midpoints;
     midpoints.reserve(in.indices.size());
@@ -21,6 +23,7 @@ TriangleMesh subdivide_once(const TriangleMesh& in) {
             const glm::vec3 n = in.normals[a] + in.normals[b];
             const float len = glm::length(n);
             out.normals.push_back(len > 0.0f ? n / len : in.normals[a]);
+            if (textured) out.texcoords.push_back(0.5f * (in.texcoords[a] + in.texcoords[b]));
         }
         return it->second;
     };

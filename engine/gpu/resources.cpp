@@ -144,8 +144,9 @@ uint32_t format_texel_size(VkFormat format) {
 }
 
 Image::Image(const Context& ctx, const ImageDesc& desc)
-    : format_(desc.format), extent_{desc.width, desc.height}, depth_(desc.depth) {
+    : format_(desc.format), extent_{desc.width, desc.height}, depth_(desc.depth), mip_levels_(desc.mip_levels) {
     if (desc.width == 0 || desc.height == 0) throw Error("image size must be positive");
+    if (desc.mip_levels == 0) throw Error("image: at least one mip level");
     const uint32_t max_dim = ctx.properties().limits.maxImageDimension2D;
     if (desc.width > max_dim || desc.height > max_dim)
         throw Error("image " + std::to_string(desc.width) + "x" + std::to_string(desc.height) + " exceeds the device limit " +
@@ -157,7 +158,7 @@ Image::Image(const Context& ctx, const ImageDesc& desc)
                            .imageType = volume ? VK_IMAGE_TYPE_3D : VK_IMAGE_TYPE_2D,
                            .format = desc.format,
                            .extent = {desc.width, desc.height, desc.depth},
-                           .mipLevels = 1,
+                           .mipLevels = desc.mip_levels,
                            .arrayLayers = 1,
                            .samples = desc.samples,
                            .tiling = VK_IMAGE_TILING_OPTIMAL,
@@ -178,7 +179,7 @@ Image::Image(const Context& ctx, const ImageDesc& desc)
                                     .image = image,
                                     .viewType = volume ? VK_IMAGE_VIEW_TYPE_3D : VK_IMAGE_VIEW_TYPE_2D,
                                     .format = desc.format,
-                                    .subresourceRange = {aspect_, 0, 1, 0, 1}};
+                                    .subresourceRange = {aspect_, 0, desc.mip_levels, 0, 1}};
     VkImageView view = VK_NULL_HANDLE;
     LW_VK(vkCreateImageView(ctx.device(), &view_info, nullptr, &view));
     view_ = Handle<VkImageView>(ctx.device(), view, vkDestroyImageView);
@@ -208,21 +209,30 @@ void upload_image(const Context& ctx, const Image& image, std::span<const std::b
 Handle<VkSampler> create_sampler(const Context& ctx, const SamplerDesc& desc) {
     VkSamplerCreateInfo info{.sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO,
                              .magFilter = desc.filter,
-                             .minFilter = desc.filter,
-                             .mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST,
+                             .minFilter = desc.min_filter == VK_FILTER_MAX_ENUM ? desc.filter : desc.min_filter,
+                             .mipmapMode = desc.max_lod > 0.0f ? VK_SAMPLER_MIPMAP_MODE_LINEAR : VK_SAMPLER_MIPMAP_MODE_NEAREST,
                              .addressModeU = desc.address_u,
                              .addressModeV = desc.address_v,
                              .addressModeW = desc.address_w,
-                             .maxLod = 0.0f};
+                             .maxLod = desc.max_lod};
     VkSampler sampler = VK_NULL_HANDLE;
     LW_VK(vkCreateSampler(ctx.device(), &info, nullptr, &sampler));
     return Handle<VkSampler>(ctx.device(), sampler, vkDestroySampler);
 }
 
 void record_buffer_to_image(VkCommandBuffer cmd, const Buffer& buffer, const Image& image) {
-    VkBufferImageCopy region{.imageSubresource = {image.aspect(), 0, 0, 1},
-                             .imageExtent = {image.extent().width, image.extent().height, image.depth()}};
-    vkCmdCopyBufferToImage(cmd, buffer.get(), image.get(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+    std::vector<VkBufferImageCopy> regions;
+    VkDeviceSize offset = 0;
+    uint32_t w = image.extent().width, h = image.extent().height, d = image.depth();
+    for (uint32_t level = 0; level < image.mip_levels(); ++level) {
+        regions.push_back({.bufferOffset = offset,
+                           .imageSubresource = {image.aspect(), level, 0, 1},
+                           .imageExtent = {w, h, d}});
+        if (level + 1 < image.mip_levels()) offset += VkDeviceSize(w) * h * d * format_texel_size(image.format());
+        w = std::max(1u, w / 2), h = std::max(1u, h / 2), d = std::max(1u, d / 2);
+    }
+    vkCmdCopyBufferToImage(cmd, buffer.get(), image.get(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                           uint32_t(regions.size()), regions.data());
 }
 
 void record_image_to_buffer(VkCommandBuffer cmd, const Image& image, const Buffer& buffer) {
@@ -262,7 +272,7 @@ void record_image_barrier(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags
                                   .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
                                   .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
                                   .image = image,
-                                  .subresourceRange = {aspect, 0, 1, 0, 1}};
+                                  .subresourceRange = {aspect, 0, VK_REMAINING_MIP_LEVELS, 0, 1}};
     VkDependencyInfo dep{.sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO, .imageMemoryBarrierCount = 1,
                          .pImageMemoryBarriers = &barrier};
     vkCmdPipelineBarrier2(cmd, &dep);

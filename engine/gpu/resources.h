@@ -87,10 +87,11 @@ struct ImageDesc {
     VkImageUsageFlags usage = 0;
     const char* name = nullptr;
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;  // > 1: a multisampled attachment (2D)
+    uint32_t mip_levels = 1;  // each level half the last (rounded down, at least 1)
 };
 
-// A 2D (or 3D, when depth > 1), single-mip image in Device memory with a view of its whole
-// extent.
+// A 2D (or 3D, when depth > 1) image in Device memory with a view of its whole extent and
+// every mip level.
 class Image {
 public:
     Image() = default;
@@ -101,6 +102,7 @@ public:
     VkFormat format() const { return format_; }
     VkExtent2D extent() const { return extent_; }
     uint32_t depth() const { return depth_; }
+    uint32_t mip_levels() const { return mip_levels_; }
     VkImageAspectFlags aspect() const { return aspect_; }
 
 private:
@@ -110,26 +112,30 @@ private:
     VkFormat format_ = VK_FORMAT_UNDEFINED;
     VkExtent2D extent_{};
     uint32_t depth_ = 1;
+    uint32_t mip_levels_ = 1;
     VkImageAspectFlags aspect_ = 0;
 };
 
 // Fills a colour image created with TRANSFER_DST | SAMPLED usage from `bytes` (tightly
-// packed texels) and leaves it in SHADER_READ_ONLY_OPTIMAL (waits for the copy).
+// packed texels, every mip level after the one before) and leaves it in
+// SHADER_READ_ONLY_OPTIMAL (waits for the copy).
 void upload_image(const Context& ctx, const Image& image, std::span<const std::byte> bytes);
 
 struct SamplerDesc {
-    VkFilter filter = VK_FILTER_LINEAR;
+    VkFilter filter = VK_FILTER_LINEAR;       // magnification, and minification unless min_filter says
+    VkFilter min_filter = VK_FILTER_MAX_ENUM; // MAX_ENUM: as `filter`
     VkSamplerAddressMode address_u = VK_SAMPLER_ADDRESS_MODE_REPEAT;
     VkSamplerAddressMode address_v = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
     VkSamplerAddressMode address_w = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    float max_lod = 0.0f;                     // > 0: mip levels up to it, blended linearly
 };
 [[nodiscard]] Handle<VkSampler> create_sampler(const Context& ctx, const SamplerDesc& desc);
 
 // Bytes per texel of the formats the engine reads back.
 uint32_t format_texel_size(VkFormat format);
 
-// Records a copy of a tightly packed buffer into the whole of `image` (2D or 3D), which is in
-// TRANSFER_DST_OPTIMAL layout.
+// Records a copy of a tightly packed buffer into the whole of `image` (2D or 3D, its mip
+// levels one after another), which is in TRANSFER_DST_OPTIMAL layout.
 void record_buffer_to_image(VkCommandBuffer cmd, const Buffer& buffer, const Image& image);
 // Records a copy of `image` (in TRANSFER_SRC_OPTIMAL layout) into a Readback buffer.
 void record_image_to_buffer(VkCommandBuffer cmd, const Image& image, const Buffer& buffer);

@@ -75,8 +75,16 @@ FrameRenderer::FrameRenderer(const Context& ctx, uint32_t width, uint32_t height
       color_readback_(ctx, {.size = VkDeviceSize(width) * height * 4, .usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                             .purpose = MemoryPurpose::Readback, .name = "color readback"}) {}
 
+void FrameRenderer::set_materials(const SurfaceMaterials& materials) {
+    if (mesh_ && materials.face_material != materials_.face_material)
+        throw Error("FrameRenderer: materials for other faces than the mesh's (set them before the mesh)");
+    if (gpu_materials_) vkDeviceWaitIdle(ctx_->device());  // a viewer's frame may still read the old ones
+    gpu_materials_.emplace(*ctx_, materials);
+    materials_ = SurfaceMaterials{.materials = materials.materials, .textures = {}, .face_material = materials.face_material};
+}
+
 void FrameRenderer::set_mesh(const TriangleMesh& mesh, bool with_lines, float crease_angle_deg) {
-    mesh_ = upload_mesh(*ctx_, mesh);
+    mesh_ = upload_mesh(*ctx_, mesh, &materials_);
     line_mesh_.reset();
     if (with_lines) {
         line_mesh_ = build_line_mesh(mesh, crease_angle_deg);
@@ -85,7 +93,7 @@ void FrameRenderer::set_mesh(const TriangleMesh& mesh, bool with_lines, float cr
 }
 
 void FrameRenderer::deform(const TriangleMesh& posed) {
-    mesh_ = upload_mesh(*ctx_, posed);
+    mesh_ = upload_mesh(*ctx_, posed, &materials_);
     if (!line_mesh_) return;
     update_positions(line_mesh_->mesh, posed);
     line_mesh_->curvature = compute_curvature(line_mesh_->mesh);
@@ -186,7 +194,8 @@ Frame FrameRenderer::render(const CameraMatrices& camera, const glm::vec3& eye, 
             timer_.reset(cmd);
             timer_.begin(cmd, "surface");
             if (mesh_)
-                surface_pass_.record(cmd, target_, *mesh_, camera, eye, surface_style);
+                surface_pass_.record(cmd, target_, *mesh_, camera, eye, surface_style,
+                                     gpu_materials_ ? &*gpu_materials_ : nullptr);
             else
                 surface_pass_.record_clear(cmd, target_, surface_style);
             timer_.end(cmd);

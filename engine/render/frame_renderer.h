@@ -94,6 +94,12 @@ public:
     // `color_format`: the target's (RenderTarget); colour read back is RGBA whatever it is.
     FrameRenderer(const Context& ctx, uint32_t width, uint32_t height, VkFormat color_format = VK_FORMAT_R8G8B8A8_UNORM);
 
+    // The materials of the meshes given next (render/surface_materials.h): what colours and
+    // cuts the surface. Call it before set_mesh, which groups the triangles by material; again
+    // with the same faces and their textures decoded (the textures are uploaded, the mesh
+    // kept). Materials for different faces while a mesh is set are an error.
+    void set_materials(const SurfaceMaterials& materials);
+
     // Uploads the mesh for shading and, when lines are wanted, builds and uploads its
     // line mesh (weld, curvature, feature edges) with `crease_angle_deg`.
     void set_mesh(const TriangleMesh& mesh, bool with_lines, float crease_angle_deg);
@@ -159,6 +165,8 @@ private:
     GpuTimer timer_;
     Buffer depth_readback_, color_readback_;  // reused every frame
     std::optional<GpuMesh> mesh_;
+    SurfaceMaterials materials_;  // without textures: what set_mesh groups by
+    std::optional<GpuMaterials> gpu_materials_;
     std::optional<LineMesh> line_mesh_;
     struct SetState {
         std::unique_ptr<CoherenceTracker> tracker;  // made on first use: it holds a float target

@@ -5,6 +5,7 @@
 #include "core/error.h"
 
 #include "surface_frag.h"
+#include "surface_mask_frag.h"
 #include "surface_vert.h"
 
 namespace lw {
@@ -14,55 +15,49 @@ namespace {
 // Mirrors `SurfacePush` in shaders/surface_shared.glsl.
 struct SurfacePush {
     glm::mat4 view_proj;
-    glm::vec4 eye;
-    glm::vec4 light_dir;
-    glm::vec4 base_color;  // w: shading mode
+    glm::vec4 eye;        // w: shading mode
+    glm::vec4 light_dir;  // w: alpha cutoff, < 0 for none
+    glm::vec4 base_color;
+    glm::ivec4 material;  // x: material colour (linear), y: textured, z: blended
 };
-static_assert(sizeof(SurfacePush) == 112, "push constant layout must match surface_shared.glsl");
+static_assert(sizeof(SurfacePush) == 128, "push constant layout must match surface_shared.glsl");
 
-struct Vertex {
-    glm::vec3 position;
-    glm::vec3 normal;
-};
+// The vertex layout of upload_mesh (render/surface_materials.cpp): position, normal, uv.
+constexpr uint32_t kVertexStride = 8 * sizeof(float);
+
+// One pipeline of the pass: `fragment` empty for depth only, `blend` for blended faces.
+GraphicsPipelineDesc pass_desc(const Context& ctx, std::span<const uint32_t> fragment, VkFormat color_format,
+                               uint32_t samples, bool blend, const char* name) {
+    return {.vertex_spirv = LW_SPIRV(surface_vert_spv),
+            .fragment_spirv = fragment,
+            .vertex_stride = kVertexStride,
+            .attributes = {{.location = 0, .format = VK_FORMAT_R32G32B32_SFLOAT, .offset = 0},
+                           {.location = 1, .format = VK_FORMAT_R32G32B32_SFLOAT, .offset = 3 * sizeof(float)},
+                           {.location = 2, .format = VK_FORMAT_R32G32_SFLOAT, .offset = 6 * sizeof(float)}},
+            .cull_mode = VK_CULL_MODE_NONE,  // glTF parts may be single-sided or open
+            .color_format = color_format,
+            .depth_write = !blend,
+            .blend = blend ? BlendMode::Alpha : BlendMode::None,
+            .sampled_images = fragment.empty() ? 0u : 1u,
+            .push_constant_size = sizeof(SurfacePush),
+            .name = name,
+            .samples = sample_count_bit(ctx, samples)};
+}
 
 }  // namespace
-
-GpuMesh upload_mesh(const Context& ctx, const TriangleMesh& mesh) {
-    std::vector<Vertex> vertices(mesh.positions.size());
-    for (size_t i = 0; i < vertices.size(); ++i) vertices[i] = {mesh.positions[i], mesh.normals[i]};
-    return GpuMesh{
-        .vertices = upload_buffer(ctx, vertices, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                                  "mesh vertices"),
-        .indices = upload_buffer(ctx, mesh.indices, VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                                 "mesh indices"),
-        .index_count = static_cast<uint32_t>(mesh.indices.size())};
-}
 
 SurfacePass::SurfacePass(const Context& ctx, VkFormat color_format, uint32_t samples)
     : samples_(samples),
       depth_resolve_(ctx.depth_resolve_modes() & VK_RESOLVE_MODE_MAX_BIT ? VK_RESOLVE_MODE_MAX_BIT
                                                                          : VK_RESOLVE_MODE_SAMPLE_ZERO_BIT),
-      pipeline_(ctx, {.vertex_spirv = LW_SPIRV(surface_vert_spv),
-                      .fragment_spirv = LW_SPIRV(surface_frag_spv),
-                      .vertex_stride = sizeof(Vertex),
-                      .attributes = {{.location = 0, .format = VK_FORMAT_R32G32B32_SFLOAT, .offset = 0},
-                                     {.location = 1, .format = VK_FORMAT_R32G32B32_SFLOAT,
-                                      .offset = offsetof(Vertex, normal)}},
-                      .cull_mode = VK_CULL_MODE_NONE,  // glTF parts may be single-sided or open
-                      .color_format = color_format,
-                      .push_constant_size = sizeof(SurfacePush),
-                      .name = "surface",
-                      .samples = sample_count_bit(ctx, samples)}),
-      depth_only_(ctx, {.vertex_spirv = LW_SPIRV(surface_vert_spv),
-                        .vertex_stride = sizeof(Vertex),
-                        .attributes = {{.location = 0, .format = VK_FORMAT_R32G32B32_SFLOAT, .offset = 0},
-                                       {.location = 1, .format = VK_FORMAT_R32G32B32_SFLOAT,
-                                        .offset = offsetof(Vertex, normal)}},
-                        .cull_mode = VK_CULL_MODE_NONE,
-                        .color_format = VK_FORMAT_UNDEFINED,
-                        .push_constant_size = sizeof(SurfacePush),
-                        .name = "surface depth only",
-                        .samples = sample_count_bit(ctx, samples)}) {}
+      ctx_(&ctx),
+      pipeline_(ctx, pass_desc(ctx, LW_SPIRV(surface_frag_spv), color_format, samples, false, "surface")),
+      blend_(ctx, pass_desc(ctx, LW_SPIRV(surface_frag_spv), color_format, samples, true, "surface blended")),
+      depth_only_(ctx, pass_desc(ctx, {}, VK_FORMAT_UNDEFINED, samples, false, "surface depth only")),
+      depth_mask_(ctx, pass_desc(ctx, LW_SPIRV(surface_mask_frag_spv), VK_FORMAT_UNDEFINED, samples, false,
+                                 "surface depth only, masked")),
+      white_(white_texture(ctx)),
+      white_sampler_(create_sampler(ctx, {})) {}
 
 glm::vec3 key_light_direction(const CameraMatrices& camera) {
     const glm::vec3 view_space = glm::normalize(glm::vec3(-0.4f, 0.6f, 0.7f));
@@ -118,17 +113,24 @@ VkRenderingAttachmentInfo depth_attachment(RenderTarget& target) {
     return depth;
 }
 
-void draw_mesh(VkCommandBuffer cmd, const GraphicsPipeline& pipeline, RenderTarget& target, const GpuMesh& mesh,
-               const SurfacePush& push) {
-    target.set_viewport(cmd);
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.get());
-    vkCmdPushConstants(cmd, pipeline.layout(), VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
-                       sizeof(push), &push);
-    VkDeviceSize offset = 0;
-    VkBuffer vertex_buffer = mesh.vertices.get();
-    vkCmdBindVertexBuffers(cmd, 0, 1, &vertex_buffer, &offset);
-    vkCmdBindIndexBuffer(cmd, mesh.indices.get(), 0, VK_INDEX_TYPE_UINT32);
-    vkCmdDrawIndexed(cmd, mesh.index_count, 1, 0, 0, 0);
+// What a draw of one material pushes: the scene colour without materials, else its factor,
+// texture, cutoff and blending.
+SurfacePush material_push(const CameraMatrices& camera, const glm::vec3& eye, const SurfaceStyle& style,
+                          const Material* material, bool textured) {
+    SurfacePush push{.view_proj = camera.view_proj,
+                     .eye = glm::vec4(eye, float(int(style.shading))),
+                     .light_dir = glm::vec4(key_light_direction(camera), -1.0f),
+                     .base_color = glm::vec4(style.color, 1.0f),
+                     .material = glm::ivec4(0)};
+    if (!material) return push;
+    if (material->has_color) {
+        push.base_color = material->base_color;
+        push.material.x = 1;
+        push.material.y = textured ? 1 : 0;
+    }
+    if (material->alpha_mode == AlphaMode::Mask) push.light_dir.w = material->alpha_cutoff;
+    push.material.z = material->alpha_mode == AlphaMode::Blend ? 1 : 0;
+    return push;
 }
 
 // The background, or nothing at all (premultiplied: no colour where there is no alpha).
@@ -148,8 +150,40 @@ void SurfacePass::resolve_depth(VkCommandBuffer cmd, RenderTarget& target, VkRen
     depth.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
 }
 
+void SurfacePass::draw_materials(VkCommandBuffer cmd, RenderTarget& target, const GpuMesh& mesh,
+                                 const CameraMatrices& camera, const glm::vec3& eye, const SurfaceStyle& style,
+                                 const GpuMaterials* materials, bool depth_only) const {
+    target.set_viewport(cmd);
+    VkDeviceSize offset = 0;
+    VkBuffer vertex_buffer = mesh.vertices.get();
+    vkCmdBindVertexBuffers(cmd, 0, 1, &vertex_buffer, &offset);
+    vkCmdBindIndexBuffer(cmd, mesh.indices.get(), 0, VK_INDEX_TYPE_UINT32);
+    if (!style.materials) materials = nullptr;
+    // Without materials the whole buffer is one draw (its grouping does not matter).
+    const std::vector<MeshDraw> everything{{.material = -1, .first_index = 0, .index_count = mesh.index_count}};
+    const std::vector<MeshDraw>& draws = materials && !mesh.draws.empty() ? mesh.draws : everything;
+    for (const MeshDraw& draw : draws) {
+        const bool known = materials && draw.material >= 0 && size_t(draw.material) < materials->size();
+        const Material* material = known ? &materials->material(size_t(draw.material)) : nullptr;
+        const bool textured = known && materials->textured(size_t(draw.material));
+        const AlphaMode mode = material ? material->alpha_mode : AlphaMode::Opaque;
+        if (depth_only && mode == AlphaMode::Blend) continue;  // hides nothing
+        const GraphicsPipeline& pipeline = depth_only ? (mode == AlphaMode::Mask ? depth_mask_ : depth_only_)
+                                                      : (mode == AlphaMode::Blend ? blend_ : pipeline_);
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.get());
+        if (&pipeline != &depth_only_)
+            pipeline.push_image(*ctx_, cmd, 0, textured ? materials->view(size_t(draw.material)) : white_.view(),
+                                textured ? materials->sampler(size_t(draw.material)) : white_sampler_.get());
+        const SurfacePush push = material_push(camera, eye, style, material, textured);
+        vkCmdPushConstants(cmd, pipeline.layout(), VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+                           sizeof(push), &push);
+        vkCmdDrawIndexed(cmd, draw.index_count, 1, draw.first_index, 0, 0);
+    }
+}
+
 void SurfacePass::record_depth_only(VkCommandBuffer cmd, RenderTarget& target, const GpuMesh* mesh,
-                                    const CameraMatrices& camera, const SurfaceStyle& style) const {
+                                    const CameraMatrices& camera, const SurfaceStyle& style,
+                                    const GpuMaterials* materials) const {
     if (target.samples != samples_) throw Error("surface pass: the target's sample count differs from the pipeline's");
     // The colour is the background: a clear, no fragment shading (much cheaper on lavapipe).
     record_image_barrier(cmd, target.color,
@@ -179,15 +213,16 @@ void SurfacePass::record_depth_only(VkCommandBuffer cmd, RenderTarget& target, c
                               .layerCount = 1,
                               .pDepthAttachment = &depth};
     vkCmdBeginRendering(cmd, &rendering);
-    if (mesh) draw_mesh(cmd, depth_only_, target, *mesh, SurfacePush{.view_proj = camera.view_proj});
+    if (mesh) draw_materials(cmd, target, *mesh, camera, glm::vec3(0.0f), style, materials, true);
     vkCmdEndRendering(cmd);
     end_depth(cmd, target);
 }
 
 void SurfacePass::record(VkCommandBuffer cmd, RenderTarget& target, const GpuMesh& mesh,
-                         const CameraMatrices& camera, const glm::vec3& eye, const SurfaceStyle& style) const {
+                         const CameraMatrices& camera, const glm::vec3& eye, const SurfaceStyle& style,
+                         const GpuMaterials* materials) const {
     if (!style.draw_surface) {
-        record_depth_only(cmd, target, &mesh, camera, style);
+        record_depth_only(cmd, target, &mesh, camera, style, materials);
         return;
     }
     if (target.samples != samples_) throw Error("surface pass: the target's sample count differs from the pipeline's");
@@ -219,12 +254,7 @@ void SurfacePass::record(VkCommandBuffer cmd, RenderTarget& target, const GpuMes
                               .pColorAttachments = &color,
                               .pDepthAttachment = &depth};
     vkCmdBeginRendering(cmd, &rendering);
-    const int mode = style.shading == Shading::Unlit ? int(Shading::Unlit) : int(style.shading);
-    draw_mesh(cmd, pipeline_, target, mesh,
-              SurfacePush{.view_proj = camera.view_proj,
-                          .eye = glm::vec4(eye, 1.0f),
-                          .light_dir = glm::vec4(key_light_direction(camera), 0.0f),
-                          .base_color = glm::vec4(style.color, float(mode))});
+    draw_materials(cmd, target, mesh, camera, eye, style, materials, false);
     vkCmdEndRendering(cmd);
     target.color_to_transfer_src(cmd);
     end_depth(cmd, target);

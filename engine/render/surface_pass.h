@@ -1,7 +1,8 @@
 // engine/render/surface_pass.h — the shaded surface and its depth, rendered offscreen.
 //
-// Input:  a world-space `TriangleMesh` (uploaded once as a `GpuMesh`), camera matrices and
-//         a `SurfaceStyle`.
+// Input:  a world-space `TriangleMesh` (uploaded once as a `GpuMesh`, render/
+//         surface_materials.h), camera matrices, a `SurfaceStyle` and, when the scene uses
+//         them, the mesh's `GpuMaterials`.
 // Output: an RGBA8 colour image and a D32 depth image in a `RenderTarget` (see
 //         frame_renderer.h for reading them back). The depth image is also what the
 //         visibility stage tests line samples against.
@@ -12,6 +13,13 @@
 // surface in the pixel, as the visibility test's 3×3 neighbourhood takes it), else sample 0.
 // Depth-only frames are multisampled too, so that a frame's depth does not depend on
 // whether it is drawn.
+//
+// Materials (glTF 2.0 §3.9): each draw of the mesh takes its material's base colour and
+// texture. MASK cuts holes: those pixels get neither colour nor depth, in shaded and
+// depth-only frames alike, so lines behind them are visible. BLEND is composited over the
+// opaque surface after it and writes no depth: glass and lenses tint what is behind them
+// but hide no lines (Freestyle and Line Art treat such faces as transparent too). Blended
+// faces are not sorted among themselves.
 //
 // Headless is the only platform here: render into VkImages with dynamic rendering, copy
 // to a host-visible buffer, read back (STYLE.md: lavapipe has no headless surface).
@@ -28,19 +36,12 @@
 #include "gpu/resources.h"
 #include "gpu/timestamps.h"
 #include "gpu/render_target.h"
+#include "render/surface_materials.h"
 #include "scene/camera.h"
 #include "scene/style.h"
 #include "scene/triangle_mesh.h"
 
 namespace lw {
-
-// Vertex and index buffers of a mesh on the GPU (interleaved position + normal).
-struct GpuMesh {
-    Buffer vertices;
-    Buffer indices;
-    uint32_t index_count = 0;
-};
-[[nodiscard]] GpuMesh upload_mesh(const Context& ctx, const TriangleMesh& mesh);
 
 class SurfacePass {
 public:
@@ -49,8 +50,10 @@ public:
 
     // Records the pass: clears, draws, and leaves both images in TRANSFER_SRC_OPTIMAL. With
     // `style.draw_surface` off, the colour is only cleared and the mesh drawn depth-only.
+    // `materials` (indexed by the mesh's draws) colour and cut the surface unless
+    // `style.materials` is off; without them every face takes `style.color`.
     void record(VkCommandBuffer cmd, RenderTarget& target, const GpuMesh& mesh, const CameraMatrices& camera,
-                const glm::vec3& eye, const SurfaceStyle& style) const;
+                const glm::vec3& eye, const SurfaceStyle& style, const GpuMaterials* materials = nullptr) const;
 
     // The same with nothing to draw (a scene of vector layers only): background and far depth.
     void record_clear(VkCommandBuffer cmd, RenderTarget& target, const SurfaceStyle& style) const {
@@ -59,14 +62,25 @@ public:
 
 private:
     void record_depth_only(VkCommandBuffer cmd, RenderTarget& target, const GpuMesh* mesh,
-                           const CameraMatrices& camera, const SurfaceStyle& style) const;
+                           const CameraMatrices& camera, const SurfaceStyle& style,
+                           const GpuMaterials* materials = nullptr) const;
+    // Every draw of the mesh with its material's constants and texture; `depth_only` draws
+    // skip blended materials and test masked ones' alpha.
+    void draw_materials(VkCommandBuffer cmd, RenderTarget& target, const GpuMesh& mesh, const CameraMatrices& camera,
+                        const glm::vec3& eye, const SurfaceStyle& style, const GpuMaterials* materials,
+                        bool depth_only) const;
     // Points `depth` at the multisampled depth, resolved into the target's (samples > 1).
     void resolve_depth(VkCommandBuffer cmd, RenderTarget& target, VkRenderingAttachmentInfo& depth) const;
 
     uint32_t samples_ = 1;
     VkResolveModeFlagBits depth_resolve_ = VK_RESOLVE_MODE_SAMPLE_ZERO_BIT;
-    GraphicsPipeline pipeline_;
+    const Context* ctx_;
+    GraphicsPipeline pipeline_;    // opaque and masked faces
+    GraphicsPipeline blend_;       // blended faces: composited, no depth written
     GraphicsPipeline depth_only_;  // lines over the background: depth, no shading
+    GraphicsPipeline depth_mask_;  // the same for masked faces: their alpha test alone
+    Image white_;                  // bound where a draw has no texture
+    Handle<VkSampler> white_sampler_;
 };
 
 

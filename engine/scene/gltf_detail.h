@@ -1,7 +1,7 @@
 // engine/scene/gltf_detail.h — internals shared by the glTF loader's translation units.
 //
 // Not part of the engine's interface: only gltf_loader.cpp, gltf_accessor.cpp,
-// gltf_validate.cpp and gltf_objects.cpp include it. tinygltf parses the file; everything here re-checks what it
+// gltf_validate.cpp, gltf_objects.cpp and gltf_materials.cpp include it. tinygltf parses the file; everything here re-checks what it
 // parsed, because tinygltf 2.7 accepts files whose indices, ranges or hierarchy are invalid.
 #pragma once
 
@@ -86,5 +86,7 @@ void validate_nodes(const Source& source);
 [[nodiscard]] Skin convert_skin(const Source& source, size_t skin_index);
 [[nodiscard]] Animation convert_animation(const Source& source, size_t animation_index);
 [[nodiscard]] Camera convert_camera(const Source& source, size_t camera_index);
+// A material (gltf_materials.cpp): base colour factor and texture, alpha mode and cutoff.
+[[nodiscard]] Material convert_material(const Source& source, size_t material_index);
 
 }  // namespace lw::gltf_detail

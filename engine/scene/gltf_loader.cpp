@@ -46,9 +46,16 @@ using gltf_detail::require_finite;
 using gltf_detail::Source;
 using Normalized = AccessorRule::Normalized;
 
-// Textures are never decoded: line rendering needs geometry only, and a missing or
-// undecodable image must not stop a model from loading.
-bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
+// Images are kept as the file holds them (scene/material.h): decoding every texture of a
+// model costs seconds and most renders of it draw lines, not textures. tinygltf hands over
+// the bytes of buffer-view, data-URI and external images alike; a missing external image
+// never reaches here (tinygltf warns and goes on) and is named when a texture needs it.
+bool keep_image(tinygltf::Image*, const int index, std::string*, std::string*, int, int, const unsigned char* bytes,
+                int size, void* user) {
+    auto& images = *static_cast<std::vector<ModelImage>*>(user);
+    if (index < 0) return true;
+    if (images.size() <= size_t(index)) images.resize(size_t(index) + 1);
+    if (bytes && size > 0) images[size_t(index)].bytes.assign(bytes, bytes + size);
     return true;
 }
 
@@ -106,7 +113,7 @@ void check_glb_framing(const std::filesystem::path& path, const std::string& fil
                     std::to_string(size));
 }
 
-tinygltf::Model parse_file(const std::filesystem::path& path, const std::string& file) {
+tinygltf::Model parse_file(const std::filesystem::path& path, const std::string& file, std::vector<ModelImage>& images) {
     const std::string extension = lower(path.extension().string());
     if (extension != ".gltf" && extension != ".glb")
         throw Error(file + ": unsupported file extension '" + path.extension().string() + "' (expected .gltf or .glb)");
@@ -115,7 +122,7 @@ tinygltf::Model parse_file(const std::filesystem::path& path, const std::string&
     if (!std::filesystem::is_regular_file(path, ec)) throw Error(file + ": not a regular file");
 
     tinygltf::TinyGLTF parser;
-    parser.SetImageLoader(skip_image, nullptr);
+    parser.SetImageLoader(keep_image, &images);
     tinygltf::Model doc;
     std::string err, warn;
     bool ok = false;
@@ -167,7 +174,21 @@ std::vector<uint32_t> triangle_list(const Source& source, const std::string& wha
     return out;
 }
 
-std::optional<Primitive> convert_primitive(const Source& source, size_t mesh_index, size_t primitive_index) {
+// Names for messages, and why an image has no bytes (an external file that did not load).
+std::vector<ModelImage> convert_images(const tinygltf::Model& doc, std::vector<ModelImage> images) {
+    images.resize(doc.images.size());
+    for (size_t i = 0; i < doc.images.size(); ++i) {
+        const tinygltf::Image& in = doc.images[i];
+        images[i].name = !in.name.empty() ? in.name : in.uri.rfind("data:", 0) == 0 ? std::string() : in.uri;
+        if (images[i].bytes.empty())
+            images[i].problem = in.uri.empty() || in.uri.rfind("data:", 0) == 0 ? "the image has no data"
+                                                                                : "cannot read " + in.uri;
+    }
+    return images;
+}
+
+std::optional<Primitive> convert_primitive(const Source& source, const std::vector<Material>& materials,
+                                          size_t mesh_index, size_t primitive_index) {
     const tinygltf::Primitive& in = source.doc.meshes[mesh_index].primitives[primitive_index];
     const std::string what = "mesh " + std::to_string(mesh_index) + " primitive " + std::to_string(primitive_index);
 
@@ -189,6 +210,9 @@ std::optional<Primitive> convert_primitive(const Source& source, size_t mesh_ind
         return it == in.attributes.end() ? -1 : it->second;
     };
     Primitive out;
+    if (in.material < -1 || in.material >= int(materials.size()))
+        fail(source, what + " names material " + std::to_string(in.material) + " but the file has " +
+                         std::to_string(materials.size()));
     out.material = in.material;
 
     const int position_index = attribute("POSITION");
@@ -216,6 +240,22 @@ std::optional<Primitive> convert_primitive(const Source& source, size_t mesh_ind
         check_count(index, role, normals.count);
         require_finite(source, accessor_label(index, role), normals);
         out.normals = to_vec3(normals);
+    }
+
+    if (out.material >= 0 && materials[size_t(out.material)].base_color_texture.image >= 0) {
+        // The set its base colour texture reads; without it the texture cannot be placed.
+        const std::string name = "TEXCOORD_" + std::to_string(materials[size_t(out.material)].base_color_texture.texcoord);
+        const int index = attribute(name.c_str());
+        if (index == -1)
+            fail(source, what + " has no " + name + " attribute, which the base colour texture of material " +
+                             std::to_string(out.material) + " reads");
+        const std::string role = name + " of " + what;
+        const AccessorData uv =
+            read_accessor(source, index, {role, {TINYGLTF_TYPE_VEC2}, {kFloat, kUByte, kUShort}, Normalized::Required});
+        check_count(index, role, uv.count);
+        require_finite(source, accessor_label(index, role), uv);
+        out.texcoords.resize(vertex_count);
+        for (size_t v = 0; v < vertex_count; ++v) out.texcoords[v] = {float(uv.at(v, 0)), float(uv.at(v, 1))};
     }
 
     const int joints_index = attribute("JOINTS_0");
@@ -323,7 +363,8 @@ bool draws_triangles(const Model& model) {
 
 Model load_gltf(const std::filesystem::path& path) {
     const std::string file = path.string();
-    const tinygltf::Model doc = parse_file(path, file);
+    std::vector<ModelImage> images;
+    const tinygltf::Model doc = parse_file(path, file, images);
     const Source source{doc, file};
 
     gltf_detail::validate_required_extensions(source);
@@ -332,12 +373,14 @@ Model load_gltf(const std::filesystem::path& path) {
 
     Model model;
     model.path = path;
+    for (size_t m = 0; m < doc.materials.size(); ++m) model.materials.push_back(gltf_detail::convert_material(source, m));
+    model.images = convert_images(doc, std::move(images));
     size_t triangle_count = 0;
     for (size_t m = 0; m < doc.meshes.size(); ++m) {
         Mesh mesh;
         mesh.name = doc.meshes[m].name;
         for (size_t p = 0; p < doc.meshes[m].primitives.size(); ++p) {
-            std::optional<Primitive> primitive = convert_primitive(source, m, p);
+            std::optional<Primitive> primitive = convert_primitive(source, model.materials, m, p);
             if (!primitive) continue;
             triangle_count += primitive->indices.size() / 3;
             mesh.primitives.push_back(std::move(*primitive));
@@ -353,7 +396,6 @@ Model load_gltf(const std::filesystem::path& path) {
     model.roots = gltf_detail::scene_roots(source);
 
     for (size_t s = 0; s < doc.skins.size(); ++s) model.skins.push_back(gltf_detail::convert_skin(source, s));
-    for (const tinygltf::Material& material : doc.materials) model.material_names.push_back(material.name);
     check_joint_indices(source, model);
     for (size_t a = 0; a < doc.animations.size(); ++a)
         model.animations.push_back(gltf_detail::convert_animation(source, a));

@@ -148,7 +148,9 @@ Model load_mesh_file(const std::filesystem::path& path) {
         if (!p.indices.empty()) mesh.primitives.push_back(std::move(p));
     }
     if (mesh.primitives.empty()) throw Error(file + ": " + kNoTriangles);
-    for (unsigned m = 0; m < scene->mNumMaterials; ++m) model.material_names.push_back(material_name(*scene->mMaterials[m]));
+    // Names only: line sets select by them; the scene colours the surface (MTL colours are not read).
+    for (unsigned m = 0; m < scene->mNumMaterials; ++m)
+        model.materials.push_back(Material{.name = material_name(*scene->mMaterials[m]), .has_color = false});
     model.meshes.push_back(std::move(mesh));
     // OBJ and PLY have no scene graph worth keeping (OBJ groups are meshes here): one root node.
     model.nodes.push_back({.name = path.stem().string(), .mesh = 0});

@@ -22,11 +22,14 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include "scene/material.h"
+
 namespace lw {
 
 struct Primitive {
     std::vector<glm::vec3> positions;   // POSITION, object space
     std::vector<glm::vec3> normals;     // NORMAL, empty when the file has none
+    std::vector<glm::vec2> texcoords;   // TEXCOORD_n of its material's base colour texture, else empty
     std::vector<uint32_t> indices;      // triangle list, 3 per triangle, each < positions.size()
     std::vector<glm::u16vec4> joints;   // JOINTS_0, empty when not skinned
     std::vector<glm::vec4> weights;     // WEIGHTS_0, empty when not skinned
@@ -103,8 +106,13 @@ struct Model {
     std::vector<Camera> cameras;
     std::vector<Animation> animations;
     std::vector<Skin> skins;
-    std::vector<std::string> material_names;  // per glTF material ("" when unnamed)
+    std::vector<Material> materials;  // per glTF material (OBJ/PLY: names only)
+    std::vector<ModelImage> images;   // per glTF image, encoded
 };
+
+// Decodes image `image` of the model to RGBA8 (the texels as stored: sRGB for base colour).
+// Throws lw::Error naming the file and the image when it cannot be read or decoded.
+[[nodiscard]] ImageRGBA8 decode_model_image(const Model& model, int image);
 
 // Loads and validates a .gltf or .glb file. Throws lw::Error naming the file and the problem.
 [[nodiscard]] Model load_gltf(const std::filesystem::path& path);

@@ -3,11 +3,20 @@
 #include <algorithm>
 
 #include "core/error.h"
+#include "core/log.h"
 
 namespace lw {
 
 void append_mesh(TriangleMesh& mesh, const TriangleMesh& part) {
     const auto offset = static_cast<uint32_t>(mesh.positions.size());
+    if (!part.texcoords.empty() || !mesh.texcoords.empty()) {
+        pad_texcoords(mesh);
+        if (part.texcoords.empty()) {
+            mesh.texcoords.resize(mesh.texcoords.size() + part.positions.size(), glm::vec2(0.0f));
+        } else {
+            mesh.texcoords.insert(mesh.texcoords.end(), part.texcoords.begin(), part.texcoords.end());
+        }
+    }
     mesh.positions.insert(mesh.positions.end(), part.positions.begin(), part.positions.end());
     mesh.normals.insert(mesh.normals.end(), part.normals.begin(), part.normals.end());
     mesh.indices.reserve(mesh.indices.size() + part.indices.size());
@@ -56,6 +65,56 @@ float animation_duration(const LoadedScene& scene) {
     for (const Model& model : scene.models)
         duration = std::max(duration, clips_duration(model, select_clips(model, scene.desc.animation.clip)));
     return duration;
+}
+
+std::vector<size_t> model_of_faces(const LoadedScene& scene, size_t triangles, int subdivide) {
+    std::vector<size_t> model_of(triangles, 0);
+    size_t first = 0;
+    for (size_t m = 0; m < scene.model_triangles.size(); ++m) {
+        const size_t count = scene.model_triangles[m] << (2 * subdivide);  // each subdivision ×4
+        std::fill(model_of.begin() + std::ptrdiff_t(std::min(first, model_of.size())),
+                  model_of.begin() + std::ptrdiff_t(std::min(first + count, model_of.size())), m);
+        first += count;
+    }
+    return model_of;
+}
+
+SurfaceMaterials scene_materials(const LoadedScene& scene, const TriangleMesh& mesh, int subdivide, bool decode) {
+    SurfaceMaterials out;
+    std::vector<int32_t> first_of_model;
+    for (const Model& model : scene.models) {
+        first_of_model.push_back(int32_t(out.materials.size()));
+        for (const Material& material : model.materials) {
+            out.materials.push_back(material);
+            out.textures.emplace_back();
+            const int image = material.base_color_texture.image;
+            if (!decode || !material.has_color || image < 0) continue;
+            try {
+                out.textures.back() = decode_model_image(model, image);
+            } catch (const Error& e) {
+                log_warning(std::string(e.what()) + "; material \"" + material.name + "\" is drawn with its base colour factor");
+            }
+        }
+    }
+    if (mesh.face_material.size() != mesh.triangle_count()) return out;
+    const std::vector<size_t> model_of = model_of_faces(scene, mesh.triangle_count(), subdivide);
+    out.face_material.resize(mesh.triangle_count(), -1);
+    for (size_t t = 0; t < out.face_material.size(); ++t) {
+        const int32_t local = mesh.face_material[t];
+        const size_t model = model_of[t];
+        if (local >= 0 && size_t(local) < scene.models[model].materials.size())
+            out.face_material[t] = first_of_model[model] + local;
+    }
+    return out;
+}
+
+bool scene_needs_textures(const LoadedScene& scene, const SurfaceStyle& style) {
+    if (!style.materials) return false;
+    if (style.draw_surface) return true;
+    for (const Model& model : scene.models)
+        for (const Material& material : model.materials)
+            if (material.alpha_mode == AlphaMode::Mask) return true;
+    return false;
 }
 
 }  // namespace lw

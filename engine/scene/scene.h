@@ -12,6 +12,7 @@
 #include "scene/camera.h"
 #include "scene/model.h"
 #include "scene/scene_file.h"
+#include "scene/style.h"
 #include "scene/triangle_mesh.h"
 
 namespace lw {
@@ -37,6 +38,20 @@ struct LoadedScene {
 
 // The longest selected clip over the scene's models, seconds (0 when nothing plays).
 [[nodiscard]] float animation_duration(const LoadedScene& scene);
+
+// The model each triangle of `triangles` comes from, for the scene's merged mesh after
+// `subdivide` midpoint subdivisions (each ×4 triangles, in place).
+[[nodiscard]] std::vector<size_t> model_of_faces(const LoadedScene& scene, size_t triangles, int subdivide);
+
+// The materials `mesh` (the scene's merged mesh, `subdivide`d) is drawn with: every model's
+// materials one after another, each triangle pointing into that list; with `decode`, the
+// base colour textures too. A texture that cannot be read costs its texels, not the render:
+// the material keeps its factor and a warning names the image.
+[[nodiscard]] SurfaceMaterials scene_materials(const LoadedScene& scene, const TriangleMesh& mesh, int subdivide,
+                                               bool decode);
+
+// Whether drawing with `style` reads the materials' textures: a shaded surface, or holes.
+[[nodiscard]] bool scene_needs_textures(const LoadedScene& scene, const SurfaceStyle& style);
 
 // Appends `part` to `mesh` (indices offset).
 void append_mesh(TriangleMesh& mesh, const TriangleMesh& part);

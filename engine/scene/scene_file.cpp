@@ -330,6 +330,7 @@ SceneDesc parse_scene_json(const std::string& text, const std::filesystem::path&
         if (s == "none") scene.style.draw_surface = false;
     }
     if (r.has("color")) scene.style.color = r.color("color");
+    if (r.has("materials")) scene.style.materials = r.boolean("materials");
     if (r.has("background")) {
         if (r.at("background").is_string() && r.at("background").get<std::string>() == "transparent")
             scene.style.transparent = true;

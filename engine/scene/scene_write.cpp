@@ -145,6 +145,7 @@ std::string scene_json(const SceneDesc& desc, const ViewCamera& camera, const st
                       : style.shading == Shading::Unlit ? "unlit"
                                                         : "toon";
     root["color"] = vec3(style.color);
+    if (!style.materials) root["materials"] = false;
     root["background"] = style.transparent ? json("transparent") : vec3(style.background);
     if (style.samples != 0) root["samples"] = style.samples;
 

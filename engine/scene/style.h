@@ -18,7 +18,11 @@ enum class Shading { Flat = 0, Toon = 1, Unlit = 2 };
 
 struct SurfaceStyle {
     Shading shading = Shading::Toon;
-    glm::vec3 color{0.82f, 0.84f, 0.88f};     // surface colour, linear 0..1
+    glm::vec3 color{0.82f, 0.84f, 0.88f};     // surface colour, 0..1 as written (sRGB), of faces without a material
+    // The models' materials (scene key "materials"): glTF base colours and textures colour
+    // the surface, MASK cuts holes lines show through, BLEND is composited (scene/material.h).
+    // Off: every face takes `color` and is opaque.
+    bool materials = true;
     glm::vec3 background{1.0f, 1.0f, 1.0f};
     // The background's alpha is 0: the frame is premultiplied RGBA over nothing (the lines
     // and strokes blend with `over`, so compositing it over a colour gives the render over

@@ -101,6 +101,17 @@ void append_instance(TriangleMesh& out, const Model& model, const Primitive& pri
         }
     }
 
+    if (!primitive.texcoords.empty() || !out.texcoords.empty()) {
+        pad_texcoords(out);
+        if (primitive.texcoords.size() == positions.size()) {
+            const bool known = primitive.material >= 0 && size_t(primitive.material) < model.materials.size();
+            const glm::mat3 uv = known ? model.materials[size_t(primitive.material)].base_color_texture.uv_transform
+                                       : glm::mat3(1.0f);
+            for (const glm::vec2& t : primitive.texcoords) out.texcoords.push_back(glm::vec2(uv * glm::vec3(t, 1.0f)));
+        } else {
+            out.texcoords.resize(out.texcoords.size() + positions.size(), glm::vec2(0.0f));
+        }
+    }
     out.positions.insert(out.positions.end(), positions.begin(), positions.end());
     out.normals.insert(out.normals.end(), normals.begin(), normals.end());
     out.indices.reserve(out.indices.size() + local.size());
@@ -109,6 +120,8 @@ void append_instance(TriangleMesh& out, const Model& model, const Primitive& pri
 }
 
 }  // namespace
+
+void pad_texcoords(TriangleMesh& mesh) { mesh.texcoords.resize(mesh.positions.size(), glm::vec2(0.0f)); }
 
 TriangleMesh flatten(const Model& model, const std::vector<glm::mat4>& world) { return flatten(model, world, {}); }
 

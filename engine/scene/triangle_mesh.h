@@ -23,6 +23,9 @@ namespace lw {
 struct TriangleMesh {
     std::vector<glm::vec3> positions;
     std::vector<glm::vec3> normals;   // same size as positions, unit length
+    // Base colour texture coordinates (KHR_texture_transform applied): empty when no
+    // primitive has a textured material, else one per position (zero where it has none).
+    std::vector<glm::vec2> texcoords;
     std::vector<uint32_t> indices;    // 3 per triangle
     std::vector<int32_t> face_material;  // per triangle: its primitive's glTF material, -1 for none
 
@@ -50,6 +53,9 @@ struct Bounds {
 [[nodiscard]] TriangleMesh flatten(const Model& model, const std::vector<glm::mat4>& world,
                                    const std::vector<std::vector<glm::mat4>>& joint_matrices);
 [[nodiscard]] Bounds compute_bounds(const std::vector<glm::vec3>& positions);
+
+// Pads `texcoords` with zeros to one per position (a mesh gaining a textured part).
+void pad_texcoords(TriangleMesh& mesh);
 
 // Area-weighted vertex normals of an indexed triangle list (zero-area faces ignored).
 [[nodiscard]] std::vector<glm::vec3> vertex_normals(const std::vector<glm::vec3>& positions,

@@ -19,14 +19,7 @@ namespace {
 FaceGroups face_groups(const LoadedScene& scene, const TriangleMesh& mesh, const LineMesh& lines, int subdivide) {
     FaceGroups groups;
     if (mesh.face_material.size() != mesh.triangle_count()) return groups;
-    std::vector<size_t> model_of(mesh.triangle_count(), 0);
-    size_t first = 0;
-    for (size_t m = 0; m < scene.model_triangles.size(); ++m) {
-        const size_t count = scene.model_triangles[m] << (2 * subdivide);  // each subdivision ×4
-        std::fill(model_of.begin() + std::ptrdiff_t(std::min(first, model_of.size())),
-                  model_of.begin() + std::ptrdiff_t(std::min(first + count, model_of.size())), m);
-        first += count;
-    }
+    const std::vector<size_t> model_of = model_of_faces(scene, mesh.triangle_count(), subdivide);
     std::vector<std::pair<size_t, int32_t>> keys;  // (model, material) of each group
     for (uint32_t source : lines.mesh.source_face) {
         const std::pair key{model_of[source], mesh.face_material[source]};
@@ -36,14 +29,15 @@ FaceGroups face_groups(const LoadedScene& scene, const TriangleMesh& mesh, const
             it = keys.end() - 1;
             const Model& model = scene.models[key.first];
             groups.model_names.push_back(model.path.filename().string());
-            groups.material_names.push_back(key.second >= 0 && size_t(key.second) < model.material_names.size()
-                                                ? model.material_names[size_t(key.second)]
+            groups.material_names.push_back(key.second >= 0 && size_t(key.second) < model.materials.size()
+                                                ? model.materials[size_t(key.second)].name
                                                 : "");
         }
         groups.face_group.push_back(uint32_t(it - keys.begin()));
     }
     return groups;
 }
+
 
 // The scene's models: read from the description's paths, or given (meshes as arrays), then
 // named in the description so that line sets' "models" and messages see them.
@@ -88,6 +82,8 @@ SceneSession::SceneSession(const Context& ctx, SceneDesc desc, const SessionOpti
     if (!layers_.descs.empty()) renderer_.set_layers(layers_.styles);
     animated_ = has_model() && desc_.animation.play && animation_duration(scene_) > 0.0f;
     if (has_model()) {
+        textures_loaded_ = scene_needs_textures(scene_, desc_.style);
+        renderer_.set_materials(scene_materials(scene_, scene_.mesh, options.subdivide, textures_loaded_));
         // The line mesh is welded (and its feature size taken) in the pose of the first frame.
         const float start = options.start_seconds;
         renderer_.set_mesh(animated_ ? pose_scene(scene_, start) : scene_.mesh, desc_.lines.enabled,
@@ -217,6 +213,10 @@ bool SceneSession::parameterized() const {
 
 Frame SceneSession::frame(const FrameRequest& request) {
     sets_ = effective_line_sets(desc_.lines);  // the panel may have changed styles
+    if (has_model() && !textures_loaded_ && scene_needs_textures(scene_, desc_.style)) {  // the panel turned shading on
+        renderer_.set_materials(scene_materials(scene_, scene_.mesh, options_.subdivide, true));
+        textures_loaded_ = true;
+    }
     pose(request.when.seconds);
     const ViewCamera view = request.camera ? *request.camera : camera_at(request.when);
     const uint32_t width = renderer_.target().width, height = renderer_.target().height;

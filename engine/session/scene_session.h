@@ -149,6 +149,7 @@ private:
     FrameRenderer renderer_;
     bool animated_ = false;
     std::optional<float> posed_at_;              // the pose the renderer has
+    bool textures_loaded_ = false;               // the renderer has the materials' textures (decoded on first need)
     float last_seconds_ = 0.0f;
     std::vector<RibbonReport> ribbon_reports_;
 };

@@ -16,6 +16,8 @@ void add_frame_options(CLI::App* cmd, RenderOptions& o) {
     cmd->add_flag("--exr", o.exr, "Also write OUT/frame_0000.exr (RGBA + depth channel Z)");
     cmd->add_flag("--lines-only", o.lines_only, "Draw the lines over the background, without shading");
     cmd->add_flag("--no-lines", o.no_lines, "Shading only, no feature lines");
+    cmd->add_flag("--no-materials", o.no_materials,
+                  "Ignore the models' glTF materials: every face in the scene colour, opaque (scene key \"materials\": false)");
     cmd->add_option("--svg", o.svg, "Also write the lines as SVG, drawn as the PNG draws them (filled shapes per line set, hidden lines "
                     "in NAME-hidden, centre lines in a hidden NAME-centerlines group; under --frames FILE_NNNN.svg)");
     cmd->add_option("--hidden", o.hidden, "Hidden lines: none (default), dashed or faint")
@@ -38,6 +40,7 @@ void apply_frame_overrides(const RenderOptions& o, SceneDesc& desc) {
     if (o.lines_only && o.no_lines) throw usage_error("--lines-only and --no-lines leave nothing to draw");
     if (o.lines_only) desc.style.draw_surface = false;
     if (o.no_lines) desc.lines.enabled = false;
+    if (o.no_materials) desc.style.materials = false;
     if (!o.hidden.empty())
         desc.lines.hidden = o.hidden == "dashed" ? HiddenLines::Dashed : o.hidden == "faint" ? HiddenLines::Faint : HiddenLines::None;
     if (!o.svg.empty() && !desc.lines.enabled) throw usage_error("--svg needs lines (drop --no-lines)");

@@ -234,6 +234,8 @@ void draw_panel(ViewerState& s) {
             s.desc.style.draw_surface = shading != 3;
             if (shading != 3) s.desc.style.shading = Shading(shading);
         }
+        ImGui::Checkbox("materials", &s.desc.style.materials);
+        ImGui::SameLine();
         ImGui::ColorEdit3("surface", &s.desc.style.color.x, ImGuiColorEditFlags_NoInputs);
         ImGui::SameLine();
         ImGui::ColorEdit3("background", &s.desc.style.background.x, ImGuiColorEditFlags_NoInputs);

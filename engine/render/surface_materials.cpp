@@ -1,0 +1,114 @@
+#include "render/surface_materials.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "core/error.h"
+
+namespace lw {
+
+namespace {
+
+// Mirrors the vertex inputs of shaders/surface.vert.
+struct Vertex {
+    glm::vec3 position;
+    glm::vec3 normal;
+    glm::vec2 uv;
+};
+
+VkSamplerAddressMode address_mode(TextureWrap wrap) {
+    switch (wrap) {
+        case TextureWrap::MirroredRepeat: return VK_SAMPLER_ADDRESS_MODE_MIRRORED_REPEAT;
+        case TextureWrap::ClampToEdge: return VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+        case TextureWrap::Repeat: break;
+    }
+    return VK_SAMPLER_ADDRESS_MODE_REPEAT;
+}
+
+// The texture with its mip chain (averaged in linear light, core/image.h) in one upload.
+Image upload_texture(const Context& ctx, const ImageRGBA8& texels, bool mipmaps) {
+    const std::vector<ImageRGBA8> levels = mipmaps ? srgb_mip_chain(texels) : std::vector<ImageRGBA8>{texels};
+    std::vector<std::byte> bytes;
+    for (const ImageRGBA8& level : levels) {
+        const auto* p = reinterpret_cast<const std::byte*>(level.pixels.data());
+        bytes.insert(bytes.end(), p, p + level.pixels.size());
+    }
+    Image image(ctx, {.width = uint32_t(texels.width),
+                      .height = uint32_t(texels.height),
+                      .format = VK_FORMAT_R8G8B8A8_SRGB,
+                      .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                      .name = "material texture",
+                      .mip_levels = uint32_t(levels.size())});
+    upload_image(ctx, image, bytes);
+    return image;
+}
+
+}  // namespace
+
+GpuMesh upload_mesh(const Context& ctx, const TriangleMesh& mesh, const SurfaceMaterials* materials) {
+    const bool textured = mesh.texcoords.size() == mesh.positions.size();
+    std::vector<Vertex> vertices(mesh.positions.size());
+    for (size_t i = 0; i < vertices.size(); ++i)
+        vertices[i] = {mesh.positions[i], mesh.normals[i], textured ? mesh.texcoords[i] : glm::vec2(0.0f)};
+
+    const size_t triangles = mesh.triangle_count();
+    std::vector<uint32_t> order(triangles);
+    std::iota(order.begin(), order.end(), 0u);
+    const bool grouped = materials && materials->face_material.size() == triangles;
+    const auto material_of = [&](uint32_t t) { return grouped ? materials->face_material[t] : -1; };
+    const auto blended = [&](int m) {
+        return m >= 0 && size_t(m) < materials->materials.size() &&
+               materials->materials[size_t(m)].alpha_mode == AlphaMode::Blend;
+    };
+    if (grouped)
+        std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
+            const int ma = material_of(a), mb = material_of(b);
+            return std::pair(blended(ma), ma) < std::pair(blended(mb), mb);
+        });
+    std::vector<uint32_t> indices;
+    indices.reserve(mesh.indices.size());
+    GpuMesh out;
+    for (uint32_t t : order) {
+        const int m = material_of(t);
+        if (out.draws.empty() || out.draws.back().material != m)
+            out.draws.push_back({.material = m, .first_index = uint32_t(indices.size())});
+        for (int c = 0; c < 3; ++c) indices.push_back(mesh.indices[size_t(t) * 3 + size_t(c)]);
+        out.draws.back().index_count += 3;
+    }
+    out.vertices = upload_buffer(ctx, vertices, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, "mesh vertices");
+    out.indices = upload_buffer(ctx, indices, VK_BUFFER_USAGE_INDEX_BUFFER_BIT, "mesh indices");
+    out.index_count = uint32_t(indices.size());
+    return out;
+}
+
+Image white_texture(const Context& ctx) {
+    return upload_texture(ctx, ImageRGBA8{1, 1, {255, 255, 255, 255}}, false);
+}
+
+GpuMaterials::GpuMaterials(const Context& ctx, const SurfaceMaterials& materials)
+    : materials_(materials.materials) {
+    if (!materials.textures.empty() && materials.textures.size() != materials_.size())
+        throw Error("surface materials: " + std::to_string(materials.textures.size()) + " textures for " +
+                    std::to_string(materials_.size()) + " materials");
+    textures_.resize(materials_.size());
+    samplers_.resize(materials_.size());
+    for (size_t m = 0; m < materials.textures.size(); ++m) {
+        const ImageRGBA8& texels = materials.textures[m];
+        if (texels.width <= 0 || texels.height <= 0) continue;
+        const TextureRef& ref = materials_[m].base_color_texture;
+        textures_[m] = upload_texture(ctx, texels, ref.mipmaps);
+        samplers_[m] = create_sampler(ctx, {.filter = ref.nearest_mag ? VK_FILTER_NEAREST : VK_FILTER_LINEAR,
+                                            .min_filter = ref.nearest_min ? VK_FILTER_NEAREST : VK_FILTER_LINEAR,
+                                            .address_u = address_mode(ref.wrap_s),
+                                            .address_v = address_mode(ref.wrap_t),
+                                            .max_lod = float(textures_[m].mip_levels() - 1)});
+    }
+}
+
+bool GpuMaterials::has_mask() const {
+    return std::any_of(materials_.begin(), materials_.end(),
+                       [](const Material& m) { return m.alpha_mode == AlphaMode::Mask; });
+}
+
+}  // namespace lw
