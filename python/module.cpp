@@ -15,7 +15,7 @@
 PYBIND11_MODULE(linework, m) {
     m.doc() =
         "Linework: feature lines, stylized renders and stroke synthesizers, with NumPy arrays in and out.\n\n"
-        "  s = linework.Session('scenes/default.json', device='cpu')\n"
+        "  s = linework.Session('scenes/spot.json', device='cpu')\n"
         "  lines = s.lines()          # {'silhouette': [Polyline, ...], ...}\n"
         "  image = s.render()         # H x W x 4 uint8\n";
     m.attr("__version__") = LW_VERSION;

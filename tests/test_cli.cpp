@@ -51,15 +51,16 @@ TEST(Cli, RendersTheDefaultScene) {
     ASSERT_EQ(r.exit_code, 0) << r.output;
     EXPECT_NE(r.output.find("device: llvmpipe"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("size: 200x150"), std::string::npos) << r.output;
-    // spot's box (min and max of its positions, in glTF units).
-    EXPECT_NE(r.output.find("bounds: min (-0.4716, -0.7368, -0.6689), max (0.4716, 0.9536, 1.049), centre (0, 0.1084, "
-                            "0.19), radius 1.294"),
+    // The head scan's box (min and max of its positions, in glTF units).
+    EXPECT_NE(r.output.find("bounds: min (-4.276, -3.973, -2.59), max (4.276, 3.973, 2.59), centre (0, 1.192e-07, "
+                            "-9.537e-06), radius 6.386"),
               std::string::npos)
         << r.output;
-    EXPECT_NE(r.output.find("frame 0: "), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("progress: 24/24 frames"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("wrote " + (out / "frame_0000.png").string()), std::string::npos) << r.output;
     EXPECT_GT(fs::file_size(out / "frame_0000.png"), 500u);
     EXPECT_GT(fs::file_size(out / "frame_0000.exr"), 200u * 150u);  // 5 float channels, compressed
+    EXPECT_TRUE(fs::exists(out / "frame_0023.png")) << "the default scene turns over 24 frames";
 }
 
 TEST(Cli, ExplicitCameraChangesTheImage) {

@@ -14,6 +14,7 @@
 #include "render/frame_renderer.h"
 #include "render/surface_pass.h"
 #include "scene/scene.h"
+#include "session/scene_session.h"
 #include "test_support.h"
 
 namespace lw {
@@ -219,6 +220,31 @@ INSTANTIATE_TEST_SUITE_P(Models, Golden,
                                            GoldenCase{"LeePerrySmith/LeePerrySmith.glb", "lee_lines_only.png", true, false},
                                            GoldenCase{"Suzanne/Monkey.glb", "suzanne_toon.png", false, true}),
                          [](const auto& param_info) { return fs::path(param_info.param.golden).stem().string(); });
+
+// The README's first render shows what Linework is for (issue 17 item 7): SLAM strokes on
+// the silhouettes and suggestive contours, suggestive contours actually drawn, antialiased
+// (the default samples), a camera that moves so that coherence has something to hold.
+using test::GpuTest;
+
+TEST_F(GpuTest, DefaultSceneShowsSlamStrokesAndSuggestiveContours) {
+    SceneDesc desc = load_scene_file(test::source_dir() / "scenes/default.json");
+    EXPECT_FALSE(desc.description.empty());
+    EXPECT_FALSE(desc.lines.styles[size_t(LineType::Silhouette)].slam.empty());
+    EXPECT_FALSE(desc.lines.styles[size_t(LineType::Suggestive)].slam.empty());
+    EXPECT_EQ(surface_samples(desc.style), 4u);
+    EXPECT_EQ(desc.camera_path.kind, CameraPath::Kind::Orbit);
+    desc.width = 320, desc.height = 240;
+    SceneSession session(ctx(), desc);
+    const Frame frame = session.frame({});
+    std::map<std::string, size_t> paths;
+    for (const LineSetFrame& set : frame.sets) paths[set.name] = set.paths.size();
+    EXPECT_GE(paths["silhouette"], 5u);
+    EXPECT_GE(paths["suggestive"], 10u) << "a face: eyelids, nose, mouth, cheeks";
+    size_t partial = 0;  // antialiased stroke edges: neither paper nor full ink
+    for (size_t i = 0; i < frame.image.color.pixels.size(); i += 4)
+        if (frame.image.color.pixels[i] > 40 && frame.image.color.pixels[i] < 200) ++partial;
+    EXPECT_GT(partial, 500u);
+}
 
 }  // namespace
 }  // namespace lw

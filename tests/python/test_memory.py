@@ -39,7 +39,7 @@ def assert_flat(step, rounds, what, limit=4.0):
 
 
 def test_a_thousand_renders_do_not_grow_the_process():
-    s = linework.Session(SOURCE / "scenes/default.json", device="cpu", size=(96, 72), validation=False)
+    s = linework.Session(SOURCE / "scenes/spot.json", device="cpu", size=(96, 72), validation=False)
     for _ in range(50):  # the allocator's and lavapipe's pools settle
         s.render()
         s.lines()
@@ -54,7 +54,7 @@ def test_a_thousand_renders_do_not_grow_the_process():
 
 def test_sessions_opened_and_closed_do_not_accumulate():
     def cycle():
-        s = linework.Session(SOURCE / "scenes/default.json", device="cpu", size=(64, 48), validation=False)
+        s = linework.Session(SOURCE / "scenes/spot.json", device="cpu", size=(64, 48), validation=False)
         s.render()
         del s
         gc.collect()

@@ -46,7 +46,7 @@ def test_stubs_name_every_binding():
 
 
 def test_sessions_in_threads_draw_what_they_draw_alone():
-    scenes = [SOURCE / "scenes/default.json", SOURCE / "scenes/models/spot/spot.glb"]
+    scenes = [SOURCE / "scenes/spot.json", SOURCE / "scenes/models/spot/spot.glb"]
     alone = [linework.Session(s, device="cpu", size=(160, 120)).render() for s in scenes]
     sessions = [linework.Session(s, device="cpu", size=(160, 120)) for s in scenes]
     results = [[None] * 8 for _ in scenes]
@@ -67,5 +67,5 @@ def test_sessions_in_threads_draw_what_they_draw_alone():
 
 
 def test_time_and_frame_name_the_same_frame():
-    s = linework.Session(SOURCE / "scenes/default.json", device="cpu", size=(96, 72))
+    s = linework.Session(SOURCE / "scenes/spot.json", device="cpu", size=(96, 72))
     assert np.array_equal(s.render(0.0), s.render(frame=0))

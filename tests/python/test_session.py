@@ -20,8 +20,8 @@ def cli_render(tmp_path, scene, *flags):
 
 
 def test_lines_and_render_equal_the_cli(tmp_path):
-    image, svg = cli_render(tmp_path, "scenes/default.json", "--size", "240x180")
-    s = linework.Session(SOURCE / "scenes/default.json", device="cpu", size=SIZE)
+    image, svg = cli_render(tmp_path, "scenes/spot.json", "--size", "240x180")
+    s = linework.Session(SOURCE / "scenes/spot.json", device="cpu", size=SIZE)
     lines = s.lines()
     assert list(lines) == ["silhouette", "suggestive", "crease", "border"]
     assert assert_lines_match_svg(lines, svg) > 100
@@ -108,12 +108,12 @@ def test_camera_overrides_and_view_matrix(tmp_path):
 
 
 def test_configure_is_a_scene_edit(tmp_path):
-    s = linework.Session(SOURCE / "scenes/default.json", device="cpu", size=SIZE)
+    s = linework.Session(SOURCE / "scenes/spot.json", device="cpu", size=SIZE)
     before = s.render()
     edit = {"lines": {"silhouette": {"width": 4, "color": [0.8, 0.1, 0.1]}, "crease": {"angle": 60}},
             "background": [0.9, 0.9, 1]}
     s.configure(edit)
-    scene = json.loads((SOURCE / "scenes/default.json").read_text())
+    scene = json.loads((SOURCE / "scenes/spot.json").read_text())
     scene.update(edit)
     scene["model"] = str(SOURCE / "scenes" / scene["model"])
     scene["size"] = list(SIZE)
@@ -206,7 +206,7 @@ def test_errors_carry_the_cli_messages(tmp_path):
 
 
 def test_bad_edits_and_odd_arguments_leave_a_working_session(tmp_path):
-    s = linework.Session(SOURCE / "scenes/default.json", device="cpu", size=(64, 48))
+    s = linework.Session(SOURCE / "scenes/spot.json", device="cpu", size=(64, 48))
     image = s.render()
     # A non-live key that fails to load keeps the old session.
     with pytest.raises(ValueError, match="nope.glb"):
