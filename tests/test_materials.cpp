@@ -306,6 +306,16 @@ TEST(Materials, BadMaterialsNameTheFileAndTheMaterial) {
     }
 }
 
+// A .glb stores its images in buffer views (copied once the views are checked); images no
+// base colour uses are not kept.
+TEST(Materials, BufferViewImagesDecode) {
+    const Model box = load_model(test::data_dir() / "models/BoxTextured/BoxTextured.glb");
+    ASSERT_EQ(box.materials.size(), 1u);
+    const ImageRGBA8 texels = decode_model_image(box, box.materials[0].base_color_texture.image);
+    EXPECT_GT(texels.width, 0);
+    EXPECT_EQ(texels.pixels.size(), size_t(texels.width) * size_t(texels.height) * 4);
+}
+
 TEST(Materials, MipChainAveragesInLinearLightWeightedByAlpha) {
     // 2 × 2: black and white (opaque) average to sRGB 188, not 128; a transparent red texel
     // adds no red.

@@ -48,12 +48,14 @@ using Normalized = AccessorRule::Normalized;
 
 // Images are kept as the file holds them (scene/material.h): decoding every texture of a
 // model costs seconds and most renders of it draw lines, not textures. tinygltf hands over
-// the bytes of buffer-view, data-URI and external images alike; a missing external image
-// never reaches here (tinygltf warns and goes on) and is named when a texture needs it.
-bool keep_image(tinygltf::Image*, const int index, std::string*, std::string*, int, int, const unsigned char* bytes,
-                int size, void* user) {
+// data-URI and external images here; a missing external image never reaches here (tinygltf
+// warns and goes on) and is named when a texture needs it. Buffer-view images are skipped:
+// tinygltf 2.7 passes their bytes before any check that the view lies inside its buffer
+// (a crafted .glb would make the copy read past it); convert_images copies them, checked.
+bool keep_image(tinygltf::Image* image, const int index, std::string*, std::string*, int, int,
+                const unsigned char* bytes, int size, void* user) {
     auto& images = *static_cast<std::vector<ModelImage>*>(user);
-    if (index < 0) return true;
+    if (index < 0 || image->bufferView >= 0) return true;
     if (images.size() <= size_t(index)) images.resize(size_t(index) + 1);
     if (bytes && size > 0) images[size_t(index)].bytes.assign(bytes, bytes + size);
     return true;
@@ -174,15 +176,37 @@ std::vector<uint32_t> triangle_list(const Source& source, const std::string& wha
     return out;
 }
 
-// Names for messages, and why an image has no bytes (an external file that did not load).
-std::vector<ModelImage> convert_images(const tinygltf::Model& doc, std::vector<ModelImage> images) {
+// The images a material's base colour names, with names for messages and why one has no
+// bytes; buffer-view images copied here, after validate_buffer_views. Other images (normal,
+// metal-roughness maps) are dropped: nothing draws them.
+std::vector<ModelImage> convert_images(const Source& source, const std::vector<Material>& materials,
+                                       std::vector<ModelImage> images) {
+    const tinygltf::Model& doc = source.doc;
     images.resize(doc.images.size());
+    std::vector<char> used(doc.images.size(), 0);
+    for (const Material& material : materials)
+        if (material.base_color_texture.image >= 0) used[size_t(material.base_color_texture.image)] = 1;
     for (size_t i = 0; i < doc.images.size(); ++i) {
         const tinygltf::Image& in = doc.images[i];
-        images[i].name = !in.name.empty() ? in.name : in.uri.rfind("data:", 0) == 0 ? std::string() : in.uri;
-        if (images[i].bytes.empty())
-            images[i].problem = in.uri.empty() || in.uri.rfind("data:", 0) == 0 ? "the image has no data"
-                                                                                : "cannot read " + in.uri;
+        ModelImage& out = images[i];
+        out.name = !in.name.empty() ? in.name : in.uri.rfind("data:", 0) == 0 ? std::string() : in.uri;
+        if (!used[i]) {
+            out.bytes.clear();
+            out.problem = "no material's base colour uses it";
+            continue;
+        }
+        if (in.bufferView >= 0) {
+            if (size_t(in.bufferView) >= doc.bufferViews.size())
+                fail(source, "image " + std::to_string(i) + " names bufferView " + std::to_string(in.bufferView) +
+                                 " but the file has " + std::to_string(doc.bufferViews.size()));
+            const tinygltf::BufferView& view = doc.bufferViews[size_t(in.bufferView)];
+            const auto& data = doc.buffers[size_t(view.buffer)].data;  // in range: validate_buffer_views
+            out.bytes.assign(data.begin() + std::ptrdiff_t(view.byteOffset),
+                             data.begin() + std::ptrdiff_t(view.byteOffset + view.byteLength));
+        }
+        if (out.bytes.empty())
+            out.problem = in.uri.empty() || in.uri.rfind("data:", 0) == 0 ? "the image has no data"
+                                                                           : "cannot read " + in.uri;
     }
     return images;
 }
@@ -374,7 +398,7 @@ Model load_gltf(const std::filesystem::path& path) {
     Model model;
     model.path = path;
     for (size_t m = 0; m < doc.materials.size(); ++m) model.materials.push_back(gltf_detail::convert_material(source, m));
-    model.images = convert_images(doc, std::move(images));
+    model.images = convert_images(source, model.materials, std::move(images));
     size_t triangle_count = 0;
     for (size_t m = 0; m < doc.meshes.size(); ++m) {
         Mesh mesh;
