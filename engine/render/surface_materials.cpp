@@ -106,9 +106,4 @@ GpuMaterials::GpuMaterials(const Context& ctx, const SurfaceMaterials& materials
     }
 }
 
-bool GpuMaterials::has_mask() const {
-    return std::any_of(materials_.begin(), materials_.end(),
-                       [](const Material& m) { return m.alpha_mode == AlphaMode::Mask; });
-}
-
 }  // namespace lw

@@ -48,7 +48,6 @@ public:
     size_t size() const { return materials_.size(); }
     const Material& material(size_t m) const { return materials_[m]; }
     bool textured(size_t m) const { return textures_[m].get() != VK_NULL_HANDLE; }
-    bool has_mask() const;  // some material cuts holes (the depth-only pass must test alpha)
     // The texture of a textured material.
     VkImageView view(size_t m) const { return textures_[m].view(); }
     VkSampler sampler(size_t m) const { return samplers_[m].get(); }
