@@ -1,6 +1,7 @@
 #include "scene/scene.h"
 
 #include <algorithm>
+#include <map>
 
 #include "core/error.h"
 #include "core/log.h"
@@ -84,16 +85,25 @@ SurfaceMaterials scene_materials(const LoadedScene& scene, const TriangleMesh& m
     std::vector<int32_t> first_of_model;
     for (const Model& model : scene.models) {
         first_of_model.push_back(int32_t(out.materials.size()));
+        // Each image decoded once, however many materials share it (an atlas usually is).
+        std::map<int, std::pair<ImageRGBA8, std::string>> decoded;  // image → texels, or why not
         for (const Material& material : model.materials) {
             out.materials.push_back(material);
             out.textures.emplace_back();
             const int image = material.base_color_texture.image;
             if (!decode || !material.has_color || image < 0) continue;
-            try {
-                out.textures.back() = decode_model_image(model, image);
-            } catch (const Error& e) {
-                log_warning(std::string(e.what()) + "; material \"" + material.name + "\" is drawn with its base colour factor");
+            auto [it, first] = decoded.try_emplace(image);
+            if (first) {
+                try {
+                    it->second.first = decode_model_image(model, image);
+                } catch (const Error& e) {
+                    it->second.second = e.what();
+                }
             }
+            if (it->second.second.empty())
+                out.textures.back() = it->second.first;
+            else
+                log_warning(it->second.second + "; material \"" + material.name + "\" is drawn with its base colour factor");
         }
     }
     if (mesh.face_material.size() != mesh.triangle_count()) return out;
