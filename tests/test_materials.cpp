@@ -11,6 +11,7 @@
 
 #include "core/color.h"
 #include "core/error.h"
+#include "core/random.h"
 #include "io/image_io.h"
 #include "render/surface_reference.h"
 #include "scene/scene.h"
@@ -162,6 +163,60 @@ TEST_F(GpuTest, MaterialsShowTheirTexelsAndFactors) {
         for (int c = 0; c < 3; ++c)
             EXPECT_NEAR(int(off.image.at(p.x, p.y)[c]), int(std::lround(desc.style.color[c] * 255.0f)), 1);
     }
+}
+
+// A 64 × 64 texture of black and white texels drawn 2–3× smaller than it is, with each
+// minification filter glTF names. NEAREST without mipmaps shows stored texels only (Vulkan
+// takes minFilter only where λ > 0, which a one-level sampler with maxLod 0 never reaches);
+// *_MIPMAP_NEAREST reads one level, not a blend of two. The CPU reference filters as glTF says.
+TEST_F(GpuTest, MinificationFollowsTheSampler) {
+    const auto dir = test::temp_dir();
+    ImageRGBA8 noise{64, 64, std::vector<uint8_t>(64 * 64 * 4, 255)};
+    Rng rng(17);
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < 64; ++x) {
+            const uint8_t v = rng.uniform() < 0.5f ? 0 : 255;
+            uint8_t* p = noise.at(x, y);
+            p[0] = p[1] = p[2] = v;
+        }
+    write_png(dir / "noise.png", noise);
+    const auto draw = [&](int min_filter, int size) {
+        const json doc = {{"images", {{{"uri", "noise.png"}}}},
+                          {"samplers", {{{"magFilter", 9729}, {"minFilter", min_filter}}}},
+                          {"textures", {{{"source", 0}, {"sampler", 0}}}},
+                          {"materials", {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}}}};
+        write_quads(dir, "noise", {{{-1.0f, -1.0f}, {1.0f, 1.0f}, 0.0f, 0}}, doc);
+        SceneDesc desc = parse_scene_json(R"({"model": "noise.gltf", "shading": "unlit", "lines": false, "samples": 1,
+            "camera": {"eye": [0, 0, 4], "target": [0, 0, 0], "fov": 30}})",
+                                          dir / "scene.json");
+        desc.width = desc.height = size;
+        return render(ctx(), desc);
+    };
+    // Pixels well inside the quad (it covers 93 % of the frame).
+    const auto inside = [](const ImageRGBA8& image, auto&& each) {
+        const int m = image.width / 8;
+        for (int y = m; y < image.height - m; ++y)
+            for (int x = m; x < image.width - m; ++x) each(image.at(x, y));
+    };
+
+    const Rendered nearest = draw(9728, 32);  // NEAREST, no mip chain: 2.1 texels a pixel
+    int grey = 0, pixels = 0;
+    inside(nearest.image, [&](const uint8_t* p) {
+        ++pixels;
+        if (p[0] > 1 && p[0] < 254) ++grey;
+    });
+    EXPECT_EQ(grey, 0) << "of " << pixels << " pixels: NEAREST minification blended texels";
+    // Where a pixel centre falls within rounding of a texel edge the two may pick neighbours.
+    EXPECT_LT(compare_images(nearest.image, nearest.reference, 1).differing_fraction, 0.01) << "GPU against the CPU reference";
+
+    // 2.9 texels a pixel (λ ≈ 1.5): one level, or a blend of levels 1 and 2.
+    const Rendered one_level = draw(9985, 24);   // LINEAR_MIPMAP_NEAREST
+    const Rendered two_levels = draw(9987, 24);  // LINEAR_MIPMAP_LINEAR
+    const double own = mean_abs_difference(one_level.image, one_level.reference);
+    const double other = mean_abs_difference(one_level.image, two_levels.image);
+    EXPECT_LT(own, 1.0) << "MIPMAP_NEAREST against its CPU reference";
+    EXPECT_GT(other, 4.0 * own + 1.0) << "MIPMAP_NEAREST is not drawn as MIPMAP_LINEAR";
+    EXPECT_LT(mean_abs_difference(two_levels.image, two_levels.reference), 1.0);
 }
 
 // The milk truck: four materials, two of them textured (one atlas, mipmapped). Its unlit

@@ -210,7 +210,7 @@ Handle<VkSampler> create_sampler(const Context& ctx, const SamplerDesc& desc) {
     VkSamplerCreateInfo info{.sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO,
                              .magFilter = desc.filter,
                              .minFilter = desc.min_filter == VK_FILTER_MAX_ENUM ? desc.filter : desc.min_filter,
-                             .mipmapMode = desc.max_lod > 0.0f ? VK_SAMPLER_MIPMAP_MODE_LINEAR : VK_SAMPLER_MIPMAP_MODE_NEAREST,
+                             .mipmapMode = desc.mipmap_mode,
                              .addressModeU = desc.address_u,
                              .addressModeV = desc.address_v,
                              .addressModeW = desc.address_w,

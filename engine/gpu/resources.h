@@ -127,7 +127,10 @@ struct SamplerDesc {
     VkSamplerAddressMode address_u = VK_SAMPLER_ADDRESS_MODE_REPEAT;
     VkSamplerAddressMode address_v = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
     VkSamplerAddressMode address_w = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    float max_lod = 0.0f;                     // > 0: mip levels up to it, blended linearly
+    // Vulkan picks minFilter only where the clamped λ > 0, so a one-level image that should
+    // minify with its own filter needs max_lod > 0 and NEAREST mip selection (level 0 for λ ≤ 0.5).
+    float max_lod = 0.0f;
+    VkSamplerMipmapMode mipmap_mode = VK_SAMPLER_MIPMAP_MODE_LINEAR;
 };
 [[nodiscard]] Handle<VkSampler> create_sampler(const Context& ctx, const SamplerDesc& desc);
 

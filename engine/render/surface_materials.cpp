@@ -98,11 +98,17 @@ GpuMaterials::GpuMaterials(const Context& ctx, const SurfaceMaterials& materials
         if (texels.width <= 0 || texels.height <= 0) continue;
         const TextureRef& ref = materials_[m].base_color_texture;
         textures_[m] = upload_texture(ctx, texels, ref.mipmaps);
-        samplers_[m] = create_sampler(ctx, {.filter = ref.nearest_mag ? VK_FILTER_NEAREST : VK_FILTER_LINEAR,
-                                            .min_filter = ref.nearest_min ? VK_FILTER_NEAREST : VK_FILTER_LINEAR,
-                                            .address_u = address_mode(ref.wrap_s),
-                                            .address_v = address_mode(ref.wrap_t),
-                                            .max_lod = float(textures_[m].mip_levels() - 1)});
+        // One level (minFilter NEAREST or LINEAR without mipmaps): max_lod 0.25 keeps λ > 0
+        // minified by minFilter while NEAREST mip selection stays on level 0 (resources.h).
+        const uint32_t levels = textures_[m].mip_levels();
+        samplers_[m] = create_sampler(
+            ctx, {.filter = ref.nearest_mag ? VK_FILTER_NEAREST : VK_FILTER_LINEAR,
+                  .min_filter = ref.nearest_min ? VK_FILTER_NEAREST : VK_FILTER_LINEAR,
+                  .address_u = address_mode(ref.wrap_s),
+                  .address_v = address_mode(ref.wrap_t),
+                  .max_lod = levels > 1 ? float(levels - 1) : 0.25f,
+                  .mipmap_mode = ref.nearest_mip || levels == 1 ? VK_SAMPLER_MIPMAP_MODE_NEAREST
+                                                                : VK_SAMPLER_MIPMAP_MODE_LINEAR});
     }
 }
 

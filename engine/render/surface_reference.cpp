@@ -60,13 +60,17 @@ glm::vec4 sample_level(const LinearLevel& l, glm::vec2 uv, bool nearest, const T
 }
 
 // Vulkan §16 "Texel Filtering": λ = log₂ ρ of the larger footprint axis; magnification at
-// λ ≤ 0, else a linear blend of the two nearest levels.
+// λ ≤ 0, else the nearest level (level ⌈d + ½⌉ − 1) or a linear blend of the two nearest.
 glm::vec4 sample(const std::vector<LinearLevel>& chain, const TextureRef& ref, glm::vec2 uv, glm::vec2 dx, glm::vec2 dy) {
     const glm::vec2 size(chain[0].width, chain[0].height);
     const float rho = std::max(glm::length(dx * size), glm::length(dy * size));
     const float lambda = rho > 0.0f ? std::log2(rho) : -1.0f;
     if (lambda <= 0.0f) return sample_level(chain[0], uv, ref.nearest_mag, ref);
     const float d = std::min(lambda, float(chain.size() - 1));
+    if (ref.nearest_mip) {
+        const int level = d <= 0.5f ? 0 : int(std::ceil(d + 0.5f)) - 1;
+        return sample_level(chain[size_t(level)], uv, ref.nearest_min, ref);
+    }
     const int lo = int(std::floor(d));
     const int hi = std::min(lo + 1, int(chain.size()) - 1);
     return glm::mix(sample_level(chain[size_t(lo)], uv, ref.nearest_min, ref),

@@ -37,11 +37,10 @@ void apply_sampler(const Source& source, int index, TextureRef& ref) {
         default: fail(source, what + " has unknown magFilter " + std::to_string(s.magFilter));
     }
     switch (s.minFilter) {
-        case -1: case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR: case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_NEAREST:
-            break;
-        case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_NEAREST: case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_LINEAR:
-            ref.nearest_min = true;
-            break;
+        case -1: case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR: break;
+        case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_NEAREST: ref.nearest_mip = true; break;
+        case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_LINEAR: ref.nearest_min = true; break;
+        case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_NEAREST: ref.nearest_min = ref.nearest_mip = true; break;
         case TINYGLTF_TEXTURE_FILTER_LINEAR: ref.mipmaps = false; break;
         case TINYGLTF_TEXTURE_FILTER_NEAREST: ref.mipmaps = false; ref.nearest_min = true; break;
         default: fail(source, what + " has unknown minFilter " + std::to_string(s.minFilter));

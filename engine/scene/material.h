@@ -37,6 +37,7 @@ struct TextureRef {
     bool nearest_mag = false;  // magnification filter NEAREST (else LINEAR)
     bool nearest_min = false;  // minification within a level NEAREST (else LINEAR)
     bool mipmaps = true;       // the minification filter reads mip levels
+    bool nearest_mip = false;  // ... the nearest one (*_MIPMAP_NEAREST), else a blend of two
     glm::mat3 uv_transform{1.0f};  // KHR_texture_transform (offset · rotation · scale)
 };
 
