@@ -86,7 +86,7 @@ SceneSession::SceneSession(const Context& ctx, SceneDesc desc, const SessionOpti
         renderer_.set_materials(scene_materials(scene_, scene_.mesh, options.subdivide, textures_loaded_));
         // The line mesh is welded (and its feature size taken) in the pose of the first frame.
         const float start = options.start_seconds;
-        renderer_.set_mesh(animated_ ? pose_scene(scene_, start) : scene_.mesh, desc_.lines.enabled,
+        renderer_.set_mesh(animated_ ? posed_mesh(start) : scene_.mesh, desc_.lines.enabled,
                            desc_.lines.params.crease_angle_deg);
         if (animated_) posed_at_ = start;
         if (const LineMesh* lines = renderer_.line_mesh())
@@ -182,17 +182,23 @@ bool SceneSession::line_set_textured(size_t set) const { return set < textured_.
 
 void SceneSession::rebuild_lines() {
     if (!has_model()) return;
-    renderer_.set_mesh(animated_ ? pose_scene(scene_, posed_at_.value_or(0.0f)) : scene_.mesh, desc_.lines.enabled,
+    renderer_.set_mesh(animated_ ? posed_mesh(posed_at_.value_or(0.0f)) : scene_.mesh, desc_.lines.enabled,
                        desc_.lines.params.crease_angle_deg);
     if (const LineMesh* lines = renderer_.line_mesh())
         renderer_.set_face_groups(face_groups(scene_, scene_.mesh, *lines, options_.subdivide));
 }
 
-void SceneSession::pose(float seconds) {
-    if (!animated_ || posed_at_ == seconds) return;
+// The scene at `seconds`, subdivided as the rest mesh was: the triangles (and so the
+// materials' face list and the line mesh) are the same in every pose.
+TriangleMesh SceneSession::posed_mesh(float seconds) const {
     TriangleMesh posed = pose_scene(scene_, seconds);
     if (options_.subdivide > 0) posed = subdivide_midpoint(posed, options_.subdivide);
-    renderer_.deform(posed);
+    return posed;
+}
+
+void SceneSession::pose(float seconds) {
+    if (!animated_ || posed_at_ == seconds) return;
+    renderer_.deform(posed_mesh(seconds));
     posed_at_ = seconds;
 }
 

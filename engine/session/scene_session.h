@@ -134,6 +134,7 @@ public:
 private:
     void load_line_styles();
     void pose(float seconds);
+    [[nodiscard]] TriangleMesh posed_mesh(float seconds) const;
     double draw_ribbons(Frame& frame, uint64_t seed);
     bool parameterized() const;
 
