@@ -58,10 +58,11 @@ glm::vec3 parse_color(const std::string& text, const std::string& where) {
 
 std::string hex_color(glm::vec3 c) {
     char text[8];
-    auto byte = [](float v) { return int(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); };
-    std::snprintf(text, sizeof text, "#%02x%02x%02x", byte(c.r), byte(c.g), byte(c.b));
+    std::snprintf(text, sizeof text, "#%02x%02x%02x", unit_to_byte(c.r), unit_to_byte(c.g), unit_to_byte(c.b));
     return text;
 }
+
+uint8_t unit_to_byte(float v) { return uint8_t(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); }
 
 float srgb_to_linear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
 

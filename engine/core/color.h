@@ -2,6 +2,7 @@
 // (scene files, line sets, stroke files in JSON and SVG, the Python module) and written back.
 #pragma once
 
+#include <cstdint>
 #include <string>
 
 #include <glm/glm.hpp>
@@ -18,6 +19,10 @@ namespace lw {
 // stored encoded, glTF factors and filtering are linear.
 [[nodiscard]] float srgb_to_linear(float encoded);
 [[nodiscard]] float linear_to_srgb(float linear);
+
+// A value in [0, 1] (clamped) as a byte 0–255, rounded to nearest: how colours and texels
+// are stored.
+[[nodiscard]] uint8_t unit_to_byte(float v);
 
 // "#rrggbb", components clamped to [0, 1].
 [[nodiscard]] std::string hex_color(glm::vec3 c);

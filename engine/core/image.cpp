@@ -1,6 +1,7 @@
 #include "core/image.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
@@ -13,10 +14,19 @@ namespace lw {
 
 namespace {
 
+// Linear light of each sRGB byte.
+const std::array<float, 256>& srgb_decode() {
+    static const std::array<float, 256> table = [] {
+        std::array<float, 256> t{};
+        for (int v = 0; v < 256; ++v) t[size_t(v)] = srgb_to_linear(float(v) / 255.0f);
+        return t;
+    }();
+    return table;
+}
+
 // A level as linear, alpha-weighted colour (r·a, g·a, b·a, a): what averaging needs.
 std::vector<float> premultiplied_linear(const ImageRGBA8& image) {
-    float decode[256];
-    for (int v = 0; v < 256; ++v) decode[v] = srgb_to_linear(float(v) / 255.0f);
+    const std::array<float, 256>& decode = srgb_decode();
     std::vector<float> out(image.pixels.size());
     for (size_t i = 0; i < image.pixels.size(); i += 4) {
         const float a = float(image.pixels[i + 3]) / 255.0f;
@@ -26,13 +36,12 @@ std::vector<float> premultiplied_linear(const ImageRGBA8& image) {
     return out;
 }
 
-uint8_t to_byte(float v) { return uint8_t(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); }
-
 }  // namespace
 
 std::vector<ImageRGBA8> srgb_mip_chain(const ImageRGBA8& image) {
     std::vector<ImageRGBA8> levels{image};
     std::vector<float> above = premultiplied_linear(image);
+    const std::array<float, 256>& decode = srgb_decode();
     int w = image.width, h = image.height;
     while (w > 1 || h > 1) {
         const int nw = std::max(1, w / 2), nh = std::max(1, h / 2);
@@ -52,8 +61,19 @@ std::vector<ImageRGBA8> srgb_mip_chain(const ImageRGBA8& image) {
                 for (int c = 0; c < 4; ++c) texel[c] = sum[c] / n;
                 uint8_t* out = encoded.at(x, y);
                 const float a = texel[3];
-                for (int c = 0; c < 3; ++c) out[c] = a > 0.0f ? to_byte(linear_to_srgb(texel[c] / a)) : 0;
-                out[3] = to_byte(a);
+                if (a > 0.0f) {
+                    for (int c = 0; c < 3; ++c) out[c] = unit_to_byte(linear_to_srgb(texel[c] / a));
+                } else {
+                    // All transparent: the plain mean of the colours above, so that filtering
+                    // across a cut-out's edge blends towards its colour, not towards black.
+                    const ImageRGBA8& up = levels.back();
+                    float plain[3] = {0, 0, 0};
+                    for (int sy = y0; sy <= y1; ++sy)
+                        for (int sx = x0; sx <= x1; ++sx)
+                            for (int c = 0; c < 3; ++c) plain[c] += decode[up.at(sx, sy)[c]];
+                    for (int c = 0; c < 3; ++c) out[c] = unit_to_byte(linear_to_srgb(plain[c] / n));
+                }
+                out[3] = unit_to_byte(a);
             }
         }
         levels.push_back(std::move(encoded));

@@ -6,6 +6,7 @@
 
 #include <glm/glm.hpp>
 
+#include "core/color.h"
 #include "core/error.h"
 #include "ribbon/dp.h"
 
@@ -242,7 +243,7 @@ ImageRGBA8 generate_exemplar(const std::string& name, int width, int height, uin
             const auto a = uint8_t(std::lround(alpha * 255.0f));
             if (a == 0) continue;
             uint8_t* px = image.at(x, y);
-            for (int c = 0; c < 3; ++c) px[c] = uint8_t(std::lround(std::clamp(sample.rgb[c], 0.0f, 1.0f) * 255.0f));
+            for (int c = 0; c < 3; ++c) px[c] = unit_to_byte(sample.rgb[c]);
             px[3] = a;
         }
     return image;

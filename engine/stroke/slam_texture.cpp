@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/color.h"
 #include "core/error.h"
 
 namespace lw {
@@ -21,7 +22,7 @@ SlamTexture::SlamTexture(const Context& ctx, const Slam& slam)
         throw Error("SLAM texture: ink size does not match levels × height × length");
     std::vector<std::byte> texels(slam.ink.size());
     for (size_t i = 0; i < texels.size(); ++i)
-        texels[i] = std::byte(uint8_t(std::lround(std::clamp(slam.ink[i], 0.0f, 1.0f) * 255.0f)));
+        texels[i] = std::byte(unit_to_byte(slam.ink[i]));
     upload_image(ctx, image_, texels);
 }
 
