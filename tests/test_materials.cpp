@@ -373,6 +373,17 @@ TEST(Materials, BadMaterialsNameTheFileAndTheMaterial) {
                   .find("names texture 3"),
               std::string::npos);
     EXPECT_NE(error_of(json::object()).find("names material 0 but the file has 0"), std::string::npos);
+    // KHR_texture_transform values are checked before they become floats and ints.
+    const auto transformed = [](const json& transform) {
+        return json{{"images", {{{"uri", "gone.png"}}}},
+                    {"textures", {{{"source", 0}}}},
+                    {"materials", {{{"pbrMetallicRoughness",
+                                     {{"baseColorTexture", {{"index", 0}, {"extensions", {{"KHR_texture_transform", transform}}}}}}}}}}};
+    };
+    EXPECT_NE(error_of(transformed({{"offset", {1e300, 0}}})).find("KHR_texture_transform has a value that is not finite or too large"),
+              std::string::npos);
+    EXPECT_NE(error_of(transformed({{"texCoord", 1e20}})).find("KHR_texture_transform has texCoord"), std::string::npos);
+    EXPECT_EQ(error_of(transformed({{"offset", {0.5, 0.25}}, {"rotation", 1.0}, {"texCoord", 0}})), "no error");
     const std::string missing = error_of({{"images", {{{"uri", "gone.png"}}}},
                                           {"textures", {{{"source", 0}}}},
                                           {"materials", {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}}}});
@@ -385,6 +396,20 @@ TEST(Materials, BadMaterialsNameTheFileAndTheMaterial) {
         EXPECT_NE(std::string(e.what()).find("bad.gltf: image 0 (gone.png): cannot read gone.png"), std::string::npos)
             << e.what();
     }
+}
+
+// A texture whose image is only in an extension's format (no "source") colours its material
+// by the factor, and says so when drawn.
+TEST(Materials, TextureWithoutAnImageSaysSo) {
+    const auto dir = test::temp_dir();
+    write_quads(dir, "ktx", {{{-1.0f, -1.0f}, {1.0f, 1.0f}, 0.0f, 0}},
+                {{"textures", {json::object()}},
+                 {"materials", {{{"name", "basis"}, {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}}}});
+    const Model model = load_model(dir / "ktx.gltf");
+    ASSERT_EQ(model.materials.size(), 1u);
+    EXPECT_EQ(model.materials[0].base_color_texture.image, -1);
+    EXPECT_NE(model.materials[0].base_color_texture.problem.find("ktx.gltf: texture 0 has no image Linework reads"),
+              std::string::npos);
 }
 
 // A .glb stores its images in buffer views (copied once the views are checked); images no
@@ -417,6 +442,34 @@ TEST(Materials, MipChainAveragesInLinearLightWeightedByAlpha) {
     EXPECT_EQ(odd[1].width, 2);
     EXPECT_EQ(odd[1].height, 1);
     EXPECT_EQ(int(odd[2].at(0, 0)[0]), 255);
+    // A block of transparent texels keeps their colour (mean in linear light), so that
+    // filtering at a cut-out's edge does not darken towards black.
+    const std::vector<ImageRGBA8> clear = srgb_mip_chain(ImageRGBA8{2, 2, {200, 0, 0, 0, 200, 0, 0, 0, 100, 0, 0, 0, 100, 0, 0, 0}});
+    const float mean = 0.5f * (srgb_to_linear(200.0f / 255.0f) + srgb_to_linear(100.0f / 255.0f));
+    EXPECT_EQ(int(clear[1].at(0, 0)[0]), int(std::lround(linear_to_srgb(mean) * 255.0f)));
+    EXPECT_EQ(int(clear[1].at(0, 0)[3]), 0);
+}
+
+// A texture wider than the device allows (lavapipe: 16384) is drawn from its first mip level
+// that fits, with a warning, instead of failing the frame.
+TEST_F(GpuTest, OversizedTextureIsDrawnFromAMipLevel) {
+    const auto dir = test::temp_dir();
+    const int width = int(ctx().properties().limits.maxImageDimension2D) + 16;
+    ImageRGBA8 ramp{width, 2, std::vector<uint8_t>(size_t(width) * 8, 255)};
+    for (int y = 0; y < 2; ++y)
+        for (int x = 0; x < width; ++x) ramp.at(x, y)[1] = uint8_t(255 * x / (width - 1));
+    write_png(dir / "ramp.png", ramp);
+    const json doc = {{"images", {{{"uri", "ramp.png"}}}},
+                      {"textures", {{{"source", 0}}}},
+                      {"materials", {{{"name", "wide"}, {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}}}};
+    write_quads(dir, "wide", {{{-1.0f, -1.0f}, {1.0f, 1.0f}, 0.0f, 0}}, doc);
+    const SceneDesc desc = parse_scene_json(R"({"model": "wide.gltf", "shading": "unlit", "lines": false, "samples": 1,
+        "size": [64, 64], "camera": {"eye": [0, 0, 4], "target": [0, 0, 0], "fov": 30}})",
+                                            dir / "scene.json");
+    const Rendered r = render(ctx(), desc);
+    // Hundreds of texels a pixel: the mip chain (from the level that fits) gives the same means.
+    EXPECT_LT(mean_abs_difference(r.image, r.reference), 1.0);
+    EXPECT_GT(int(r.image.at(56, 32)[1]) - int(r.image.at(8, 32)[1]), 150) << "the ramp shows";
 }
 
 }  // namespace

@@ -80,7 +80,7 @@ void FrameRenderer::set_materials(const SurfaceMaterials& materials) {
         throw Error("FrameRenderer: materials for other faces than the mesh's (set them before the mesh)");
     if (gpu_materials_) vkDeviceWaitIdle(ctx_->device());  // a viewer's frame may still read the old ones
     gpu_materials_.emplace(*ctx_, materials);
-    materials_ = SurfaceMaterials{.materials = materials.materials, .textures = {}, .face_material = materials.face_material};
+    materials_ = SurfaceMaterials{.materials = materials.materials, .face_material = materials.face_material};
 }
 
 void FrameRenderer::set_mesh(const TriangleMesh& mesh, bool with_lines, float crease_angle_deg) {

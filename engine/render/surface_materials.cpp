@@ -5,6 +5,7 @@
 #include <numeric>
 
 #include "core/error.h"
+#include "core/log.h"
 
 namespace lw {
 
@@ -27,15 +28,28 @@ VkSamplerAddressMode address_mode(TextureWrap wrap) {
 }
 
 // The texture with its mip chain (averaged in linear light, core/image.h) in one upload.
-Image upload_texture(const Context& ctx, const ImageRGBA8& texels, bool mipmaps) {
-    const std::vector<ImageRGBA8> levels = mipmaps ? srgb_mip_chain(texels) : std::vector<ImageRGBA8>{texels};
+// A texture larger than the device takes is drawn from its first mip level that fits (a
+// warning naming `what`), not refused: the rest of the scene does not depend on it.
+Image upload_texture(const Context& ctx, const ImageRGBA8& texels, bool mipmaps, const std::string& what) {
+    const auto max_dim = int(ctx.properties().limits.maxImageDimension2D);
+    const bool too_large = texels.width > max_dim || texels.height > max_dim;
+    std::vector<ImageRGBA8> levels = mipmaps || too_large ? srgb_mip_chain(texels) : std::vector<ImageRGBA8>{texels};
+    if (too_large) {
+        size_t first = 0;
+        while (levels[first].width > max_dim || levels[first].height > max_dim) ++first;  // 1 × 1 always fits
+        log_warning(what + ": its " + std::to_string(texels.width) + "x" + std::to_string(texels.height) +
+                    " texture exceeds the device's " + std::to_string(max_dim) + "; drawn from its " +
+                    std::to_string(levels[first].width) + "x" + std::to_string(levels[first].height) + " mip level");
+        levels.erase(levels.begin(), levels.begin() + std::ptrdiff_t(first));
+        if (!mipmaps) levels.resize(1);
+    }
     std::vector<std::byte> bytes;
     for (const ImageRGBA8& level : levels) {
         const auto* p = reinterpret_cast<const std::byte*>(level.pixels.data());
         bytes.insert(bytes.end(), p, p + level.pixels.size());
     }
-    Image image(ctx, {.width = uint32_t(texels.width),
-                      .height = uint32_t(texels.height),
+    Image image(ctx, {.width = uint32_t(levels[0].width),
+                      .height = uint32_t(levels[0].height),
                       .format = VK_FORMAT_R8G8B8A8_SRGB,
                       .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
                       .name = "material texture",
@@ -83,24 +97,36 @@ GpuMesh upload_mesh(const Context& ctx, const TriangleMesh& mesh, const SurfaceM
 }
 
 Image white_texture(const Context& ctx) {
-    return upload_texture(ctx, ImageRGBA8{1, 1, {255, 255, 255, 255}}, false);
+    return upload_texture(ctx, ImageRGBA8{1, 1, {255, 255, 255, 255}}, false, "white texture");
 }
 
 GpuMaterials::GpuMaterials(const Context& ctx, const SurfaceMaterials& materials)
-    : materials_(materials.materials) {
-    if (!materials.textures.empty() && materials.textures.size() != materials_.size())
-        throw Error("surface materials: " + std::to_string(materials.textures.size()) + " textures for " +
-                    std::to_string(materials_.size()) + " materials");
-    textures_.resize(materials_.size());
+    : materials_(materials.materials), image_of_(materials.material_image) {
+    image_of_.resize(materials_.size(), -1);
+    for (int32_t image : image_of_)
+        if (image >= 0 && size_t(image) >= materials.images.size())
+            throw Error("surface materials: a material names image " + std::to_string(image) + " of " +
+                        std::to_string(materials.images.size()));
+    // Each image once, with its mip chain if any material that samples it minifies through it.
+    images_.resize(materials.images.size());
+    for (size_t i = 0; i < images_.size(); ++i) {
+        std::string users;
+        bool mipmaps = false;
+        for (size_t m = 0; m < materials_.size(); ++m)
+            if (image_of_[m] == int32_t(i)) {
+                users += (users.empty() ? "material \"" : ", \"") + materials_[m].name + "\"";
+                mipmaps = mipmaps || materials_[m].base_color_texture.mipmaps;
+            }
+        if (!users.empty()) images_[i] = upload_texture(ctx, materials.images[i], mipmaps, users);
+    }
     samplers_.resize(materials_.size());
-    for (size_t m = 0; m < materials.textures.size(); ++m) {
-        const ImageRGBA8& texels = materials.textures[m];
-        if (texels.width <= 0 || texels.height <= 0) continue;
+    for (size_t m = 0; m < materials_.size(); ++m) {
+        if (!textured(m)) continue;
         const TextureRef& ref = materials_[m].base_color_texture;
-        textures_[m] = upload_texture(ctx, texels, ref.mipmaps);
-        // One level (minFilter NEAREST or LINEAR without mipmaps): max_lod 0.25 keeps λ > 0
-        // minified by minFilter while NEAREST mip selection stays on level 0 (resources.h).
-        const uint32_t levels = textures_[m].mip_levels();
+        // One level (minFilter NEAREST or LINEAR without mipmaps, or a 1 × 1 image): max_lod
+        // 0.25 keeps λ > 0 minified by minFilter while NEAREST mip selection stays on level 0
+        // (resources.h).
+        const uint32_t levels = ref.mipmaps ? images_[size_t(image_of_[m])].mip_levels() : 1;
         samplers_[m] = create_sampler(
             ctx, {.filter = ref.nearest_mag ? VK_FILTER_NEAREST : VK_FILTER_LINEAR,
                   .min_filter = ref.nearest_min ? VK_FILTER_NEAREST : VK_FILTER_LINEAR,

@@ -5,7 +5,7 @@
 // Output: `GpuMesh` — vertex and index buffers with the triangles grouped into one draw per
 //         material (blended materials last, so that they composite over what is opaque);
 //         `GpuMaterials` — each material's texture as an sRGB, mipmapped image with its
-//         glTF sampler.
+//         glTF sampler, each image uploaded once however many materials sample it.
 #pragma once
 
 #include <cstdint>
@@ -47,15 +47,16 @@ public:
 
     size_t size() const { return materials_.size(); }
     const Material& material(size_t m) const { return materials_[m]; }
-    bool textured(size_t m) const { return textures_[m].get() != VK_NULL_HANDLE; }
+    bool textured(size_t m) const { return image_of_[m] >= 0; }
     // The texture of a textured material.
-    VkImageView view(size_t m) const { return textures_[m].view(); }
+    VkImageView view(size_t m) const { return images_[size_t(image_of_[m])].view(); }
     VkSampler sampler(size_t m) const { return samplers_[m].get(); }
 
 private:
     std::vector<Material> materials_;
-    std::vector<Image> textures_;  // empty Image for materials without a texture
-    std::vector<Handle<VkSampler>> samplers_;
+    std::vector<int32_t> image_of_;  // per material: index in images_, -1: none
+    std::vector<Image> images_;
+    std::vector<Handle<VkSampler>> samplers_;  // per textured material: its glTF sampler
 };
 
 // A 1 × 1 white texture (the image bound where no material texture is).

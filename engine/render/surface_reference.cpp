@@ -77,24 +77,23 @@ glm::vec4 sample(const std::vector<LinearLevel>& chain, const TextureRef& ref, g
                     sample_level(chain[size_t(hi)], uv, ref.nearest_min, ref), d - float(lo));
 }
 
-uint8_t encode(float linear) { return uint8_t(std::lround(std::clamp(linear_to_srgb(linear), 0.0f, 1.0f) * 255.0f)); }
-uint8_t byte(float v) { return uint8_t(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); }
+uint8_t encode(float linear) { return unit_to_byte(linear_to_srgb(linear)); }
 
 }  // namespace
 
 ImageRGBA8 surface_reference(const TriangleMesh& mesh, const SurfaceMaterials& materials, const CameraMatrices& camera,
                              int width, int height, const glm::vec3& scene_color, const glm::vec3& background) {
     std::vector<std::vector<LinearLevel>> chains(materials.materials.size());
-    for (size_t m = 0; m < chains.size() && m < materials.textures.size(); ++m)
-        if (materials.textures[m].width > 0)
-            chains[m] = linear_chain(materials.textures[m], materials.materials[m].base_color_texture.mipmaps);
+    for (size_t m = 0; m < chains.size() && m < materials.material_image.size(); ++m)
+        if (const int32_t image = materials.material_image[m]; image >= 0)
+            chains[m] = linear_chain(materials.images[size_t(image)], materials.materials[m].base_color_texture.mipmaps);
     const bool textured = mesh.texcoords.size() == mesh.positions.size();
 
     ImageRGBA8 out{width, height, std::vector<uint8_t>(size_t(width) * size_t(height) * 4)};
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {
             uint8_t* p = out.at(x, y);
-            for (int c = 0; c < 3; ++c) p[c] = byte(background[c]);
+            for (int c = 0; c < 3; ++c) p[c] = unit_to_byte(background[c]);
             p[3] = 255;
         }
     std::vector<float> nearest(size_t(width) * size_t(height), 0.0f);  // 1/w of what the pixel shows
@@ -151,7 +150,7 @@ ImageRGBA8 surface_reference(const TriangleMesh& mesh, const SurfaceMaterials& m
                 if (material && material->alpha_mode == AlphaMode::Mask && color.a < material->alpha_cutoff) continue;
                 here = depth;
                 uint8_t* p = out.at(x, y);
-                for (int k = 0; k < 3; ++k) p[k] = linear ? encode(color[k]) : byte(color[k]);
+                for (int k = 0; k < 3; ++k) p[k] = linear ? encode(color[k]) : unit_to_byte(color[k]);
             }
     }
     return out;

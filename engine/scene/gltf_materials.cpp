@@ -58,20 +58,24 @@ void apply_texture_transform(const Source& source, const std::string& what, cons
     const auto it = extensions.find("KHR_texture_transform");
     if (it == extensions.end()) return;
     const tinygltf::Value& t = it->second;
+    // Each value checked as the double the file holds: converting one outside float's range
+    // (or an int's, for texCoord) is undefined behaviour.
+    const auto value = [&](double v) {
+        if (!(std::abs(v) <= 1e30)) fail(source, what + ": KHR_texture_transform has a value that is not finite or too large");
+        return float(v);
+    };
     glm::vec2 offset(0.0f), scale(1.0f);
     if (t.Has("offset") && t.Get("offset").ArrayLen() == 2)
-        offset = {float(t.Get("offset").Get(0).GetNumberAsDouble()), float(t.Get("offset").Get(1).GetNumberAsDouble())};
+        offset = {value(t.Get("offset").Get(0).GetNumberAsDouble()), value(t.Get("offset").Get(1).GetNumberAsDouble())};
     if (t.Has("scale") && t.Get("scale").ArrayLen() == 2)
-        scale = {float(t.Get("scale").Get(0).GetNumberAsDouble()), float(t.Get("scale").Get(1).GetNumberAsDouble())};
-    const float rotation = float(number_or(t, "rotation", 0.0));
-    if (!std::isfinite(offset.x + offset.y + scale.x + scale.y + rotation))
-        fail(source, what + ": KHR_texture_transform has a value that is not finite");
+        scale = {value(t.Get("scale").Get(0).GetNumberAsDouble()), value(t.Get("scale").Get(1).GetNumberAsDouble())};
+    const float rotation = value(number_or(t, "rotation", 0.0));
     const float c = std::cos(rotation), s = std::sin(rotation);
     // Columns: the spec's rotation matrix [c s; −s c] composed after the scale, then the offset.
     ref.uv_transform = glm::mat3(glm::vec3(c * scale.x, -s * scale.x, 0.0f), glm::vec3(s * scale.y, c * scale.y, 0.0f),
                                  glm::vec3(offset, 1.0f));
     const double texcoord = number_or(t, "texCoord", double(ref.texcoord));
-    if (texcoord < 0 || texcoord != std::floor(texcoord))
+    if (!(texcoord >= 0 && texcoord <= 255) || texcoord != std::floor(texcoord))
         fail(source, what + ": KHR_texture_transform has texCoord " + std::to_string(texcoord));
     ref.texcoord = int(texcoord);
 }
@@ -90,8 +94,12 @@ TextureRef convert_texture(const Source& source, const std::string& what, const 
         fail(source, "texture " + std::to_string(info.index) + " names image " + std::to_string(texture.source) +
                          " but the file has " + std::to_string(doc.images.size()));
     // No source: the image is in an extension's format (KHR_texture_basisu, EXT_texture_webp),
-    // which stb_image cannot read; the factor alone colours the material (load_gltf warns).
+    // which stb_image cannot read; the factor alone colours the material, with a warning when
+    // it is drawn (scene_materials).
     ref.image = texture.source;
+    if (texture.source < 0)
+        ref.problem = source.file + ": texture " + std::to_string(info.index) +
+                      " has no image Linework reads (only an extension's, such as KTX2 or WebP)";
     apply_sampler(source, texture.sampler, ref);
     apply_texture_transform(source, what, info.extensions, ref);
     return ref;

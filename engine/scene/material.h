@@ -39,6 +39,7 @@ struct TextureRef {
     bool mipmaps = true;       // the minification filter reads mip levels
     bool nearest_mip = false;  // ... the nearest one (*_MIPMAP_NEAREST), else a blend of two
     glm::mat3 uv_transform{1.0f};  // KHR_texture_transform (offset · rotation · scale)
+    std::string problem;           // why a texture the material names has no image (warned when drawn)
 };
 
 struct Material {
@@ -60,7 +61,8 @@ struct ModelImage {
 // The materials a shaded mesh is drawn with: what the surface pass takes.
 struct SurfaceMaterials {
     std::vector<Material> materials;
-    std::vector<ImageRGBA8> textures;    // per material: its base colour texture (sRGB texels), empty: none
+    std::vector<ImageRGBA8> images;      // the decoded base colour images (sRGB texels), each once
+    std::vector<int32_t> material_image; // per material: its texture's index in `images`, -1: none
     std::vector<int32_t> face_material;  // per triangle of the mesh: index in `materials`, -1: the scene colour
 };
 

@@ -85,23 +85,31 @@ SurfaceMaterials scene_materials(const LoadedScene& scene, const TriangleMesh& m
     std::vector<int32_t> first_of_model;
     for (const Model& model : scene.models) {
         first_of_model.push_back(int32_t(out.materials.size()));
-        // Each image decoded once, however many materials share it (an atlas usually is).
-        std::map<int, std::pair<ImageRGBA8, std::string>> decoded;  // image → texels, or why not
+        // Each image decoded (and later uploaded) once, however many materials share it (an
+        // atlas usually is).
+        std::map<int, std::pair<int32_t, std::string>> decoded;  // model image → index in out.images, or why not
         for (const Material& material : model.materials) {
             out.materials.push_back(material);
-            out.textures.emplace_back();
+            out.material_image.push_back(-1);
             const int image = material.base_color_texture.image;
-            if (!decode || !material.has_color || image < 0) continue;
-            auto [it, first] = decoded.try_emplace(image);
+            if (!decode || !material.has_color) continue;
+            if (image < 0) {
+                if (!material.base_color_texture.problem.empty())
+                    log_warning(material.base_color_texture.problem + "; material \"" + material.name +
+                                "\" is drawn with its base colour factor");
+                continue;
+            }
+            auto [it, first] = decoded.try_emplace(image, -1, std::string());
             if (first) {
                 try {
-                    it->second.first = decode_model_image(model, image);
+                    out.images.push_back(decode_model_image(model, image));
+                    it->second.first = int32_t(out.images.size() - 1);
                 } catch (const Error& e) {
                     it->second.second = e.what();
                 }
             }
             if (it->second.second.empty())
-                out.textures.back() = it->second.first;
+                out.material_image.back() = it->second.first;
             else
                 log_warning(it->second.second + "; material \"" + material.name + "\" is drawn with its base colour factor");
         }
