@@ -1,7 +1,15 @@
 #include "core/parallel.h"
 
+#include <pthread.h>
+#if defined(__x86_64__) || defined(__i386__)
+#include <immintrin.h>
+#endif
+
 #include <algorithm>
+#include <atomic>
+#include <condition_variable>
 #include <exception>
+#include <mutex>
 #include <thread>
 #include <vector>
 
@@ -9,29 +17,161 @@ namespace lw {
 
 size_t worker_count() { return std::max<size_t>(1, std::thread::hardware_concurrency()); }
 
+namespace {
+
+// A hint to the CPU that this thread spins (it frees the core's other hyperthread).
+inline void pause() {
+#if defined(__x86_64__) || defined(__i386__)
+    _mm_pause();
+#endif
+}
+
+// worker_count() − 1 threads started on first use and kept: a per-view pass of a
+// millisecond cannot repay starting threads per call (~0.1 ms, docs/BENCHMARKS.md). The
+// caller works too; chunks are taken from a shared counter, so any chunk count runs on any
+// number of threads and each chunk still writes only its own output.
+class Pool {
+public:
+    explicit Pool(size_t workers) {
+        for (size_t i = 0; i < workers; ++i) std::thread([this] { work(); }).detach();  // they live as long as the process
+    }
+
+    // Runs `body` on chunks [0, chunks) of [0, count); false when another parallel_for is
+    // using the pool (a nested call from a chunk, or another thread): the caller then runs
+    // every chunk itself.
+    // `one_each`: no thread runs two chunks (a team, whose members wait for each other).
+    bool run(size_t count, size_t chunks, const std::function<void(size_t, size_t, size_t)>& body, bool one_each = false) {
+        std::unique_lock busy(busy_, std::try_to_lock);
+        if (!busy.owns_lock()) return false;
+        std::vector<std::exception_ptr> errors(chunks);
+        Job job{.body = &body, .count = count, .chunks = chunks, .errors = &errors, .one_each = one_each};
+        {
+            std::lock_guard lock(mutex_);
+            current_ = &job;
+            generation_.fetch_add(1);
+        }
+        wake_.notify_all();
+        job.finished.fetch_add(take_chunks(job));
+        // The job lives on this stack: wait until every chunk ran and no worker holds it.
+        // Workers join and leave under the mutex, so the last check is made holding it.
+        const auto over = [&] { return job.finished.load() == chunks && job.users.load() == 0; };
+        spin_while([&] { return !over(); });
+        {
+            std::unique_lock lock(mutex_);
+            finished_.wait(lock, over);
+            current_ = nullptr;
+        }
+        for (auto& e : errors)
+            if (e) std::rethrow_exception(e);
+        return true;
+    }
+
+private:
+    struct Job {
+        const std::function<void(size_t, size_t, size_t)>* body = nullptr;
+        size_t count = 0, chunks = 0;
+        std::vector<std::exception_ptr>* errors = nullptr;
+        bool one_each = false;
+        std::atomic<size_t> next{0};      // the next chunk to take
+        std::atomic<size_t> finished{0};  // chunks run
+        std::atomic<size_t> users{0};     // workers inside (changed under the mutex)
+    };
+
+    // Chunks until none is left; returns how many this thread ran.
+    static size_t take_chunks(Job& job) {
+        size_t ran = 0;
+        for (size_t c = job.next.fetch_add(1); c < job.chunks; c = job.next.fetch_add(1)) {
+            try {
+                (*job.body)(job.count * c / job.chunks, job.count * (c + 1) / job.chunks, c);
+            } catch (...) {
+                (*job.errors)[c] = std::current_exception();
+            }
+            ++ran;
+            if (job.one_each) break;
+        }
+        return ran;
+    }
+
+    // Waits while `busy()`: first spinning on the CPU (a few microseconds: the next pass of
+    // an extraction comes that soon), then yielding it (~20 ms), and only then returns for
+    // the caller to sleep: a thread woken by the kernel takes tens of microseconds, as long
+    // as a whole pass over a small mesh.
+    template <class Busy>
+    static void spin_while(Busy&& busy) {
+        for (int i = 0; i < 1000 && busy(); ++i) pause();
+        for (int i = 0; i < 20000 && busy(); ++i) std::this_thread::yield();
+    }
+
+    void work() {
+        uint64_t seen = 0;
+        for (;;) {
+            Job* job = nullptr;
+            spin_while([&] { return generation_.load() == seen; });
+            {
+                std::unique_lock lock(mutex_);
+                wake_.wait(lock, [&] { return generation_.load() != seen; });
+                seen = generation_.load();
+                job = current_;
+                if (!job) continue;  // it ended before this thread woke
+                job->users.fetch_add(1);
+            }
+            job->finished.fetch_add(take_chunks(*job));
+            std::lock_guard lock(mutex_);
+            job->users.fetch_sub(1);
+            finished_.notify_all();  // no system call unless the caller sleeps
+        }
+    }
+
+    std::mutex busy_;   // held by the one parallel_for using the pool
+    std::mutex mutex_;  // guards current_ and the start and end of each worker's part in a job
+    std::condition_variable wake_, finished_;
+    Job* current_ = nullptr;
+    std::atomic<uint64_t> generation_{0};
+};
+
+// The process's pool. A fork()ed child (a Python multiprocessing worker, say) has none of
+// its parent's threads: it leaves the parent's pool untouched (its mutexes may be held) and
+// starts its own on first use.
+std::atomic<Pool*> g_pool{nullptr};
+std::mutex g_pool_start;
+
+void forget_pool_after_fork() { g_pool.store(nullptr); }
+
+Pool* pool() {
+    if (Pool* p = g_pool.load()) return p;
+    std::lock_guard lock(g_pool_start);
+    if (Pool* p = g_pool.load()) return p;
+    static const bool registered = [] { return pthread_atfork(nullptr, nullptr, forget_pool_after_fork) == 0; }();
+    (void)registered;
+    // Never deleted: its threads run until the process ends, and a static's destructor could
+    // run while one of them still waits on its condition variable.
+    auto* p = new Pool(worker_count() - 1);
+    g_pool.store(p);
+    return p;
+}
+
+}  // namespace
+
 size_t parallel_for(size_t count, size_t min_chunk,
                     const std::function<void(size_t begin, size_t end, size_t chunk)>& body, size_t max_chunks) {
     const size_t chunks =
         std::clamp<size_t>(count / std::max<size_t>(min_chunk, 1), 1, max_chunks > 0 ? max_chunks : worker_count());
-    if (chunks == 1) {
-        body(0, count, 0);
-        return 1;
+    if (chunks == 1 || worker_count() == 1 || !pool()->run(count, chunks, body)) {
+        for (size_t c = 0; c < chunks; ++c) body(count * c / chunks, count * (c + 1) / chunks, c);
     }
-    std::vector<std::thread> threads;
-    std::vector<std::exception_ptr> errors(chunks);
-    auto run = [&](size_t c) {
-        try {
-            body(count * c / chunks, count * (c + 1) / chunks, c);
-        } catch (...) {
-            errors[c] = std::current_exception();
-        }
-    };
-    for (size_t c = 1; c < chunks; ++c) threads.emplace_back(run, c);
-    run(0);
-    for (auto& t : threads) t.join();
-    for (auto& e : errors)
-        if (e) std::rethrow_exception(e);
     return chunks;
+}
+
+size_t parallel_team(size_t size, const std::function<void(size_t member, size_t members, TeamSync& sync)>& body) {
+    const size_t members = std::clamp<size_t>(size, 1, worker_count());
+    if (members > 1) {
+        TeamSync sync(members);
+        const std::function<void(size_t, size_t, size_t)> member = [&](size_t, size_t, size_t m) { body(m, members, sync); };
+        if (pool()->run(members, members, member, true)) return members;
+    }
+    TeamSync alone(1);
+    body(0, 1, alone);
+    return 1;
 }
 
 }  // namespace lw

@@ -1,11 +1,14 @@
 // engine/core/parallel.h — a plain parallel-for over index ranges.
 //
-// Splits [0, count) into at most `threads` contiguous chunks (default: the hardware's
-// cores) and runs `body(begin, end, chunk)` on each, the first on the calling thread.
-// Results stay deterministic when each chunk writes only its own slots (or its own
-// output, concatenated in chunk order afterwards). Small counts run inline.
+// Splits [0, count) into at most `max_chunks` contiguous chunks (default: the hardware's
+// cores) and runs `body(begin, end, chunk)` on each: on the calling thread and a pool of
+// worker_count() − 1 threads started once per process (again in a fork()ed child). The
+// chunks depend on the count alone, so results stay deterministic when each chunk writes
+// only its own slots (or its own output, concatenated in chunk order afterwards). Small
+// counts, nested calls and calls while another thread uses the pool run inline, in order.
 #pragma once
 
+#include <barrier>
 #include <cstddef>
 #include <functional>
 
@@ -16,5 +19,15 @@ size_t worker_count();  // std::thread::hardware_concurrency, at least 1
 // Returns the number of chunks used (≤ max_chunks, 0: ≤ worker_count()).
 size_t parallel_for(size_t count, size_t min_chunk,
                     const std::function<void(size_t begin, size_t end, size_t chunk)>& body, size_t max_chunks = 0);
+
+// Where the members of a team wait for each other: `arrive_and_wait()`.
+using TeamSync = std::barrier<>;
+
+// A team of threads that run `body(member, members, sync)` at the same time, one member
+// each, so that they may wait for each other at `sync` (each member as often as the
+// others): one fork and join for work in phases (a pass, then a pass over its results).
+// `members` is at most `size` and the cores; 1 (the caller alone, `sync` then a no-op
+// wait) when the pool is in use. Returns `members`.
+size_t parallel_team(size_t size, const std::function<void(size_t member, size_t members, TeamSync& sync)>& body);
 
 }  // namespace lw
