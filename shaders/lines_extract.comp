@@ -116,23 +116,27 @@ void face_isoline(uint f, uvec3 corners, vec3 val, vec3 num, vec3 den, bool has_
         z2 = t;
     }
 
+    // P1 and P2 as computed (as rtsc emits them), the test's zero crossings interpolated.
+    const int START = 0, INSIDE = 1, END = 2;
     float zs[4];
+    int kinds[4];
     uint keys[4];
     int count = 0;
-    if (valid1) { zs[count] = 0.0; keys[count] = key1; count++; }
-    if (z1 != 0.0) { zs[count] = z1; keys[count] = NO_KEY; count++; }
-    if (z2 != 0.0) { zs[count] = z2; keys[count] = NO_KEY; count++; }
-    if (count != 2) { zs[count] = 1.0; keys[count] = key2; count++; }
+    if (valid1) { zs[count] = 0.0; kinds[count] = START; keys[count] = key1; count++; }
+    if (z1 != 0.0) { zs[count] = z1; kinds[count] = INSIDE; keys[count] = NO_KEY; count++; }
+    if (z2 != 0.0) { zs[count] = z2; kinds[count] = INSIDE; keys[count] = NO_KEY; count++; }
+    if (count != 2) { zs[count] = 1.0; kinds[count] = END; keys[count] = key2; count++; }
 
     for (int i = 0; i + 1 < count; i += 2) {
         LineSegment s;
         for (int e = 0; e < 2; ++e) {
             precise float z = zs[i + e];
-            precise vec3 x = (1.0 - z) * p1 + z * p2;
-            precise float n = (1.0 - z) * n1 + z * n2;
-            precise float d = (1.0 - z) * d1 + z * d2;
+            int kind = kinds[i + e];
+            precise vec3 x = kind == START ? p1 : kind == END ? p2 : (1.0 - z) * p1 + z * p2;
+            precise float n = kind == START ? n1 : kind == END ? n2 : (1.0 - z) * n1 + z * n2;
+            precise float d = kind == START ? d1 : kind == END ? d2 : (1.0 - z) * d1 + z * d2;
             precise float alpha = fade > 0.0 ? clamp(n / (d * fade + n), 0.0, 1.0) : 1.0;
-            precise vec3 bary = (1.0 - z) * b1 + z * b2;
+            precise vec3 bary = kind == START ? b1 : kind == END ? b2 : (1.0 - z) * b1 + z * b2;
             if (e == 0) { s.p0 = vec4(x, alpha); s.bary0 = vec4(bary, 0.0); }
             else        { s.p1 = vec4(x, alpha); s.bary1 = vec4(bary, 0.0); }
         }

@@ -4,10 +4,12 @@
 #include <cstring>
 #include <sstream>
 
+#include "core/random.h"
 #include "io/image_io.h"
 #include "lines/chaining.h"
 #include "lines/extract_gpu.h"
 #include "lines/extract_reference.h"
+#include "lines/face_scan.h"
 #include "lines/svg_export.h"
 #include "vector/xml.h"
 #include "render/frame_renderer.h"
@@ -181,8 +183,9 @@ TEST_F(LinesTest, HiddenLinesAreHiddenAndCanBeDrawn) {
     EXPECT_GT(ink(dashed.image.color), ink(frame.image.color) + 20);
 }
 
-// Threads over face blocks merge in face order: the same segments, bit for bit, in the same
-// order, at any thread count (blocks of 4096 faces and up: 2 to 4 blocks here).
+// Threads over face blocks merge in block order: the same segments, bit for bit, in the same
+// order, at any thread count (18 blocks of 1024 faces here), and a workspace kept from view
+// to view (as a frame keeps it) changes nothing.
 TEST(LinesThreads, SameSegmentsInTheSameOrderAtAnyThreadCount) {
     const LoadedScene scene = load_scene(scene_for_model(test::data_dir() / "models/LeePerrySmith/LeePerrySmith.glb"));
     const LineMesh lm = build_line_mesh(scene.mesh, 30.0f);
@@ -193,10 +196,42 @@ TEST(LinesThreads, SameSegmentsInTheSameOrderAtAnyThreadCount) {
     for (const LineSegment& s : one) suggestive += s.type == uint32_t(LineType::Suggestive);
     ASSERT_GT(one.size(), 200u);
     EXPECT_GT(suggestive, 10u);
-    for (size_t threads : {2u, 3u, 7u}) {
+    ExtractWorkspace workspace;
+    std::vector<LineSegment> kept;
+    for (size_t threads : {2u, 3u, 7u, 1u, 2u}) {
         const std::vector<LineSegment> many = extract_lines_reference(lm, scene.camera.eye, params, threads);
         ASSERT_EQ(many.size(), one.size()) << threads << " threads";
         EXPECT_EQ(std::memcmp(many.data(), one.data(), one.size() * sizeof(LineSegment)), 0) << threads << " threads";
+        // Another view first, so that the kept output and scratch hold other data.
+        extract_lines_reference(lm, scene.camera.eye + glm::vec3(3.0f, -1.0f, 0.0f), params, kept, workspace, threads);
+        extract_lines_reference(lm, scene.camera.eye, params, kept, workspace, threads);
+        ASSERT_EQ(kept.size(), one.size()) << threads << " threads, kept workspace";
+        EXPECT_EQ(std::memcmp(kept.data(), one.data(), one.size() * sizeof(LineSegment)), 0) << threads << " threads";
+    }
+}
+
+// The face scan finds the same candidate faces eight at a time (AVX2, where the CPU has
+// it) as one by one, on every combination of sign bytes: random bytes on random faces,
+// ranges that do not start or end on a multiple of eight.
+TEST(LinesThreads, VectorFaceScanEqualsTheScalarScan) {
+    Rng rng(7);
+    const size_t vertices = 500, faces = 4000;
+    std::vector<uint8_t> signs(vertices + kSignPadding, 0);
+    for (size_t v = 0; v < vertices; ++v) signs[v] = uint8_t(rng.index(256));
+    std::vector<glm::uvec3> corners(faces);
+    for (glm::uvec3& c : corners) c = {uint32_t(rng.index(vertices)), uint32_t(rng.index(vertices)), uint32_t(rng.index(vertices))};
+    for (const auto& [begin, end] : {std::pair{0u, 4000u}, std::pair{3u, 1030u}, std::pair{17u, 22u}, std::pair{5u, 5u}}) {
+        std::vector<uint32_t> s1(end - begin + 8), c1(end - begin + 8), s2(end - begin + 8), c2(end - begin + 8);
+        const FaceCandidates a = scan_faces_scalar(corners.data(), begin, end, signs.data(), s1.data(), c1.data());
+        const FaceCandidates b = scan_faces(corners.data(), begin, end, signs.data(), s2.data(), c2.data());
+        ASSERT_EQ(a.suggestive, b.suggestive) << begin << ".." << end;
+        ASSERT_EQ(a.contour, b.contour) << begin << ".." << end;
+        EXPECT_TRUE(std::equal(s1.begin(), s1.begin() + std::ptrdiff_t(a.suggestive), s2.begin()));
+        EXPECT_TRUE(std::equal(c1.begin(), c1.begin() + std::ptrdiff_t(a.contour), c2.begin()));
+        if (end - begin == 4000) {
+            EXPECT_GT(a.suggestive, 400u) << "the bytes give both kinds of candidate";
+            EXPECT_GT(a.contour, 400u);
+        }
     }
 }
 

@@ -1,10 +1,19 @@
-// Compiled with -ffp-contract=off (CMakeLists.txt): see view_quantities.h.
+// Compiled with -ffp-contract=off -fno-math-errno (CMakeLists.txt): see view_quantities.h.
+//
+// Two passes, laid out for memory speed (issue 22):
+//   1. per vertex, over `LineVertexArrays` (structure of arrays, one vectorized loop): n·v,
+//      kr and the suggestive test's numerator into arrays, and a byte of signs per vertex;
+//   2. per block of faces: the three corners' sign bytes decide whether a line can cross
+//      each face (most faces: none; face_scan.h), and only those faces read the values and
+//      positions.
 #include "lines/extract_reference.h"
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 
 #include "core/parallel.h"
+#include "lines/face_scan.h"
 #include "lines/view_quantities.h"
 
 namespace lw {
@@ -16,49 +25,80 @@ ScaledThresholds scaled_thresholds(const LineParams& params, float feature_size)
 
 namespace {
 
-// The field whose zero set is drawn through a face, and the test that trims it.
-struct IsolineInput {
-    std::array<float, 3> val;
-    std::array<float, 3> num;
-    std::array<float, 3> den;  // all 1 when the test has no denominator
-    bool has_den;
-};
+// Pass 1 over vertices [begin, end). Cloned for AVX2, chosen at load time where the CPU has
+// it: 8 vertices an instruction instead of 4, the same IEEE operations (no FMA) and so the
+// same bits.
+__attribute__((target_clones("avx2", "default"))) void vertex_pass(const LineVertexArrays& va, const glm::vec3& eye, float sug_thresh, size_t begin, size_t end,
+                 ExtractWorkspace& ws) {
+    using F = LineVertexArrays::Field;
+    const float *px = va.field(F::Px), *py = va.field(F::Py), *pz = va.field(F::Pz);
+    const float *nx = va.field(F::Nx), *ny = va.field(F::Ny), *nz = va.field(F::Nz);
+    const float *ax = va.field(F::E1x), *ay = va.field(F::E1y), *az = va.field(F::E1z);
+    const float *bx = va.field(F::E2x), *by = va.field(F::E2y), *bz = va.field(F::E2z);
+    const float *k1 = va.field(F::K1), *k2 = va.field(F::K2);
+    const float *c0 = va.field(F::C0), *c1 = va.field(F::C1), *c2 = va.field(F::C2), *c3 = va.field(F::C3);
+    float* ndotv = ws.ndotv.data();
+    float* kr = ws.kr.data();
+    float* test_num = ws.test_num.data();
+    uint8_t* signs = ws.signs.data();
+    const glm::vec3 e = eye;
+    // The outputs overlap no input (the workspace's own arrays): no alias checks needed.
+#pragma GCC ivdep
+    for (size_t i = begin; i < end; ++i) {
+        const VertexView v = vertex_view({px[i], py[i], pz[i]}, {nx[i], ny[i], nz[i]}, {ax[i], ay[i], az[i]},
+                                         {bx[i], by[i], bz[i]}, k1[i], k2[i], {c0[i], c1[i], c2[i], c3[i]}, e, sug_thresh);
+        ndotv[i] = v.ndotv;
+        kr[i] = v.kr;
+        test_num[i] = v.test_num;
+        signs[i] = sign_byte(v.ndotv, v.kr, v.test_num);
+    }
+}
 
-// One face's isoline, rtsc's draw_face_isoline + draw_face_isoline2 (rtsc-lines.md §2.2–2.3).
-void face_isoline(const LineMesh& lm, uint32_t f, const IsolineInput& in, float fade, LineType type,
-                  std::vector<LineSegment>& out) {
-    const auto& val = in.val;
-    // Lone vertex a: the one whose sign differs; zeros count with the other side.
-    int a;
-    if ((val[0] < 0.0f && val[1] >= 0.0f && val[2] >= 0.0f) || (val[0] > 0.0f && val[1] <= 0.0f && val[2] <= 0.0f))
-        a = 0;
-    else if ((val[1] < 0.0f && val[2] >= 0.0f && val[0] >= 0.0f) || (val[1] > 0.0f && val[2] <= 0.0f && val[0] <= 0.0f))
-        a = 1;
-    else
-        a = 2;
-    const int b = (a + 1) % 3, c = (a + 2) % 3;
+// One face's isoline, rtsc's draw_face_isoline + draw_face_isoline2 (rtsc-lines.md §2.2–2.3):
+// the zero set of `val` through the face, trimmed where num/den (num alone without a
+// denominator) changes sign, faded by `fade`. The values are read from the per-vertex
+// arrays by corner; the corners are turned once so that the lone one comes first.
+template <bool kHasDen>
+void face_isoline(const LineMesh& lm, uint32_t f, const float* val, const float* num, const float* den, float fade,
+                  LineType type, std::vector<LineSegment>& out) {
+    const glm::uvec3 corner = lm.mesh.faces[f];
+    const float v0 = val[corner.x], v1 = val[corner.y], v2 = val[corner.z];
+    // Lone vertex a: the one whose sign differs; zeros count with the other side. Bitwise
+    // operators, not && and ||: which corner is alone is anyone's guess, and a mispredicted
+    // branch costs more than evaluating every comparison.
+    const auto alone = [](float i, float j, float k) {
+        return ((i < 0.0f) & (j >= 0.0f) & (k >= 0.0f)) | ((i > 0.0f) & (j <= 0.0f) & (k <= 0.0f));
+    };
+    const int a = alone(v0, v1, v2) ? 0 : alone(v1, v2, v0) ? 1 : 2;
+    // Corners a, b = a + 1, c = a + 2 (mod 3), and the face's edge opposite each.
+    const glm::ivec3 opposite = lm.mesh.face_edges[f];
+    const uint32_t ia = a == 0 ? corner.x : a == 1 ? corner.y : corner.z;
+    const uint32_t ib = a == 0 ? corner.y : a == 1 ? corner.z : corner.x;
+    const uint32_t ic = a == 0 ? corner.z : a == 1 ? corner.x : corner.y;
+    const uint32_t edge_ab = uint32_t(a == 0 ? opposite.z : a == 1 ? opposite.x : opposite.y);  // opposite c
+    const uint32_t edge_ac = uint32_t(a == 0 ? opposite.y : a == 1 ? opposite.z : opposite.x);  // opposite b
 
-    const glm::uvec3 corners = lm.mesh.faces[f];
-    const glm::vec3 xa = lm.mesh.positions[corners[a]], xb = lm.mesh.positions[corners[b]],
-                    xc = lm.mesh.positions[corners[c]];
+    const glm::vec3 xa = lm.mesh.positions[ia], xb = lm.mesh.positions[ib], xc = lm.mesh.positions[ic];
     // Crossings on edges a–b and a–c, measured from a.
-    const float s_ab = val[a] / (val[a] - val[b]);
-    const float s_ac = val[a] / (val[a] - val[c]);
+    const float va = val[ia];
+    const float s_ab = va / (va - val[ib]);
+    const float s_ac = va / (va - val[ic]);
     const glm::vec3 p1 = (1.0f - s_ab) * xa + s_ab * xb;
     const glm::vec3 p2 = (1.0f - s_ac) * xa + s_ac * xc;
-    glm::vec3 b1(0.0f), b2(0.0f);
-    b1[a] = 1.0f - s_ab;
-    b1[b] = s_ab;
-    b2[a] = 1.0f - s_ac;
-    b2[c] = s_ac;
-    const uint32_t key1 = uint32_t(lm.mesh.face_edges[f][c]);  // edge a–b is opposite c
-    const uint32_t key2 = uint32_t(lm.mesh.face_edges[f][b]);  // edge a–c is opposite b
+    // Their barycentric coordinates in the face's own corner order.
+    const float ra = 1.0f - s_ab, rc = 1.0f - s_ac;
+    const glm::vec4 bary1 = a == 0 ? glm::vec4(ra, s_ab, 0.0f, 0.0f)
+                            : a == 1 ? glm::vec4(0.0f, ra, s_ab, 0.0f)
+                                     : glm::vec4(s_ab, 0.0f, ra, 0.0f);
+    const glm::vec4 bary2 = a == 0 ? glm::vec4(rc, 0.0f, s_ac, 0.0f)
+                            : a == 1 ? glm::vec4(s_ac, rc, 0.0f, 0.0f)
+                                     : glm::vec4(0.0f, s_ac, rc, 0.0f);
 
     // The test at both ends, numerator and denominator interpolated separately.
-    const float n1 = (1.0f - s_ab) * in.num[a] + s_ab * in.num[b];
-    const float n2 = (1.0f - s_ac) * in.num[a] + s_ac * in.num[c];
-    const float d1 = in.has_den ? (1.0f - s_ab) * in.den[a] + s_ab * in.den[b] : 1.0f;
-    const float d2 = in.has_den ? (1.0f - s_ac) * in.den[a] + s_ac * in.den[c] : 1.0f;
+    const float n1 = (1.0f - s_ab) * num[ia] + s_ab * num[ib];
+    const float n2 = (1.0f - s_ac) * num[ia] + s_ac * num[ic];
+    const float d1 = kHasDen ? (1.0f - s_ab) * den[ia] + s_ab * den[ib] : 1.0f;
+    const float d2 = kHasDen ? (1.0f - s_ac) * den[ia] + s_ac * den[ic] : 1.0f;
     const bool valid1 = (n1 >= 0.0f) == (d1 >= 0.0f);
     float z1 = (n1 >= 0.0f) != (n2 >= 0.0f) ? n1 / (n1 - n2) : 0.0f;
     float z2 = (d1 >= 0.0f) != (d2 >= 0.0f) ? d1 / (d1 - d2) : 0.0f;
@@ -69,52 +109,48 @@ void face_isoline(const LineMesh& lm, uint32_t f, const IsolineInput& in, float 
         std::swap(z1, z2);
     }
 
-    // Points along P1 → P2 where the test holds, paired into segments (GL_LINES semantics).
+    // Points along P1 → P2 where the test holds, paired into segments (GL_LINES semantics):
+    // P1 itself where the test holds there, the test's zero crossings between, P2 unless the
+    // pieces already pair up. As rtsc, P1 and P2 are emitted as computed, not re-interpolated.
+    const auto alpha = [&](float n, float d) {
+        // rtsc: alpha = N / (D·fade + N), clamped by GL; no fading means full opacity.
+        return fade > 0.0f ? std::clamp(n / (d * fade + n), 0.0f, 1.0f) : 1.0f;
+    };
+    if (valid1 && z1 == 0.0f) {  // the test holds all along (most faces): P1 to P2
+        out.push_back({glm::vec4(p1, alpha(n1, d1)), glm::vec4(p2, alpha(n2, d2)), bary1, bary2, f, uint32_t(type), edge_ab,
+                       edge_ac});
+        return;
+    }
     struct Point {
-        float z;
+        glm::vec4 position, bary;
         uint32_t key;
     };
     std::array<Point, 4> points;
     int count = 0;
-    if (valid1) points[count++] = {0.0f, key1};
-    if (z1 != 0.0f) points[count++] = {z1, kNoKey};
-    if (z2 != 0.0f) points[count++] = {z2, kNoKey};
-    if (count != 2) points[count++] = {1.0f, key2};
-    auto make_point = [&](const Point& p, glm::vec4& position, glm::vec4& bary) {
-        const float z = p.z;
-        const glm::vec3 x = (1.0f - z) * p1 + z * p2;  // exactly p1 at z = 0 and p2 at z = 1
+    const auto inside = [&](float z) {  // 0 < z < 1
         const float n = (1.0f - z) * n1 + z * n2;
         const float d = (1.0f - z) * d1 + z * d2;
-        // rtsc: alpha = N / (D·fade + N), clamped by GL; no fading means full opacity.
-        const float alpha = fade > 0.0f ? std::clamp(n / (d * fade + n), 0.0f, 1.0f) : 1.0f;
-        position = glm::vec4(x, alpha);
-        bary = glm::vec4((1.0f - z) * b1 + z * b2, 0.0f);
+        points[size_t(count++)] = {glm::vec4((1.0f - z) * p1 + z * p2, alpha(n, d)), (1.0f - z) * bary1 + z * bary2, kNoKey};
     };
+    if (valid1) points[size_t(count++)] = {glm::vec4(p1, alpha(n1, d1)), bary1, edge_ab};
+    if (z1 != 0.0f) inside(z1);
+    if (z2 != 0.0f) inside(z2);
+    if (count != 2) points[size_t(count++)] = {glm::vec4(p2, alpha(n2, d2)), bary2, edge_ac};
     for (int i = 0; i + 1 < count; i += 2) {
-        LineSegment s{};
-        make_point(points[i], s.p0, s.bary0);
-        make_point(points[i + 1], s.p1, s.bary1);
-        s.face = f;
-        s.type = uint32_t(type);
-        s.key0 = points[i].key;
-        s.key1 = points[i + 1].key;
-        out.push_back(s);
+        const Point& from = points[size_t(i)];
+        const Point& to = points[size_t(i + 1)];
+        out.push_back({from.position, to.position, from.bary, to.bary, f, uint32_t(type), from.key, to.key});
     }
 }
 
-bool has_both_signs(const std::array<float, 3>& v) {
-    return (v[0] > 0.0f || v[1] > 0.0f || v[2] > 0.0f) && (v[0] < 0.0f || v[1] < 0.0f || v[2] < 0.0f);
-}
-
-void feature_edges(const LineMesh& lm, uint32_t f, const LineParams& params, std::vector<LineSegment>& out) {
-    const uint32_t mask = lm.feature_edges[f];
+void feature_edges(const LineMesh& lm, uint32_t f, uint32_t mask, const LineParams& params, std::vector<LineSegment>& out) {
     const glm::uvec3 corners = lm.mesh.faces[f];
     for (int i = 0; i < 3; ++i) {
         const bool crease = params.creases && (mask & (kCreaseBit << i));
         const bool border = params.borders && (mask & (kBorderBit << i));
         if (!crease && !border) continue;
         const int j = (i + 1) % 3, k = (i + 2) % 3;
-        LineSegment s{};
+        LineSegment& s = out.emplace_back();  // value-initialized: zeros
         s.p0 = glm::vec4(lm.mesh.positions[corners[j]], 1.0f);
         s.p1 = glm::vec4(lm.mesh.positions[corners[k]], 1.0f);
         s.bary0[j] = 1.0f;
@@ -123,79 +159,95 @@ void feature_edges(const LineMesh& lm, uint32_t f, const LineParams& params, std
         s.type = uint32_t(border ? LineType::Border : LineType::Crease);
         s.key0 = corners[j];
         s.key1 = corners[k];
-        out.push_back(s);
     }
+}
+
+// Faces are taken in blocks of this many, whatever the thread count, so that the output
+// order is the same for any count.
+constexpr size_t kBlockFaces = 1024;
+
+// Pass 2 over one block of faces [begin, end), appending to `out`. First the faces a line
+// may cross, from the sign bytes alone (face_scan.h); then each list's faces, one line type
+// at a time, so that the branches inside an isoline see one kind of face. Segments come out
+// by type, each type in face order (chaining orders them canonically: chaining.h).
+void face_pass(const LineMesh& lm, const ExtractWorkspace& ws, const LineParams& params, float fade, uint32_t begin,
+               uint32_t end, std::vector<LineSegment>& out) {
+    const glm::uvec3* faces = lm.mesh.faces.data();
+    const uint32_t* feature_masks = lm.feature_edges.data();
+    const bool features = params.creases || params.borders;
+    std::array<uint32_t, kBlockFaces + 8> suggestive, contour;  // + 8: the scan writes past its counts
+    const FaceCandidates n = scan_faces(faces, begin, end, ws.signs.data(), suggestive.data(), contour.data());
+
+    const float *ndotv = ws.ndotv.data(), *kr = ws.kr.data(), *test_num = ws.test_num.data();
+    if (params.suggestive)
+        for (size_t i = 0; i < n.suggestive; ++i)
+            face_isoline<true>(lm, suggestive[i], kr, test_num, ndotv, fade, LineType::Suggestive, out);
+    if (params.silhouettes)
+        for (size_t i = 0; i < n.contour; ++i)
+            face_isoline<false>(lm, contour[i], ndotv, kr, nullptr, 0.0f, LineType::Silhouette, out);
+    if (features)
+        for (uint32_t f = begin; f < end; ++f)
+            if (feature_masks[f]) feature_edges(lm, f, feature_masks[f], params, out);
 }
 
 }  // namespace
 
-namespace {
-
-// Faces [begin, end) in order: what one block appends.
-void extract_faces(const LineMesh& lm, const std::vector<VertexView>& view, const LineParams& params,
-                   const ScaledThresholds& thresholds, uint32_t begin, uint32_t end, std::vector<LineSegment>& segments) {
-    for (uint32_t f = begin; f < end; ++f) {
-        const glm::uvec3 c = lm.mesh.faces[f];
-        const VertexView& v0 = view[c[0]];
-        const VertexView& v1 = view[c[1]];
-        const VertexView& v2 = view[c[2]];
-        if (params.suggestive) {
-            // Zero set of kr, faces not entirely back-facing, trimmed by the DwKr test, faded.
-            const IsolineInput in{{v0.kr, v1.kr, v2.kr},
-                                  {v0.test_num, v1.test_num, v2.test_num},
-                                  {v0.test_den, v1.test_den, v2.test_den},
-                                  true};
-            const bool back_facing = v0.ndotv <= 0.0f && v1.ndotv <= 0.0f && v2.ndotv <= 0.0f;
-            const bool rejected = (in.num[0] <= 0.0f && in.den[0] >= 0.0f && in.num[1] <= 0.0f && in.den[1] >= 0.0f &&
-                                   in.num[2] <= 0.0f && in.den[2] >= 0.0f) ||
-                                  (in.num[0] >= 0.0f && in.den[0] <= 0.0f && in.num[1] >= 0.0f && in.den[1] <= 0.0f &&
-                                   in.num[2] >= 0.0f && in.den[2] <= 0.0f);
-            if (has_both_signs(in.val) && !back_facing && !rejected)
-                face_isoline(lm, f, in, thresholds.fade, LineType::Suggestive, segments);
-        }
-        if (params.silhouettes) {
-            // Zero set of n·v on every face, kept where kr ≥ 0, never faded.
-            const IsolineInput in{{v0.ndotv, v1.ndotv, v2.ndotv}, {v0.kr, v1.kr, v2.kr}, {1.0f, 1.0f, 1.0f}, false};
-            const bool rejected = in.num[0] <= 0.0f && in.num[1] <= 0.0f && in.num[2] <= 0.0f;
-            if (has_both_signs(in.val) && !rejected) face_isoline(lm, f, in, 0.0f, LineType::Silhouette, segments);
-        }
-        if (params.creases || params.borders) feature_edges(lm, f, params, segments);
+void extract_lines_reference(const LineMesh& lm, const glm::vec3& eye, const LineParams& params,
+                             std::vector<LineSegment>& out, ExtractWorkspace& ws, size_t threads) {
+    const ScaledThresholds thresholds = scaled_thresholds(params, lm.feature_size);
+    const size_t nv = lm.vertex_arrays.count;
+    threads = std::max<size_t>(threads, 1);
+    ws.ndotv.resize(nv);
+    ws.kr.resize(nv);
+    ws.test_num.resize(nv);
+    ws.signs.resize(nv + kSignPadding);
+    const size_t faces = lm.mesh.faces.size();
+    const size_t blocks = (faces + kBlockFaces - 1) / kBlockFaces;
+    const auto face_block = [&](size_t b, std::vector<LineSegment>& into) {
+        face_pass(lm, ws, params, thresholds.fade, uint32_t(b * kBlockFaces),
+                  uint32_t(std::min(faces, (b + 1) * kBlockFaces)), into);
+    };
+    if (threads == 1) {  // straight into the output
+        vertex_pass(lm.vertex_arrays, eye, thresholds.sug_thresh, 0, nv, ws);
+        out.clear();
+        for (size_t b = 0; b < blocks; ++b) face_block(b, out);
+        return;
     }
+    // A team (one fork and join): its members share out the vertices; then take face blocks
+    // one at a time as they finish, each into its own vector (lines cluster, as a silhouette
+    // crosses few faces all in one part of the mesh, so fixed shares would leave a member
+    // idle); then copy the blocks into place, each at the sum of the sizes before it.
+    if (ws.blocks.size() < blocks) ws.blocks.resize(blocks);
+    std::atomic<size_t> next_block{0};
+    parallel_team(threads, [&](size_t member, size_t members, TeamSync& sync) {
+        vertex_pass(lm.vertex_arrays, eye, thresholds.sug_thresh, nv * member / members, nv * (member + 1) / members, ws);
+        sync.arrive_and_wait();
+        for (size_t b = next_block.fetch_add(1); b < blocks; b = next_block.fetch_add(1)) {
+            // Filled as a local: neighbouring blocks' vectors share cache lines, and every
+            // append writes the vector's end.
+            std::vector<LineSegment> segments = std::move(ws.blocks[b]);
+            segments.clear();
+            face_block(b, segments);
+            ws.blocks[b] = std::move(segments);
+        }
+        sync.arrive_and_wait();
+        if (member == 0) {
+            ws.offsets.assign(blocks + 1, 0);
+            for (size_t b = 0; b < blocks; ++b) ws.offsets[b + 1] = ws.offsets[b] + ws.blocks[b].size();
+            out.resize(ws.offsets[blocks]);  // from the last view's size: zeroed only where it grew
+        }
+        sync.arrive_and_wait();
+        for (size_t b = member; b < blocks; b += members)
+            std::copy(ws.blocks[b].begin(), ws.blocks[b].end(), out.begin() + std::ptrdiff_t(ws.offsets[b]));
+    });
 }
-
-}  // namespace
 
 std::vector<LineSegment> extract_lines_reference(const LineMesh& lm, const glm::vec3& eye, const LineParams& params,
                                                  size_t threads) {
-    const ScaledThresholds thresholds = scaled_thresholds(params, lm.feature_size);
-    const auto& curv = lm.curvature;
-    const size_t nv = lm.mesh.positions.size();
-    threads = std::max<size_t>(threads, 1);
-    std::vector<VertexView> view(nv);
-    parallel_for(
-        nv, 4096,
-        [&](size_t begin, size_t end, size_t) {
-            for (size_t i = begin; i < end; ++i)
-                view[i] = vertex_view(lm.mesh.positions[i], curv.normals[i], curv.pdir1[i], curv.pdir2[i], curv.k1[i],
-                                      curv.k2[i], curv.dcurv[i], eye, thresholds.sug_thresh);
-        },
-        threads);
-
-    const size_t faces = lm.mesh.faces.size();
-    std::vector<std::vector<LineSegment>> blocks(threads);
-    const size_t used = parallel_for(
-        faces, 4096,
-        [&](size_t begin, size_t end, size_t block) {
-            extract_faces(lm, view, params, thresholds, uint32_t(begin), uint32_t(end), blocks[block]);
-        },
-        threads);
-    if (used == 1) return std::move(blocks[0]);
-    size_t total = 0;
-    for (const auto& b : blocks) total += b.size();
-    std::vector<LineSegment> segments;
-    segments.reserve(total);
-    for (const auto& b : blocks) segments.insert(segments.end(), b.begin(), b.end());
-    return segments;
+    ExtractWorkspace ws;
+    std::vector<LineSegment> out;
+    extract_lines_reference(lm, eye, params, out, ws, threads);
+    return out;
 }
 
 }  // namespace lw

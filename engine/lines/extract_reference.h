@@ -10,6 +10,7 @@
 // tests compare the two after `sort_segments`.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -19,10 +20,25 @@
 
 namespace lw {
 
-// `threads` > 1 splits the vertices and the faces into that many contiguous blocks and
-// concatenates the blocks' segments in face order: the same segments in the same order
-// whatever the count. Frames extract on one thread (1, the default): the other core is
-// lavapipe's while it draws the surface (frame_renderer.cpp).
+// The per-view scratch, kept by a caller that extracts every frame so that a frame
+// allocates nothing: per vertex n·v, kr, the suggestive test's numerator and a byte of
+// their signs; with several threads, each face block's segments.
+struct ExtractWorkspace {
+    std::vector<float> ndotv, kr, test_num;
+    std::vector<uint8_t> signs;
+    std::vector<std::vector<LineSegment>> blocks;
+    std::vector<size_t> offsets;
+};
+
+// Fills `out` (its capacity reused). Segments come out per block of 1024 faces, in order;
+// within a block by type (suggestive contours, contours, then creases and borders), each
+// type in face order; chaining does not depend on the order. `threads` > 1 runs vertex
+// and face blocks on several threads (core/parallel.h) and concatenates the face blocks'
+// segments in block order: the same segments in the same order whatever the count. Frames extract on
+// one thread (1, the default): the other core is lavapipe's while it draws the surface
+// (frame_renderer.cpp).
+void extract_lines_reference(const LineMesh& mesh, const glm::vec3& eye, const LineParams& params,
+                             std::vector<LineSegment>& out, ExtractWorkspace& workspace, size_t threads = 1);
 [[nodiscard]] std::vector<LineSegment> extract_lines_reference(const LineMesh& mesh, const glm::vec3& eye,
                                                                const LineParams& params, size_t threads = 1);
 

@@ -35,7 +35,36 @@ LineMesh build_line_mesh(const TriangleMesh& mesh, float crease_angle_deg) {
     line_mesh.curvature = compute_curvature(line_mesh.mesh);
     line_mesh.feature_size = feature_size(line_mesh.mesh, line_mesh.curvature);
     line_mesh.feature_edges = feature_edge_masks(line_mesh.mesh, crease_angle_deg);
+    line_mesh.vertex_arrays = line_vertex_arrays(line_mesh.mesh, line_mesh.curvature);
     return line_mesh;
+}
+
+void pose_line_mesh(LineMesh& line_mesh, const TriangleMesh& posed) {
+    update_positions(line_mesh.mesh, posed);
+    line_mesh.curvature = compute_curvature(line_mesh.mesh);
+    line_mesh.vertex_arrays = line_vertex_arrays(line_mesh.mesh, line_mesh.curvature);
+}
+
+LineVertexArrays line_vertex_arrays(const WeldedMesh& mesh, const SurfaceCurvature& curvature) {
+    using F = LineVertexArrays::Field;
+    LineVertexArrays out;
+    out.count = mesh.positions.size();
+    out.values.resize(size_t(F::kFields) * out.count);
+    const auto put = [&](F f, size_t i, float v) { out.values[size_t(f) * out.count + i] = v; };
+    for (size_t i = 0; i < out.count; ++i) {
+        const glm::vec3 p = mesh.positions[i], n = curvature.normals[i], e1 = curvature.pdir1[i], e2 = curvature.pdir2[i];
+        const glm::vec4 c = curvature.dcurv[i];
+        for (int k = 0; k < 3; ++k) {
+            put(F(F::Px + size_t(k)), i, p[k]);
+            put(F(F::Nx + size_t(k)), i, n[k]);
+            put(F(F::E1x + size_t(k)), i, e1[k]);
+            put(F(F::E2x + size_t(k)), i, e2[k]);
+        }
+        put(F::K1, i, curvature.k1[i]);
+        put(F::K2, i, curvature.k2[i]);
+        for (int k = 0; k < 4; ++k) put(F(F::C0 + size_t(k)), i, c[k]);
+    }
+    return out;
 }
 
 }  // namespace lw

@@ -2,8 +2,9 @@
 //
 // Input:  a world-space `TriangleMesh` (rest pose or deformed) and the crease angle.
 // Output: `LineMesh` — the welded mesh with adjacency, its curvature and derivative
-//         tensor, rtsc's feature size, and per face a mask of the feature edges (creases
-//         and borders) that face owns. Rebuilt when the mesh deforms; the per-view work
+//         tensor, rtsc's feature size, per face a mask of the feature edges (creases and
+//         borders) that face owns, and the per-vertex inputs of the per-view pass laid out
+//         for it. Posed again (`pose_line_mesh`) when the mesh deforms; the per-view work
 //         (extract_reference.h, extract_gpu.h) reads it every frame.
 #pragma once
 
@@ -23,14 +24,33 @@ namespace lw {
 constexpr uint32_t kCreaseBit = 1u;
 constexpr uint32_t kBorderBit = 8u;
 
+// What the host's per-vertex pass reads, one array per component (structure of arrays), so
+// that its loop over vertices is one the compiler vectorizes and reads nothing else: the
+// position, normal, principal directions and curvatures and the derivative tensor of
+// `LineMesh::curvature`, copied.
+struct LineVertexArrays {
+    enum Field : size_t { Px, Py, Pz, Nx, Ny, Nz, E1x, E1y, E1z, E2x, E2y, E2z, K1, K2, C0, C1, C2, C3, kFields };
+    size_t count = 0;
+    std::vector<float> values;  // field f of vertex i at f · count + i
+    const float* field(Field f) const { return values.data() + size_t(f) * count; }
+};
+
 struct LineMesh {
     WeldedMesh mesh;
     SurfaceCurvature curvature;
     float feature_size = 0.0f;
     std::vector<uint32_t> feature_edges;
+    LineVertexArrays vertex_arrays;  // of mesh.positions and curvature, kept in step with them
 };
 
 [[nodiscard]] LineMesh build_line_mesh(const TriangleMesh& mesh, float crease_angle_deg);
+
+// Another pose of the same mesh (an animation frame, same vertex numbering): positions,
+// curvature and the vertex arrays follow it; the feature size and the feature edges stay
+// those of the pose the line mesh was built in.
+void pose_line_mesh(LineMesh& line_mesh, const TriangleMesh& posed);
+
+[[nodiscard]] LineVertexArrays line_vertex_arrays(const WeldedMesh& mesh, const SurfaceCurvature& curvature);
 
 // Recomputes the feature-edge masks for another crease angle.
 [[nodiscard]] std::vector<uint32_t> feature_edge_masks(const WeldedMesh& mesh, float crease_angle_deg);

@@ -42,7 +42,7 @@ inline VertexView vertex_view(const glm::vec3& p, const glm::vec3& n, const glm:
     const float u2 = u * u, w2 = w * w;
     const float kr = k1 * u2 + k2 * w2;
     const float csc2 = 1.0f / (u2 + w2);
-    const float num0 = (u2 * (u * C[0] + 3.0f * w * C[1]) + w2 * (3.0f * u * C[2] + w * C[3])) * csc2;
+    const float num0 = (u2 * (u * C.x + 3.0f * w * C.y) + w2 * (3.0f * u * C.z + w * C.w)) * csc2;
     const float tr = (k2 - k1) * u * w * csc2;
     const float num1 = num0 - 2.0f * ndotv * (tr * tr);
     return VertexView{ndotv, kr, num1 - scaled_thresh * ndotv, ndotv};

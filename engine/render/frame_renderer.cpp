@@ -95,8 +95,7 @@ void FrameRenderer::set_mesh(const TriangleMesh& mesh, bool with_lines, float cr
 void FrameRenderer::deform(const TriangleMesh& posed) {
     mesh_ = upload_mesh(*ctx_, posed, &materials_);
     if (!line_mesh_) return;
-    update_positions(line_mesh_->mesh, posed);
-    line_mesh_->curvature = compute_curvature(line_mesh_->mesh);
+    pose_line_mesh(*line_mesh_, posed);
     if (!extraction_on_host_) extractor_.set_mesh(*line_mesh_);
 }
 
@@ -206,7 +205,7 @@ Frame FrameRenderer::render(const CameraMatrices& camera, const glm::vec3& eye, 
         });
         if (host_extraction) {
             Timer extract;
-            frame.segments = extract_lines_reference(*line_mesh_, eye, extraction);
+            extract_lines_reference(*line_mesh_, eye, extraction, frame.segments, extract_workspace_);
             frame.timings.extract_ms = extract.elapsed_ms();
         }
         surface_work.wait();

@@ -24,6 +24,7 @@
 #include "gpu/context.h"
 #include "gpu/timestamps.h"
 #include "lines/extract_gpu.h"
+#include "lines/extract_reference.h"
 #include "lines/line_mesh.h"
 #include "lines/svg_export.h"
 #include "lines/visibility.h"
@@ -162,6 +163,7 @@ private:
     LinePass line_pass_;
     LineExtractor extractor_;
     bool extraction_on_host_;  // CPU devices: extract_lines_reference, beside the surface pass
+    ExtractWorkspace extract_workspace_;  // its per-vertex scratch, kept from frame to frame
     GpuTimer timer_;
     Buffer depth_readback_, color_readback_;  // reused every frame
     std::optional<GpuMesh> mesh_;
