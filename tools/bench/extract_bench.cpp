@@ -1,5 +1,6 @@
 #include "extract_bench.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <sstream>
 #include <vector>
@@ -52,7 +53,8 @@ void apply_camera_flags(ViewCamera& camera, const CameraFlags& flags) {
 }
 
 int run_extract_bench(const ExtractBenchOptions& o) {
-    if (o.threads < 1) throw usage_error("--threads: must be 1 or more");
+    if (o.threads.empty() || *std::min_element(o.threads.begin(), o.threads.end()) < 1)
+        throw usage_error("--threads: each count must be 1 or more");
     if (o.repeat < 1) throw usage_error("--repeat: must be 1 or more");
     const LineParams params = types_flag(o.types);
     LoadedScene scene = load_scene(scene_for_model(o.model));
@@ -63,18 +65,33 @@ int run_extract_bench(const ExtractBenchOptions& o) {
     const LineMesh lm = build_line_mesh(scene.mesh, params.crease_angle_deg);
     std::printf("mesh: %s subdivided %dx: %zu triangles, %zu welded vertices (line mesh %.0f ms)\n", o.model.c_str(),
                 o.subdivide, lm.mesh.faces.size(), lm.mesh.positions.size(), build.elapsed_ms());
-    std::printf("eye: %g,%g,%g; types: %s; %d thread(s)\n", double(camera.eye.x), double(camera.eye.y),
-                double(camera.eye.z), o.types.empty() ? "the defaults" : o.types.c_str(), o.threads);
-    std::vector<double> ms;
-    size_t segments = 0;
-    for (int r = -1; r < o.repeat; ++r) {  // one warm-up run
-        Timer t;
-        segments = extract_lines_reference(lm, camera.eye, params, size_t(o.threads)).size();
-        if (r >= 0) ms.push_back(t.elapsed_ms());
+    std::printf("eye: %g,%g,%g; types: %s\n", double(camera.eye.x), double(camera.eye.y), double(camera.eye.z),
+                o.types.empty() ? "the defaults" : o.types.c_str());
+    // As a frame extracts: the output and the scratch kept from run to run. Several thread
+    // counts take turns run by run, so that the machine's drifts hit them alike.
+    const size_t counts = o.threads.size();
+    std::vector<std::vector<double>> ms(counts);
+    std::vector<LineSegment> segments;
+    ExtractWorkspace workspace;
+    for (int r = -1; r < o.repeat; ++r)  // one warm-up round
+        for (size_t k = 0; k < counts; ++k) {
+            Timer t;
+            extract_lines_reference(lm, camera.eye, params, segments, workspace, size_t(o.threads[k]));
+            if (r >= 0) ms[k].push_back(t.elapsed_ms());
+        }
+    for (size_t k = 0; k < counts; ++k) {
+        const Stats s = stats(ms[k]);
+        const std::string label = counts == 1 ? "extract" : "extract (" + std::to_string(o.threads[k]) + " threads)";
+        std::printf("%s: median %.3f ms (min %.3f, max %.3f) over %d runs, %zu segments\n", label.c_str(), s.median, s.min,
+                    s.max, o.repeat, segments.size());
     }
-    const Stats s = stats(ms);
-    std::printf("extract: median %.3f ms (min %.3f, max %.3f) over %d runs, %zu segments\n", s.median, s.min, s.max,
-                o.repeat, segments);
+    for (size_t k = 1; k < counts; ++k) {
+        std::vector<double> ratios(ms[0].size());
+        for (size_t r = 0; r < ratios.size(); ++r) ratios[r] = ms[0][r] / ms[k][r];
+        const Stats s = stats(ratios);
+        std::printf("speed-up %d threads over %d: median %.2f (min %.2f, max %.2f) of run-by-run ratios\n", o.threads[k],
+                    o.threads[0], s.median, s.min, s.max);
+    }
     return 0;
 }
 

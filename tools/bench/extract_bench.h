@@ -7,6 +7,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "scene/camera.h"
 
@@ -23,7 +24,8 @@ struct ExtractBenchOptions {
     int subdivide = 0;
     CameraFlags camera;     // only the eye matters to the extraction
     std::string types;      // "silhouette,suggestive,crease,border"; empty: the defaults
-    int threads = 1, repeat = 50;
+    std::vector<int> threads{1};  // several: timed in turn, run by run (noisy machines)
+    int repeat = 50;
 };
 
 // The camera flags over `camera` (the one framing the model): usage errors name the flag.

@@ -56,7 +56,8 @@ struct BenchOptions {
     lw::bench::CameraFlags camera;  // over the framing camera
     bool extract_only = false;      // lines: the host extraction alone (extract_bench.h)
     std::string types;
-    int threads = 1, repeat = 50;
+    std::vector<int> threads{1};
+    int repeat = 50;
     int samples = 1;  // samples per pixel of the surface pass (MSAA)
 };
 
@@ -260,7 +261,12 @@ int main(int argc, char** argv) {
     lines_cmd->add_flag("--extract-only", lines.extract_only,
                         "Time the host extraction alone (no device): one line `extract: median X ms`, to set beside "
                         "rtsc's per-view extraction");
-    lines_cmd->add_option("--threads", lines.threads, "--extract-only: threads over face blocks")->capture_default_str();
+    lines_cmd
+        ->add_option("--threads", lines.threads,
+                     "--extract-only: threads over vertex and face blocks; a list (1,2) times each count in turn, "
+                     "run by run, and prints their speed-ups over the first")
+        ->delimiter(',')
+        ->capture_default_str();
     lines_cmd->add_option("--types", lines.types,
                           "--extract-only: line types, e.g. silhouette,suggestive (default: the four default types)");
     lines_cmd->add_option("--repeat", lines.repeat, "--extract-only: timed runs (after one warm-up)")
