@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <condition_variable>
 #include <exception>
 #include <mutex>
@@ -50,7 +51,9 @@ public:
             current_ = &job;
             generation_.fetch_add(1);
         }
-        wake_.notify_all();
+        // Sleeping workers need a system call to wake, spinning ones do not: in a virtual
+        // machine the call (an interrupt to a halted CPU) costs tens of microseconds.
+        if (sleepers_.load() > 0) wake_.notify_all();
         job.finished.fetch_add(take_chunks(job));
         // The job lives on this stack: wait until every chunk ran and no worker holds it.
         // Workers join and leave under the mutex, so the last check is made holding it.
@@ -92,14 +95,19 @@ private:
         return ran;
     }
 
-    // Waits while `busy()`: first spinning on the CPU (a few microseconds: the next pass of
-    // an extraction comes that soon), then yielding it (~20 ms), and only then returns for
-    // the caller to sleep: a thread woken by the kernel takes tens of microseconds, as long
-    // as a whole pass over a small mesh.
+    // Waits while `busy()`: first spinning on the CPU (the next phase of a pass comes within
+    // microseconds), then yielding it, for 5 ms in all, and only then returns for the caller
+    // to sleep: a thread woken by the kernel takes tens of microseconds (more in a virtual
+    // machine), as long as a whole pass over a small mesh, and a renderer's next frame
+    // comes within milliseconds.
     template <class Busy>
     static void spin_while(Busy&& busy) {
-        for (int i = 0; i < 1000 && busy(); ++i) pause();
-        for (int i = 0; i < 20000 && busy(); ++i) std::this_thread::yield();
+        for (int i = 0; i < 1000; ++i) {
+            if (!busy()) return;
+            pause();
+        }
+        const auto until = std::chrono::steady_clock::now() + std::chrono::milliseconds(5);
+        while (busy() && std::chrono::steady_clock::now() < until) std::this_thread::yield();
     }
 
     void work() {
@@ -109,7 +117,9 @@ private:
             spin_while([&] { return generation_.load() == seen; });
             {
                 std::unique_lock lock(mutex_);
+                sleepers_.fetch_add(1);
                 wake_.wait(lock, [&] { return generation_.load() != seen; });
+                sleepers_.fetch_sub(1);
                 seen = generation_.load();
                 job = current_;
                 if (!job) continue;  // it ended before this thread woke
@@ -127,6 +137,7 @@ private:
     std::condition_variable wake_, finished_;
     Job* current_ = nullptr;
     std::atomic<uint64_t> generation_{0};
+    std::atomic<int> sleepers_{0};  // workers waiting on wake_ (changed under the mutex)
 };
 
 // The process's pool. A fork()ed child (a Python multiprocessing worker, say) has none of
