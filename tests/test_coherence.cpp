@@ -1,6 +1,7 @@
 // Coherent parameterization and SLAM strokes: splat, votes across frames, level folding,
 // SLAM files, dumps.
 #include <cmath>
+#include <cstring>
 #include <fstream>
 
 #include <nlohmann/json.hpp>
@@ -8,6 +9,7 @@
 #include "coherence/coherence.h"
 #include "coherence/path_dump.h"
 #include "core/error.h"
+#include "core/random.h"
 #include "geometry/test_meshes.h"
 #include "io/image_io.h"
 #include "io/slam_io.h"
@@ -101,6 +103,51 @@ TEST(Coherence, ResampleAtPhaseSitsOnMultiplesOfTheStep) {
         EXPECT_NEAR(t / step, std::round(t / step), 1e-3) << k;
     }
     EXPECT_EQ(aligned.samples.front().pixel, path.samples.front().pixel);
+}
+
+// The host site reads the splat where the votes need it (splat_grid.h): at every pixel the
+// same bits as the drawn splat, for sprites that crowd, overlap, lie on the frame's edges and
+// outside it, at radii below a pixel to several; and a second read of a few pixels after it.
+TEST(Coherence, SplatGridReadsTheDrawnSplatBitForBit) {
+    const int width = 61, height = 37;
+    Rng rng(11);
+    for (const float radius : {0.4f, 1.5f, 4.0f}) {
+        std::vector<ScreenPath> paths;
+        for (int p = 0; p < 6; ++p) {
+            const glm::vec2 a(float(rng.uniform(-8.0, 69.0)), float(rng.uniform(-8.0, 45.0)));
+            const glm::vec2 b(float(rng.uniform(-8.0, 69.0)), float(rng.uniform(-8.0, 45.0)));
+            paths.push_back(straight_path(a, b, 0.7f));
+        }
+        std::vector<PathParam> params(paths.size());
+        std::vector<glm::vec3> sprites;
+        for (size_t p = 0; p < paths.size(); ++p) {
+            params[p] = {.rho = float(rng.uniform(0.01, 0.2)), .phi = float(rng.uniform(0.0, 1.0))};
+            for (size_t k = 0; k < paths[p].samples.size(); ++k)
+                sprites.emplace_back(paths[p].samples[k].pixel, params[p].rho * path_arclength(paths[p], k) + params[p].phi);
+        }
+        const std::vector<glm::vec4> drawn = splat_reference(paths, params, width, height, radius);
+        SplatSums splat;
+        splat.splat(sprites, radius, width, height);
+        // Every pixel in one read; then a few, repeated and out of order, in a second.
+        std::vector<glm::ivec2> every;
+        for (int y = 0; y < height; ++y)
+            for (int x = 0; x < width; ++x) every.emplace_back(x, y);
+        std::vector<glm::vec4> sums;
+        splat.read(every, sums);
+        size_t covered = 0, differ = 0;
+        for (size_t i = 0; i < every.size(); ++i) {
+            differ += std::memcmp(&sums[i], &drawn[i], sizeof(glm::vec4)) != 0;
+            covered += drawn[i].y > 0.0f;
+        }
+        EXPECT_EQ(differ, 0u) << "radius " << radius;
+        EXPECT_GT(covered, 100u) << "radius " << radius;
+        const std::vector<glm::ivec2> some{{60, 36}, {3, 4}, {60, 36}, {0, 0}, {30, 20}};
+        splat.read(some, sums);
+        for (size_t i = 0; i < some.size(); ++i) {
+            const glm::vec4 b = drawn[size_t(some[i].y) * width + size_t(some[i].x)];
+            EXPECT_EQ(std::memcmp(&sums[i], &b, sizeof b), 0) << "radius " << radius << ", read " << i;
+        }
+    }
 }
 
 class CoherenceGpu : public test::GpuTest {};

@@ -153,24 +153,17 @@ void keep_in_home_octave(PathParam& param, float rho0) {
 namespace {
 
 // Adds sprites (centre x, y in pixels; T) of radius δ into `buffer` (width × height), in
-// order, the weights the GPU splat's fragment stage computes at pixel centres. `touched`
-// (optional) receives the index of every pixel written.
-void splat_into(std::span<const glm::vec3> sprites, float radius, int width, int height, std::vector<glm::vec4>& buffer,
-                std::vector<uint32_t>* touched) {
+// order, the weights the GPU splat's fragment stage computes at pixel centres.
+void splat_into(std::span<const glm::vec3> sprites, float radius, int width, int height, std::vector<glm::vec4>& buffer) {
     for (const glm::vec3& sprite : sprites) {
         const glm::vec2 c(sprite);
-        const float t = sprite.z;
-        const int x0 = std::max(0, int(std::floor(c.x - radius))), x1 = std::min(width - 1, int(std::ceil(c.x + radius)));
-        const int y0 = std::max(0, int(std::floor(c.y - radius))), y1 = std::min(height - 1, int(std::ceil(c.y + radius)));
-        for (int y = y0; y <= y1; ++y)
-            for (int x = x0; x <= x1; ++x) {
+        const SpriteBox box = sprite_box(c, radius, width, height);
+        for (int y = box.y0; y <= box.y1; ++y)
+            for (int x = box.x0; x <= box.x1; ++x) {
                 const glm::vec2 pixel(float(x) + 0.5f, float(y) + 0.5f);
-                const float d = glm::length(pixel - c);
-                const float w = std::clamp(1.0f - d / radius, 0.0f, 1.0f);
+                const float w = sprite_weight(pixel, c, radius);
                 if (w <= 0.0f) continue;
-                const size_t i = size_t(y) * size_t(width) + size_t(x);
-                if (touched && buffer[i].y == 0.0f) touched->push_back(uint32_t(i));  // first write only
-                buffer[i] += glm::vec4(w * t, w, w * (c - pixel));
+                buffer[size_t(y) * size_t(width) + size_t(x)] += glm::vec4(w * sprite.z, w, w * (c - pixel));
             }
     }
 }
@@ -191,7 +184,7 @@ std::vector<glm::vec3> sprites_of(const std::vector<ScreenPath>& paths, const st
 std::vector<glm::vec4> splat_reference(const std::vector<ScreenPath>& paths, const std::vector<PathParam>& params,
                                        int width, int height, float radius) {
     std::vector<glm::vec4> buffer(size_t(width) * height, glm::vec4(0.0f));
-    splat_into(sprites_of(paths, params), radius, width, height, buffer, nullptr);
+    splat_into(sprites_of(paths, params), radius, width, height, buffer);
     return buffer;
 }
 
@@ -230,46 +223,68 @@ VoteSet CoherenceTracker::gather_votes(const std::vector<ScreenPath>& paths, con
     VoteSet set;
     const bool track_surface = surface.positions && surface.faces &&
                                previous_positions_.size() == surface.positions->size();
-    for (const ScreenPath& path : paths) {
-        if (path.visible && has_previous_)
-            for (size_t k = 0; k < path.samples.size(); ++k) {
-                const ScreenSample& sample = path.samples[k];
-                // The sample's surface point one frame earlier: moved with its face.
-                glm::vec3 previous = sample.position;
-                if (track_surface && sample.face < surface.faces->size()) {
-                    const glm::uvec3 c = (*surface.faces)[sample.face];
-                    for (int i = 0; i < 3; ++i)
-                        previous += sample.bary[i] * (previous_positions_[c[i]] - (*surface.positions)[c[i]]);
-                }
-                glm::vec3 pixel = project_to_pixel(previous_camera_, previous, float(width_), float(height_));
-                if (path.type == LineType::Silhouette || path.type == LineType::Suggestive) {
-                    // A contour is not attached to the surface: it slides over it as the view
-                    // turns, so only the surface point's motion across the line carries the
-                    // line; its motion along the line is the surface sliding under the contour
-                    // and would drag the texture along a contour that stays put on screen.
-                    const glm::vec2 tangent = path_tangent(path, k);
-                    const glm::vec2 moved = glm::vec2(pixel) - sample.pixel;
-                    const glm::vec2 across = sample.pixel + moved - glm::dot(moved, tangent) * tangent;
-                    pixel = glm::vec3(across, pixel.z);
-                }
-                if (pixel.z <= 0.0f || pixel.x < 0.0f || pixel.y < 0.0f || pixel.x >= float(width_) ||
-                    pixel.y >= float(height_))
-                    continue;
-                const glm::vec4 sum = splat_at(uint32_t(pixel.x), uint32_t(pixel.y));
-                if (sum.y > 1e-6f) {
-                    // Σwt/Σw is the parameterization at the weighted centre of the sprites that
-                    // reached this pixel, not at the sample: near a path's ends (where all
-                    // sprites lie on one side) and at the pixel's own offset that would pull
-                    // every vote along the path and shrink ρ frame after frame. Vote at the
-                    // arclength of that centre instead: the sample's, moved by the centre's
-                    // offset along the path.
-                    const glm::vec2 centre = glm::vec2(std::floor(pixel.x) + 0.5f, std::floor(pixel.y) + 0.5f) +
-                                             glm::vec2(sum.z, sum.w) / sum.y;
-                    const float along = glm::dot(centre - glm::vec2(pixel), path_tangent(path, k));
-                    set.votes.push_back({sum.x / sum.y, path_arclength(path, k) + along});
-                    set.sample.push_back(uint32_t(k));
-                }
+    // Where each sample was a frame earlier; the splat is then read at all those pixels at
+    // once (on the host: at them alone, splat_grid.h).
+    struct Query {
+        uint32_t path, sample;
+        glm::vec2 pixel;
+    };
+    std::vector<Query> queries;
+    std::vector<glm::ivec2> pixels;
+    for (uint32_t p = 0; p < paths.size(); ++p) {
+        const ScreenPath& path = paths[p];
+        if (!path.visible || !has_previous_) continue;
+        for (uint32_t k = 0; k < path.samples.size(); ++k) {
+            const ScreenSample& sample = path.samples[k];
+            // The sample's surface point one frame earlier: moved with its face.
+            glm::vec3 previous = sample.position;
+            if (track_surface && sample.face < surface.faces->size()) {
+                const glm::uvec3 c = (*surface.faces)[sample.face];
+                for (int i = 0; i < 3; ++i)
+                    previous += sample.bary[i] * (previous_positions_[c[i]] - (*surface.positions)[c[i]]);
             }
+            glm::vec3 pixel = project_to_pixel(previous_camera_, previous, float(width_), float(height_));
+            if (path.type == LineType::Silhouette || path.type == LineType::Suggestive) {
+                // A contour is not attached to the surface: it slides over it as the view
+                // turns, so only the surface point's motion across the line carries the
+                // line; its motion along the line is the surface sliding under the contour
+                // and would drag the texture along a contour that stays put on screen.
+                const glm::vec2 tangent = path_tangent(path, k);
+                const glm::vec2 moved = glm::vec2(pixel) - sample.pixel;
+                const glm::vec2 across = sample.pixel + moved - glm::dot(moved, tangent) * tangent;
+                pixel = glm::vec3(across, pixel.z);
+            }
+            if (pixel.z <= 0.0f || pixel.x < 0.0f || pixel.y < 0.0f || pixel.x >= float(width_) ||
+                pixel.y >= float(height_))
+                continue;
+            queries.push_back({p, k, glm::vec2(pixel)});
+            pixels.emplace_back(int(pixel.x), int(pixel.y));
+        }
+    }
+    std::vector<glm::vec4> sums;
+    if (site_ == ComputeSite::Host) {
+        host_splat_.read(pixels, sums);
+    } else {  // the device's splat, read back
+        sums.resize(pixels.size());
+        for (size_t q = 0; q < pixels.size(); ++q) sums[q] = splat_at(uint32_t(pixels[q].x), uint32_t(pixels[q].y));
+    }
+    size_t q = 0;
+    for (uint32_t p = 0; p < paths.size(); ++p) {
+        for (; q < queries.size() && queries[q].path == p; ++q) {
+            const glm::vec4 sum = sums[q];
+            if (sum.y <= 1e-6f) continue;
+            // Σwt/Σw is the parameterization at the weighted centre of the sprites that
+            // reached this pixel, not at the sample: near a path's ends (where all sprites lie
+            // on one side) and at the pixel's own offset that would pull every vote along the
+            // path and shrink ρ frame after frame. Vote at the arclength of that centre
+            // instead: the sample's, moved by the centre's offset along the path.
+            const uint32_t k = queries[q].sample;
+            const glm::vec2 at = queries[q].pixel;
+            const glm::vec2 centre = glm::vec2(std::floor(at.x) + 0.5f, std::floor(at.y) + 0.5f) + glm::vec2(sum.z, sum.w) / sum.y;
+            const float along = glm::dot(centre - at, path_tangent(paths[p], k));
+            set.votes.push_back({sum.x / sum.y, path_arclength(paths[p], k) + along});
+            set.sample.push_back(k);
+        }
         set.offsets.push_back(uint32_t(set.votes.size()));
     }
     return set;
@@ -297,11 +312,8 @@ void CoherenceTracker::splat_sprites(const std::vector<glm::vec3>& sprites_in, f
     last_sprites_ = sprite_list;
     last_radius_ = radius;
     if (site_ == ComputeSite::Host) {
-        // The buffer is cleared where the last splat wrote, not whole (15 MB at 1280×720).
-        if (host_splat_.empty()) host_splat_.assign(size_t(width_) * height_, glm::vec4(0.0f));
-        for (uint32_t i : host_touched_) host_splat_[i] = glm::vec4(0.0f);
-        host_touched_.clear();
-        splat_into(sprite_list, radius, int(width_), int(height_), host_splat_, &host_touched_);
+        // Not drawn: read at the next frame's samples alone (splat_grid.h).
+        host_splat_.splat(sprite_list, radius, int(width_), int(height_));
         return;
     }
     // Only the band of rows the sprites reach is cleared, drawn and read back: the copy of a
@@ -375,13 +387,19 @@ void CoherenceTracker::splat_sprites(const std::vector<glm::vec3>& sprites_in, f
 }
 
 glm::vec4 CoherenceTracker::splat_at(uint32_t x, uint32_t y) const {
-    if (site_ == ComputeSite::Host) return host_splat_.empty() ? glm::vec4(0.0f) : host_splat_[size_t(y) * width_ + x];
     if (y < splat_first_row_ || y >= splat_first_row_ + splat_rows_) return glm::vec4(0.0f);
     return static_cast<const glm::vec4*>(splat_readback_.mapped())[size_t(y) * width_ + x];
 }
 
 std::vector<glm::vec4> CoherenceTracker::splat_buffer() const {
     std::vector<glm::vec4> out(size_t(width_) * height_);
+    if (site_ == ComputeSite::Host) {
+        std::vector<glm::ivec2> pixels;
+        for (uint32_t y = 0; y < height_; ++y)
+            for (uint32_t x = 0; x < width_; ++x) pixels.emplace_back(x, y);
+        host_splat_.read(pixels, out);
+        return out;
+    }
     for (uint32_t y = 0; y < height_; ++y)
         for (uint32_t x = 0; x < width_; ++x) out[size_t(y) * width_ + x] = splat_at(x, y);
     return out;

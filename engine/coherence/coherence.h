@@ -10,7 +10,8 @@
 //      w = clamp(1 − d/δ, 0, 1), additive, into a float buffer kept for frame f + 1 — §4.1
 //      (the extra channels, Σ w·(c − pixel), place each vote where its average was taken).
 // Steps 2 and 3 run on the device (a compute dispatch; an RGBA32F render target read back)
-// or, on CPU devices, on the host (fit_paths_reference, splat_reference's loop): ComputeSite.
+// or, on CPU devices, on the host (fit_paths_reference; the splat read at the votes' pixels
+// alone, splat_grid.h): ComputeSite.
 // The two comparison policies of the issue: arclength (tiling, T = s·κ / Lmax) and stretch
 // (T = s/L, one texture stretched over the path, no level folding).
 #pragma once
@@ -21,6 +22,7 @@
 
 #include "coherence/ransac.h"
 #include "coherence/ransac_gpu.h"
+#include "coherence/splat_grid.h"
 #include "gpu/context.h"
 #include "gpu/pipeline.h"
 #include "gpu/resources.h"
@@ -92,7 +94,8 @@ struct SurfaceFrame {
 class CoherenceTracker {
 public:
     // `site` Host (the default on CPU devices, see ComputeSite): the splat is splat_reference's
-    // loop into a host buffer and RANSAC is fit_paths_reference; Device: the GPU splat and fit.
+    // sums, read where the votes need them (splat_grid.h), and RANSAC is fit_paths_reference;
+    // Device: the GPU splat and fit.
     CoherenceTracker(const Context& ctx, uint32_t width, uint32_t height, ComputeSite site);
     CoherenceTracker(const Context& ctx, uint32_t width, uint32_t height)
         : CoherenceTracker(ctx, width, height, ctx.preferred_compute_site()) {}
@@ -139,7 +142,8 @@ private:
     void splat(const std::vector<ScreenPath>& paths, const std::vector<PathParam>& params, float radius,
                GpuTimer* timer);
     void splat_sprites(const std::vector<glm::vec3>& sprites, float radius, GpuTimer* timer);
-    // The last splat's (Σ w·t, Σ w, Σ w·(c − pixel)) at a pixel, read in place from the readback.
+    // The device's last splat's (Σ w·t, Σ w, Σ w·(c − pixel)) at a pixel, read in place from
+    // the readback.
     [[nodiscard]] glm::vec4 splat_at(uint32_t x, uint32_t y) const;
 
     const Context* ctx_;
@@ -150,8 +154,7 @@ private:
     Buffer splat_readback_;  // the last splat, rows [splat_first_row_, + splat_rows_) valid
     uint32_t splat_first_row_ = 0, splat_rows_ = 0;
     Buffer sprite_buffer_;   // host-visible, kept from frame to frame
-    std::vector<glm::vec4> host_splat_;    // ComputeSite::Host: the last splat, whole frame
-    std::vector<uint32_t> host_touched_;   // pixels of host_splat_ it wrote
+    SplatSums host_splat_;                 // ComputeSite::Host: the last splat, read where needed
     RansacFitter fitter_;
     bool has_previous_ = false;
     CameraMatrices previous_camera_;
