@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "coherence/coherence.h"
+#include "core/error.h"
 #include "core/image.h"
 #include "io/image_io.h"
 #include "render/coverage_reference.h"
@@ -244,6 +245,52 @@ TEST_F(GpuTest, DefaultSceneShowsSlamStrokesAndSuggestiveContours) {
     for (size_t i = 0; i < frame.image.color.pixels.size(); i += 4)
         if (frame.image.color.pixels[i] > 40 && frame.image.color.pixels[i] < 200) ++partial;
     EXPECT_GT(partial, 500u);
+}
+
+// Frames in flight (begin the next, then finish the last: what the viewer does on a GPU)
+// give the frames drawn one at a time, bit for bit: a skinned model posed anew between a
+// frame's begin and its finish (its votes carry samples from its own pose), SLAM strokes
+// parameterized from frame to frame, the camera turning.
+TEST_F(GpuTest, FramesInFlightEqualFramesDrawnOneAtATime) {
+    SceneDesc desc = parse_scene_json(R"({"model": "Fox/Fox.glb", "size": [160, 120], "samples": 1,
+        "animation": {"clip": 1}, "lines": {"silhouette": {"slam": "../../../scenes/slams/dots.exr"}},
+        "camera": {"orbit": 30}})",
+                                      test::data_dir() / "models/fox.json");
+    const auto request = [](int f) {
+        return FrameRequest{.when = {.progress = float(f) / 5.0f, .seconds = float(f) / 24.0f}};
+    };
+    std::vector<Frame> one_by_one, overlapped;
+    {
+        SceneSession session(ctx(), desc);
+        for (int f = 0; f < 6; ++f) one_by_one.push_back(session.frame(request(f)));
+    }
+    {
+        SceneSession session(ctx(), desc);
+        session.begin_frame(request(0));
+        for (int f = 1; f < 6; ++f) {
+            session.begin_frame(request(f));
+            EXPECT_EQ(session.frames_in_flight(), 2u);
+            overlapped.push_back(session.finish_frame());
+        }
+        overlapped.push_back(session.finish_frame());
+        EXPECT_THROW((void)session.finish_frame(), Error);
+    }
+    size_t strokes = 0;
+    for (int f = 0; f < 6; ++f) {
+        EXPECT_EQ(overlapped[size_t(f)].image.color.pixels, one_by_one[size_t(f)].image.color.pixels) << "frame " << f;
+        ASSERT_EQ(overlapped[size_t(f)].sets.size(), one_by_one[size_t(f)].sets.size());
+        for (size_t s = 0; s < one_by_one[size_t(f)].sets.size(); ++s) {
+            const auto& a = overlapped[size_t(f)].sets[s].params;
+            const auto& b = one_by_one[size_t(f)].sets[s].params;
+            ASSERT_EQ(a.size(), b.size()) << "frame " << f;
+            for (size_t p = 0; p < a.size(); ++p) {
+                EXPECT_EQ(a[p].rho, b[p].rho) << "frame " << f << " path " << p;
+                EXPECT_EQ(a[p].phi, b[p].phi) << "frame " << f << " path " << p;
+                strokes += a[p].fitted;
+            }
+        }
+    }
+    EXPECT_GT(strokes, 10u) << "paths fitted from the frame before";
 }
 
 }  // namespace

@@ -62,18 +62,22 @@ std::vector<SvgGroup> line_set_svg_groups(const LinesDesc& lines, const Frame& f
     return groups;
 }
 
+FrameRenderer::Slot::Slot(const Context& ctx, uint32_t width, uint32_t height, VkFormat format, uint32_t samples)
+    : target(ctx, width, height, format, samples),
+      depth_readback(ctx, {.size = VkDeviceSize(width) * height * 4, .usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                           .purpose = MemoryPurpose::Readback, .name = "depth readback"}),
+      color_readback(ctx, {.size = VkDeviceSize(width) * height * 4, .usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                           .purpose = MemoryPurpose::Readback, .name = "color readback"}),
+      timer(ctx) {}
+
 FrameRenderer::FrameRenderer(const Context& ctx, uint32_t width, uint32_t height, VkFormat color_format)
     : ctx_(&ctx),
-      target_(ctx, width, height, color_format),
       surface_pass_(ctx, color_format),
       line_pass_(ctx, color_format),
       extractor_(ctx),
-      extraction_on_host_(ctx.preferred_compute_site() == ComputeSite::Host),
-      timer_(ctx),
-      depth_readback_(ctx, {.size = VkDeviceSize(width) * height * 4, .usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                            .purpose = MemoryPurpose::Readback, .name = "depth readback"}),
-      color_readback_(ctx, {.size = VkDeviceSize(width) * height * 4, .usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                            .purpose = MemoryPurpose::Readback, .name = "color readback"}) {}
+      extraction_on_host_(ctx.preferred_compute_site() == ComputeSite::Host) {
+    for (int i = 0; i < 2; ++i) slots_.emplace_back(ctx, width, height, color_format, 1);
+}
 
 void FrameRenderer::set_materials(const SurfaceMaterials& materials) {
     if (mesh_ && materials.face_material != materials_.face_material)
@@ -83,7 +87,16 @@ void FrameRenderer::set_materials(const SurfaceMaterials& materials) {
     materials_ = SurfaceMaterials{.materials = materials.materials, .face_material = materials.face_material};
 }
 
+void FrameRenderer::keep_positions_of_frames_in_flight() {
+    for (size_t index : flight_) {
+        Slot& slot = slots_[index];
+        if (slot.surface_work) slot.surface_work->wait();  // its surface pass reads the mesh about to go
+        if (line_mesh_ && !slot.positions) slot.positions = line_mesh_->mesh.positions;
+    }
+}
+
 void FrameRenderer::set_mesh(const TriangleMesh& mesh, bool with_lines, float crease_angle_deg) {
+    keep_positions_of_frames_in_flight();
     mesh_ = upload_mesh(*ctx_, mesh, &materials_);
     line_mesh_.reset();
     if (with_lines) {
@@ -93,6 +106,7 @@ void FrameRenderer::set_mesh(const TriangleMesh& mesh, bool with_lines, float cr
 }
 
 void FrameRenderer::deform(const TriangleMesh& posed) {
+    keep_positions_of_frames_in_flight();
     mesh_ = upload_mesh(*ctx_, posed, &materials_);
     if (!line_mesh_) return;
     pose_line_mesh(*line_mesh_, posed);
@@ -117,28 +131,32 @@ void FrameRenderer::clear_slam(size_t set) {
 }
 
 void FrameRenderer::resize(uint32_t width, uint32_t height) {
-    if (width == target_.width && height == target_.height) return;
-    vkDeviceWaitIdle(ctx_->device());  // nothing in flight may still use the old target
-    target_ = RenderTarget(*ctx_, width, height, target_.color.format(), target_.samples);
-    depth_readback_ = Buffer(*ctx_, {.size = VkDeviceSize(width) * height * 4, .usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                     .purpose = MemoryPurpose::Readback, .name = "depth readback"});
-    color_readback_ = Buffer(*ctx_, {.size = VkDeviceSize(width) * height * 4, .usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                     .purpose = MemoryPurpose::Readback, .name = "color readback"});
+    const RenderTarget& current = slots_[finished_].target;
+    if (width == current.width && height == current.height) return;
+    if (!flight_.empty()) throw Error("FrameRenderer: resize with a frame in flight (finish it first)");
+    vkDeviceWaitIdle(ctx_->device());  // nothing in flight may still use the old targets
+    const VkFormat format = current.color.format();
+    const uint32_t samples = current.samples;
+    slots_.clear();
+    for (int i = 0; i < 2; ++i) slots_.emplace_back(*ctx_, width, height, format, samples);
+    finished_ = 0;
     for (SetState& state : sets_) state.tracker.reset();
     if (layers_) layers_ = std::make_unique<LayerPass>(*ctx_, width, height, layer_styles_);
 }
 
-void FrameRenderer::set_samples(uint32_t samples) {
-    if (samples == target_.samples) return;
+void FrameRenderer::prepare_slot(Slot& slot, uint32_t samples) {
+    if (samples == slot.target.samples && samples == surface_pass_.samples()) return;
     static_cast<void>(sample_count_bit(*ctx_, samples));  // the error, before anything changes
-    vkDeviceWaitIdle(ctx_->device());
-    target_ = RenderTarget(*ctx_, target_.width, target_.height, target_.color.format(), samples);
-    surface_pass_ = SurfacePass(*ctx_, target_.color.format(), samples);
+    vkDeviceWaitIdle(ctx_->device());  // a present may still read the slot's colour
+    if (samples != slot.target.samples)
+        slot.target = RenderTarget(*ctx_, slot.target.width, slot.target.height, slot.target.color.format(), samples);
+    if (samples != surface_pass_.samples()) surface_pass_ = SurfacePass(*ctx_, slot.target.color.format(), samples);
 }
 
 void FrameRenderer::set_layers(std::vector<LayerStyle> styles) {
+    if (!flight_.empty()) throw Error("FrameRenderer: layers set with a frame in flight (finish it first)");
     layer_styles_ = styles;
-    layers_ = std::make_unique<LayerPass>(*ctx_, target_.width, target_.height, std::move(styles));
+    layers_ = std::make_unique<LayerPass>(*ctx_, target().width, target().height, std::move(styles));
 }
 
 FrameRenderer::CoherenceSnapshot FrameRenderer::coherence_snapshot() const {
@@ -158,7 +176,7 @@ void FrameRenderer::restore_coherence(const CoherenceSnapshot& snapshot) {
             state.tracker.reset();
             continue;
         }
-        if (!state.tracker) state.tracker = std::make_unique<CoherenceTracker>(*ctx_, target_.width, target_.height);
+        if (!state.tracker) state.tracker = std::make_unique<CoherenceTracker>(*ctx_, target().width, target().height);
         state.tracker->restore(*snapshot.sets[i], surface);
     }
     if (layers_) layers_->restore(snapshot.layers);
@@ -167,109 +185,143 @@ void FrameRenderer::restore_coherence(const CoherenceSnapshot& snapshot) {
 Frame FrameRenderer::render(const CameraMatrices& camera, const glm::vec3& eye, const SurfaceStyle& surface,
                             const LinesDesc& lines, const FrameOutputs& outputs, const CoherenceParams* coherence,
                             std::vector<LayerFrame>* layers) {
+    begin({.camera = camera,
+           .eye = eye,
+           .surface = surface,
+           .lines = lines,
+           .outputs = outputs,
+           .coherence = coherence ? std::optional(*coherence) : std::nullopt,
+           .layers = layers ? std::optional(*layers) : std::nullopt});
+    return finish();
+}
+
+void FrameRenderer::begin(FrameInput input) {
     if (!mesh_ && !layers_) throw Error("FrameRenderer: no mesh and no layers set");
+    if (flight_.size() >= slots_.size()) throw Error("FrameRenderer: two frames in flight already (finish one first)");
+    Timer begin_timer;
+    const size_t index = ((flight_.empty() ? finished_ : flight_.back()) + 1) % slots_.size();
+    Slot& slot = slots_[index];
     // Multisampling applies to a shaded surface; a scene without one (lines over the
     // background) takes one sample. Frames only tracked (outputs.draw off) take the scene's
     // count all the same: their depth, and so their lines, must be the drawn frames'.
-    set_samples(surface.draw_surface && mesh_ ? surface_samples(surface) : 1);
-    const bool draw_lines = lines.enabled && line_mesh_.has_value();
-    const std::vector<LineSetDesc> sets = effective_line_sets(lines);
-    const LineParams extraction = extraction_params(lines, sets);
-    Timer total;
-    Frame frame;
-    const VkDeviceSize pixels = VkDeviceSize(target_.width) * target_.height;
-    Buffer& depth_readback = depth_readback_;
-    Buffer& color_readback = color_readback_;
+    prepare_slot(slot, input.surface.draw_surface && mesh_ ? surface_samples(input.surface) : 1);
+    slot.sets = effective_line_sets(input.lines);
+    slot.draw_lines = input.lines.enabled && line_mesh_.has_value();
+    slot.frame = Frame{};
+    slot.positions.reset();
+    const LineParams extraction = extraction_params(input.lines, slot.sets);
 
     // (1) Surface and depth; line extraction in the same submission, or (on a CPU device, see
     // ComputeSite) by the host while the device draws the surface: lavapipe's vertex stage
     // runs on one thread and leaves the other core to the host extraction.
-    const bool host_extraction = draw_lines && extraction_on_host_;
+    const bool host_extraction = slot.draw_lines && extraction_on_host_;
     // Without drawing, the surface is depth-only: the same vertex stage, so the same depth.
-    SurfaceStyle surface_style = surface;
-    if (!outputs.draw) surface_style.draw_surface = false;
+    SurfaceStyle surface_style = input.surface;
+    if (!input.outputs.draw) surface_style.draw_surface = false;
     for (int attempt = 0;; ++attempt) {
-        Context::Submission surface_work = ctx_->submit([&](VkCommandBuffer cmd) {
-            timer_.reset(cmd);
-            timer_.begin(cmd, "surface");
+        slot.surface_work.emplace(ctx_->submit([&](VkCommandBuffer cmd) {
+            slot.timer.reset(cmd);
+            slot.timer.begin(cmd, "surface");
             if (mesh_)
-                surface_pass_.record(cmd, target_, *mesh_, camera, eye, surface_style,
+                surface_pass_.record(cmd, slot.target, *mesh_, input.camera, input.eye, surface_style,
                                      gpu_materials_ ? &*gpu_materials_ : nullptr);
             else
-                surface_pass_.record_clear(cmd, target_, surface_style);
-            timer_.end(cmd);
-            if (draw_lines && !host_extraction) extractor_.record(cmd, eye, extraction, &timer_);
-            if (draw_lines || outputs.depth) record_image_to_buffer(cmd, target_.depth, depth_readback);
+                surface_pass_.record_clear(cmd, slot.target, surface_style);
+            slot.timer.end(cmd);
+            if (slot.draw_lines && !host_extraction) extractor_.record(cmd, input.eye, extraction, &slot.timer);
+            if (slot.draw_lines || input.outputs.depth) record_image_to_buffer(cmd, slot.target.depth, slot.depth_readback);
             record_memory_barrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                                   VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
-        });
+        }));
         if (host_extraction) {
             Timer extract;
-            extract_lines_reference(*line_mesh_, eye, extraction, frame.segments, extract_workspace_);
-            frame.timings.extract_ms = extract.elapsed_ms();
+            extract_lines_reference(*line_mesh_, input.eye, extraction, slot.frame.segments, extract_workspace_);
+            slot.frame.timings.extract_ms = extract.elapsed_ms();
         }
-        surface_work.wait();
-        if (!draw_lines || host_extraction || extractor_.read_segments(frame.segments)) break;
+        if (!slot.draw_lines || host_extraction) break;
+        // The device's segments are read now: the next frame's pass writes the same buffer.
+        slot.surface_work->wait();
+        if (extractor_.read_segments(slot.frame.segments)) break;
         if (attempt == 2) throw Error("line extraction: the segment count kept growing past the buffer");
     }
-    frame.timings.gpu = timer_.results();
-    depth_readback.invalidate(*ctx_);
-    const std::span<const float> depth_pixels(static_cast<const float*>(depth_readback.mapped()), pixels);
-    if (outputs.depth) frame.image.depth.assign(depth_pixels.begin(), depth_pixels.end());
+    slot.input = std::move(input);
+    slot.begin_ms = begin_timer.elapsed_ms();
+    flight_.push_back(index);
+}
+
+Frame FrameRenderer::finish() {
+    if (flight_.empty()) throw Error("FrameRenderer: no frame in flight to finish");
+    const size_t index = flight_.front();
+    flight_.erase(flight_.begin());
+    Slot& slot = slots_[index];
+    finished_ = index;
+    Timer total;
+    slot.surface_work->wait();
+    slot.surface_work.reset();
+    Frame frame = std::move(slot.frame);
+    FrameInput& in = slot.input;
+    const CoherenceParams* coherence = in.coherence ? &*in.coherence : nullptr;
+    RenderTarget& target = slot.target;
+    frame.timings.gpu = slot.timer.results();
+    slot.depth_readback.invalidate(*ctx_);
+    const std::span<const float> depth_pixels(static_cast<const float*>(slot.depth_readback.mapped()),
+                                              size_t(target.width) * target.height);
+    if (in.outputs.depth) frame.image.depth.assign(depth_pixels.begin(), depth_pixels.end());
 
     // Chaining and visibility on the CPU; then each line set's selection and parameterization.
-    std::vector<std::vector<StrokeVertex>> strokes(sets.size());
-    if (draw_lines) {
+    std::vector<std::vector<StrokeVertex>> strokes(slot.sets.size());
+    if (slot.draw_lines) {
         Timer chain;
         frame.paths = chain_segments(frame.segments);
         frame.timings.chain_ms = chain.elapsed_ms();
         Timer visibility;
-        const DepthImage depth{int(target_.width), int(target_.height), depth_pixels, camera.znear, camera.zfar};
-        frame.screen_paths = compute_visibility(frame.paths, camera, depth, {.sample_spacing_px = lines.sample_spacing_px});
+        const DepthImage depth{int(target.width), int(target.height), depth_pixels, in.camera.znear, in.camera.zfar};
+        frame.screen_paths = compute_visibility(frame.paths, in.camera, depth, {.sample_spacing_px = in.lines.sample_spacing_px});
         frame.timings.visibility_ms = visibility.elapsed_ms();
-        prepare_sets(frame, sets, lines, camera, depth, coherence, outputs.draw ? &strokes : nullptr);
+        prepare_sets(frame, slot.sets, in.lines, in.camera, depth, coherence,
+                     slot.positions ? *slot.positions : line_mesh_->mesh.positions, in.outputs.draw ? &strokes : nullptr);
     }
 
     // Vector layers: their own trackers and stroke geometry.
-    if (layers_ && layers) {
+    if (layers_ && in.layers) {
         Timer layer_timer;
-        frame.layers = layers_->prepare(*layers, coherence != nullptr, lines.sample_spacing_px);
+        frame.layers = layers_->prepare(*in.layers, coherence != nullptr, in.lines.sample_spacing_px);
         frame.timings.coherence_ms += layer_timer.elapsed_ms();
     }
-    if (!outputs.draw) {
-        frame.timings.total_ms = total.elapsed_ms();
+    if (!in.outputs.draw) {
+        frame.timings.total_ms = slot.begin_ms + total.elapsed_ms();
         return frame;
     }
     const bool any_strokes = std::any_of(strokes.begin(), strokes.end(), [](const auto& s) { return !s.empty(); });
-    if (!stroke_pass_ && (layers_ || any_strokes)) stroke_pass_ = std::make_unique<StrokePass>(*ctx_, target_.color.format());
+    if (!stroke_pass_ && (layers_ || any_strokes)) stroke_pass_ = std::make_unique<StrokePass>(*ctx_, target.color.format());
 
     // (2) Line sets in order, then layers, over the surface; colour read back. Vertex
     // buffers must outlive the submission.
     std::vector<Buffer> buffers;
     ctx_->submit_and_wait([&](VkCommandBuffer cmd) {
-        timer_.reset(cmd);
-        timer_.begin(cmd, "lines draw");
-        if (draw_lines) record_sets(cmd, frame, sets, lines, strokes, buffers);
-        if (layers_ && layers)
-            for (Buffer& b : layers_->record(*ctx_, cmd, target_, *stroke_pass_)) buffers.push_back(std::move(b));
-        timer_.end(cmd);
-        if (outputs.color) record_image_to_buffer(cmd, target_.color, color_readback);
+        slot.timer.reset(cmd);
+        slot.timer.begin(cmd, "lines draw");
+        if (slot.draw_lines) record_sets(cmd, target, frame, slot.sets, in.lines, strokes, buffers);
+        if (layers_ && in.layers)
+            for (Buffer& b : layers_->record(*ctx_, cmd, target, *stroke_pass_)) buffers.push_back(std::move(b));
+        slot.timer.end(cmd);
+        if (in.outputs.color) record_image_to_buffer(cmd, target.color, slot.color_readback);
         record_memory_barrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                               VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
     });
-    for (const PassTime& t : timer_.results()) frame.timings.gpu.push_back(t);
-    if (outputs.color) {
-        frame.image.color = read_rgba8(*ctx_, color_readback, target_.width, target_.height, target_.color.format());
-    }
-    frame.timings.total_ms = total.elapsed_ms();
+    for (const PassTime& t : slot.timer.results()) frame.timings.gpu.push_back(t);
+    if (in.outputs.color)
+        frame.image.color = read_rgba8(*ctx_, slot.color_readback, target.width, target.height, target.color.format());
+    frame.timings.total_ms = slot.begin_ms + total.elapsed_ms();
     return frame;
 }
 
 void FrameRenderer::prepare_sets(Frame& frame, const std::vector<LineSetDesc>& sets, const LinesDesc& lines,
                                  const CameraMatrices& camera, const DepthImage& depth,
-                                 const CoherenceParams* coherence, std::vector<std::vector<StrokeVertex>>* strokes) {
+                                 const CoherenceParams* coherence, const std::vector<glm::vec3>& positions,
+                                 std::vector<std::vector<StrokeVertex>>* strokes) {
     Timer param_timer;
-    const SurfaceFrame surface{&line_mesh_->mesh.positions, &line_mesh_->mesh.faces};
+    const SurfaceFrame surface{&positions, &line_mesh_->mesh.faces};
     const FaceGroups* groups = groups_.face_group.empty() ? nullptr : &groups_;
     for (size_t i = 0; i < sets.size(); ++i) {
         const LineSetDesc& set = sets[i];
@@ -286,7 +338,7 @@ void FrameRenderer::prepare_sets(Frame& frame, const std::vector<LineSetDesc>& s
                         : select_line_set(compute_visibility(frame.paths, camera, depth, {.sample_spacing_px = spacing}),
                                           set, groups);
         if (coherence) {
-            if (!state.tracker) state.tracker = std::make_unique<CoherenceTracker>(*ctx_, target_.width, target_.height);
+            if (!state.tracker) state.tracker = std::make_unique<CoherenceTracker>(*ctx_, target().width, target().height);
             out.params = state.tracker->update(out.paths, camera, surface, out.coherence);
             // Strokes and dumps use samples at fixed texture phases (see resample_at_phase).
             for (size_t p = 0; p < out.paths.size(); ++p)
@@ -302,19 +354,19 @@ void FrameRenderer::prepare_sets(Frame& frame, const std::vector<LineSetDesc>& s
     frame.timings.coherence_ms = param_timer.elapsed_ms();
 }
 
-void FrameRenderer::record_sets(VkCommandBuffer cmd, const Frame& frame, const std::vector<LineSetDesc>& sets,
-                                const LinesDesc& lines, const std::vector<std::vector<StrokeVertex>>& strokes,
-                                std::vector<Buffer>& keep_alive) {
+void FrameRenderer::record_sets(VkCommandBuffer cmd, RenderTarget& target, const Frame& frame,
+                                const std::vector<LineSetDesc>& sets, const LinesDesc& lines,
+                                const std::vector<std::vector<StrokeVertex>>& strokes, std::vector<Buffer>& keep_alive) {
     for (const LineSetFrame& out : frame.sets) {
         const LineSetDesc& set = sets[out.set];
         const SetState& state = sets_[out.set];
         if (!set.style.ribbon.empty()) continue;
         if (!strokes[out.set].empty()) {
             if (!solid_) solid_ = std::make_unique<SlamTexture>(*ctx_, solid_slam());
-            keep_alive.push_back(stroke_pass_->record(*ctx_, cmd, target_, strokes[out.set],
+            keep_alive.push_back(stroke_pass_->record(*ctx_, cmd, target, strokes[out.set],
                                                       state.texture ? *state.texture : *solid_));
         } else if (is_plain_line_set(set.style) && !state.texture) {
-            keep_alive.push_back(line_pass_.record(*ctx_, cmd, target_, out.paths, plain_draw_style(lines, set)));
+            keep_alive.push_back(line_pass_.record(*ctx_, cmd, target, out.paths, plain_draw_style(lines, set)));
         }
     }
 }

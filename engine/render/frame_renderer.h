@@ -14,6 +14,11 @@
 // segments read back (on a CPU device the host runs the reference extraction while the
 // device draws the surface); (2) after chaining and visibility on the CPU, the line pass
 // over the colour target, colour read back. See README "Architecture".
+//
+// Frames may overlap (begin/finish): frame f's host stages after the depth — chaining,
+// visibility, parameterization, stroke geometry — run while the device draws frame f + 1's
+// surface into the other of two targets. On lavapipe the surface pass's vertex stage keeps
+// one core of two busy and leaves the other to them.
 #pragma once
 
 #include <memory>
@@ -84,6 +89,17 @@ struct Frame {
     FrameTimings timings;
 };
 
+// What a frame is drawn with: render()'s arguments, kept with a frame in flight.
+struct FrameInput {
+    CameraMatrices camera;
+    glm::vec3 eye{0.0f};
+    SurfaceStyle surface;
+    LinesDesc lines;
+    FrameOutputs outputs;
+    std::optional<CoherenceParams> coherence;
+    std::optional<std::vector<LayerFrame>> layers;
+};
+
 // The frame's lines as SVG groups: one per line set of `lines` (effective_line_sets), in
 // drawing order, with its colour and width; sets that drew nothing are empty groups.
 // `with_shapes` off: the paths alone (what tools reading the lines back need; building the
@@ -125,13 +141,10 @@ public:
     // again; the coherence tracker starts afresh (its splat buffer has the old size).
     void resize(uint32_t width, uint32_t height);
 
-    // The surface pass's samples per pixel (1, 4 or 8; SurfaceStyle::samples sets it per
-    // frame): recreates the target and the pass when it changes.
-    void set_samples(uint32_t samples);
-
-    // The target the last frame was drawn into; after render() its colour image holds the
-    // final frame in TRANSFER_SRC_OPTIMAL (a viewer blits it to the screen).
-    const RenderTarget& target() const { return target_; }
+    // The target the last finished frame was drawn into; after render() or finish() its
+    // colour image holds the final frame in TRANSFER_SRC_OPTIMAL (a viewer copies it to the
+    // screen).
+    const RenderTarget& target() const { return slots_[finished_].target; }
 
     // Vector-art layers drawn over the 3D lines (render/layer_pass.h), in order.
     void set_layers(std::vector<LayerStyle> styles);
@@ -156,16 +169,48 @@ public:
                                const LinesDesc& lines, const FrameOutputs& outputs = {},
                                const CoherenceParams* coherence = nullptr, std::vector<LayerFrame>* layers = nullptr);
 
+    // render() in two halves, so that frames overlap: begin() submits the frame's surface
+    // pass (and on a CPU device extracts its lines on the host meanwhile) and returns;
+    // finish() completes the oldest frame begun and returns it. At most two frames are in
+    // flight: a viewer begins frame f + 1, then finishes frame f. Frames finish in the order
+    // they began (the parameterization carries from one to the next). resize() and
+    // set_layers() need none in flight; a pose (deform) or another line mesh may come
+    // between begin and finish.
+    void begin(FrameInput input);
+    [[nodiscard]] Frame finish();
+    [[nodiscard]] size_t in_flight() const { return flight_.size(); }
+
 private:
+    // A target and what a frame in it needs until it finishes.
+    struct Slot {
+        Slot(const Context& ctx, uint32_t width, uint32_t height, VkFormat format, uint32_t samples);
+        RenderTarget target;
+        Buffer depth_readback, color_readback;
+        GpuTimer timer;
+        FrameInput input;
+        std::vector<LineSetDesc> sets;
+        bool draw_lines = false;
+        Frame frame;  // its segments and the extraction's time, until finish() adds the rest
+        double begin_ms = 0.0;
+        std::optional<Context::Submission> surface_work;
+        // The line mesh's positions in the frame's pose, kept when it is posed again before
+        // the frame finishes (its votes carry samples from that pose).
+        std::optional<std::vector<glm::vec3>> positions;
+    };
+    void keep_positions_of_frames_in_flight();
+    // The slot's target and the surface pass at `samples` per pixel (1, 4 or 8;
+    // SurfaceStyle::samples sets it per frame), made again when it changes.
+    void prepare_slot(Slot& slot, uint32_t samples);
+
     const Context* ctx_;
-    RenderTarget target_;
+    std::vector<Slot> slots_;   // two
+    std::vector<size_t> flight_;  // slots of frames begun and not finished, oldest first
+    size_t finished_ = 0;         // the slot of the last frame finished
     SurfacePass surface_pass_;
     LinePass line_pass_;
     LineExtractor extractor_;
     bool extraction_on_host_;  // CPU devices: extract_lines_reference, beside the surface pass
     ExtractWorkspace extract_workspace_;  // its per-vertex scratch, kept from frame to frame
-    GpuTimer timer_;
-    Buffer depth_readback_, color_readback_;  // reused every frame
     std::optional<GpuMesh> mesh_;
     SurfaceMaterials materials_;  // without textures: what set_mesh groups by
     std::optional<GpuMaterials> gpu_materials_;
@@ -180,10 +225,10 @@ private:
     // for non-plain sets.
     void prepare_sets(Frame& frame, const std::vector<LineSetDesc>& sets, const LinesDesc& lines,
                       const CameraMatrices& camera, const DepthImage& depth, const CoherenceParams* coherence,
-                      std::vector<std::vector<StrokeVertex>>* strokes);
-    void record_sets(VkCommandBuffer cmd, const Frame& frame, const std::vector<LineSetDesc>& sets,
-                     const LinesDesc& lines, const std::vector<std::vector<StrokeVertex>>& strokes,
-                     std::vector<Buffer>& keep_alive);
+                      const std::vector<glm::vec3>& positions, std::vector<std::vector<StrokeVertex>>* strokes);
+    void record_sets(VkCommandBuffer cmd, RenderTarget& target, const Frame& frame,
+                     const std::vector<LineSetDesc>& sets, const LinesDesc& lines,
+                     const std::vector<std::vector<StrokeVertex>>& strokes, std::vector<Buffer>& keep_alive);
     std::vector<SetState> sets_;
     FaceGroups groups_;
     std::unique_ptr<StrokePass> stroke_pass_;

@@ -47,6 +47,7 @@ class SurfacePass {
 public:
     // `samples`: the sample count of the targets it draws into (1, 4 or 8).
     explicit SurfacePass(const Context& ctx, VkFormat color_format = VK_FORMAT_R8G8B8A8_UNORM, uint32_t samples = 1);
+    uint32_t samples() const { return samples_; }
 
     // Records the pass: clears, draws, and leaves both images in TRANSFER_SRC_OPTIMAL. With
     // `style.draw_surface` off, the colour is only cleared and the mesh drawn depth-only.

@@ -217,7 +217,7 @@ bool SceneSession::parameterized() const {
     return false;
 }
 
-Frame SceneSession::frame(const FrameRequest& request) {
+void SceneSession::begin_frame(const FrameRequest& request) {
     sets_ = effective_line_sets(desc_.lines);  // the panel may have changed styles
     if (has_model() && !textures_loaded_ && scene_needs_textures(scene_, desc_.style)) {  // the panel turned shading on
         renderer_.set_materials(scene_materials(scene_, scene_.mesh, options_.subdivide, true));
@@ -234,15 +234,31 @@ Frame SceneSession::frame(const FrameRequest& request) {
     const bool ribbons = has_ribbons() && request.outputs.draw && (request.outputs.color || request.ribbons_to_target);
     FrameOutputs outputs = request.outputs;
     outputs.color = outputs.draw && (outputs.color || ribbons);
-    Frame frame = renderer_.render(camera, view.eye, desc_.style, desc_.lines, outputs,
-                                   parameterized() ? &options_.coherence : nullptr,
-                                   layers_.descs.empty() ? nullptr : &layer_frames);
-    if (ribbons) {
+    renderer_.begin({.camera = camera,
+                     .eye = view.eye,
+                     .surface = desc_.style,
+                     .lines = desc_.lines,
+                     .outputs = outputs,
+                     .coherence = parameterized() ? std::optional(options_.coherence) : std::nullopt,
+                     .layers = layers_.descs.empty() ? std::nullopt : std::optional(std::move(layer_frames))});
+    pending_.push_back({.seconds = request.when.seconds,
+                        .seed = request.seed,
+                        .ribbons = ribbons,
+                        .color = request.outputs.color,
+                        .ribbons_to_target = request.ribbons_to_target});
+}
+
+Frame SceneSession::finish_frame() {
+    if (pending_.empty()) throw Error("session: no frame in flight to finish");
+    const Pending request = pending_.front();
+    pending_.erase(pending_.begin());
+    Frame frame = renderer_.finish();
+    if (request.ribbons) {
         frame.timings.total_ms += draw_ribbons(frame, request.seed);
         if (request.ribbons_to_target) renderer_.target().write_color(*ctx_, frame.image.color.pixels);
-        if (!request.outputs.color) frame.image.color = {};
+        if (!request.color) frame.image.color = {};
     }
-    last_seconds_ = request.when.seconds;
+    last_seconds_ = request.seconds;
     return frame;
 }
 
@@ -267,7 +283,10 @@ double SceneSession::draw_ribbons(Frame& frame, uint64_t seed) {
     return ms + draw_layer_ribbons(*ctx_, layers_, frame.layers, seed, frame.image.color);
 }
 
-void SceneSession::resize(uint32_t width, uint32_t height) { renderer_.resize(width, height); }
+void SceneSession::resize(uint32_t width, uint32_t height) {
+    if (!pending_.empty()) throw Error("session: resize with a frame in flight (finish it first)");
+    renderer_.resize(width, height);
+}
 
 SceneSession::Snapshot SceneSession::snapshot() const {
     const LineMesh* lines = renderer_.line_mesh();

@@ -101,7 +101,16 @@ public:
     // The camera a frame at `when` sees without a request's override.
     [[nodiscard]] ViewCamera camera_at(const PathTime& when) const;
 
-    [[nodiscard]] Frame frame(const FrameRequest& request);
+    [[nodiscard]] Frame frame(const FrameRequest& request) {
+        begin_frame(request);
+        return finish_frame();
+    }
+    // frame() in two halves (FrameRenderer::begin and finish): a viewer begins frame f + 1,
+    // then finishes frame f, so that f's host stages run while the device draws f + 1's
+    // surface. Frames finish in the order they began; at most two are in flight.
+    void begin_frame(const FrameRequest& request);
+    [[nodiscard]] Frame finish_frame();
+    [[nodiscard]] size_t frames_in_flight() const { return pending_.size(); }
     // The last frame's ribbon synthesis per line set that has one.
     struct RibbonReport {
         std::string line_set;
@@ -109,6 +118,7 @@ public:
     };
     const std::vector<RibbonReport>& ribbon_reports() const { return ribbon_reports_; }
 
+    // Needs no frame in flight.
     void resize(uint32_t width, uint32_t height);
     const RenderTarget& target() const { return renderer_.target(); }
     const FrameRenderer& renderer() const { return renderer_; }
@@ -138,6 +148,12 @@ private:
     double draw_ribbons(Frame& frame, uint64_t seed);
     bool parameterized() const;
 
+    struct Pending {  // what finish_frame() needs of a frame's request
+        float seconds = 0.0f;
+        uint64_t seed = 1;
+        bool ribbons = false, color = false, ribbons_to_target = false;
+    };
+    std::vector<Pending> pending_;  // oldest first
     const Context* ctx_;
     SceneDesc desc_;
     SessionOptions options_;

@@ -32,12 +32,16 @@ struct ViewOptions {
 };
 
 // One frame: the session's, the panel over it, presented; the screenshot asked for. False
-// when the swapchain must be made again.
+// when the swapchain must be made again. `overlap`: the frame is begun and the one before it
+// finished and presented, so that the host's work on that one runs while the device draws
+// this one's surface (FrameRenderer); the screen shows the state of one frame earlier.
 bool draw_and_present(ViewerState& s, SceneSession& session, Swapchain& swapchain, UiOverlay& ui, Input& input,
-                      FrameTimings& timings) {
+                      FrameTimings& timings, bool overlap) {
     Timer render_timer;
-    const Frame frame = session.frame({.when = {.seconds = s.time_s}, .camera = s.camera.view(),
-                                       .outputs = {.color = false}, .ribbons_to_target = true});
+    session.begin_frame({.when = {.seconds = s.time_s}, .camera = s.camera.view(), .outputs = {.color = false},
+                         .ribbons_to_target = true});
+    if (overlap && session.frames_in_flight() < 2) return true;  // the first: nothing to show yet
+    const Frame frame = session.finish_frame();
     s.render_ms = render_timer.elapsed_ms();
     timings = frame.timings;
     s.gpu = frame.timings.gpu;
@@ -123,6 +127,10 @@ int run_view(const ViewOptions& o) {
 
         auto save_view = [&] { save_view_file(s, swapchain.extent()); };
 
+        // Frames overlap where the device does not share the host's cores: on lavapipe the
+        // surface pass keeps both busy, and host work beside it took 2.3x as long, for no
+        // gain in frame time (docs/BENCHMARKS.md "Viewer").
+        const bool overlap = !player && ctx.info().type != VK_PHYSICAL_DEVICE_TYPE_CPU;
         bool recreate = false;
         ViewStats stats;
         const int warmup = o.benchmark > 0 ? 10 : 0;
@@ -147,6 +155,7 @@ int run_view(const ViewOptions& o) {
             if (recreate || fb.width != swapchain.extent().width || fb.height != swapchain.extent().height) {
                 if (!swapchain.recreate(fb)) continue;
                 recreate = false;
+                while (session.frames_in_flight() > 0) (void)session.finish_frame();  // drawn for the old size
                 session.resize(swapchain.extent().width, swapchain.extent().height);
             }
             if (s.playing) {
@@ -157,7 +166,7 @@ int run_view(const ViewOptions& o) {
             apply_edits(s, session);
 
             FrameTimings timings;
-            if (!draw_and_present(s, session, swapchain, ui, input, timings)) recreate = true;
+            if (!draw_and_present(s, session, swapchain, ui, input, timings, overlap)) recreate = true;
             if (!s.save_path.empty()) save_view();
             const auto now = std::chrono::steady_clock::now();
             s.frame_ms = std::chrono::duration<double, std::milli>(now - last).count();
@@ -166,6 +175,7 @@ int run_view(const ViewOptions& o) {
             if (s.history.size() > 120) s.history.pop_front();
             if (frames++ >= warmup) stats.add(s, timings);
         }
+        while (session.frames_in_flight() > 0) (void)session.finish_frame();
         stats.print(swapchain.extent().width, swapchain.extent().height);
     }  // GPU objects destroyed
     return exit_code_after_validation(ctx, validation);
