@@ -4,6 +4,7 @@
 
 
 #include "core/error.h"
+#include "core/parallel.h"
 #include "core/timer.h"
 #include "geometry/welded_mesh.h"
 #include "lines/chaining.h"
@@ -323,11 +324,23 @@ void FrameRenderer::prepare_sets(Frame& frame, const std::vector<LineSetDesc>& s
     Timer param_timer;
     const SurfaceFrame surface{&positions, &line_mesh_->mesh.faces};
     const FaceGroups* groups = groups_.face_group.empty() ? nullptr : &groups_;
+    std::vector<size_t> enabled;
     for (size_t i = 0; i < sets.size(); ++i) {
-        const LineSetDesc& set = sets[i];
-        if (!set.enabled) continue;
+        if (!sets[i].enabled) continue;
+        enabled.push_back(i);
         SetState& state = set_state(i);
-        LineSetFrame out{.name = set.name, .set = i};
+        if (coherence && !state.tracker)
+            state.tracker = std::make_unique<CoherenceTracker>(*ctx_, target().width, target().height);
+    }
+    // One set: its selection, parameterization (its own tracker) and strokes.
+    std::vector<LineSetFrame> outs(enabled.size());
+    const auto prepare = [&](size_t k) {
+        const size_t i = enabled[k];
+        const LineSetDesc& set = sets[i];
+        SetState& state = sets_[i];
+        LineSetFrame& out = outs[k];
+        out.name = set.name;
+        out.set = i;
         out.coherence = line_set_coherence(coherence ? *coherence : CoherenceParams{}, set,
                                            state.slam ? &*state.slam : nullptr, lines.sample_spacing_px);
         // A set with its own spacing samples the paths at that spacing.
@@ -338,19 +351,28 @@ void FrameRenderer::prepare_sets(Frame& frame, const std::vector<LineSetDesc>& s
                         : select_line_set(compute_visibility(frame.paths, camera, depth, {.sample_spacing_px = spacing}),
                                           set, groups);
         if (coherence) {
-            if (!state.tracker) state.tracker = std::make_unique<CoherenceTracker>(*ctx_, target().width, target().height);
             out.params = state.tracker->update(out.paths, camera, surface, out.coherence);
             // Strokes and dumps use samples at fixed texture phases (see resample_at_phase).
             for (size_t p = 0; p < out.paths.size(); ++p)
                 if (out.paths[p].visible) out.paths[p] = resample_at_phase(out.paths[p], out.params[p], spacing);
         }
-        if (!strokes || !set.style.ribbon.empty() || (is_plain_line_set(set.style) && !state.texture)) {
-            frame.sets.push_back(std::move(out));
-            continue;  // ribbons are synthesized over the read-back frame; plain sets by the line pass
-        }
-        append_set_strokes(out, set, kCoverageMarginPx, (*strokes)[i], (*strokes)[i]);
-        frame.sets.push_back(std::move(out));
+        // Ribbons are synthesized over the read-back frame; plain sets are drawn by the line pass.
+        if (strokes && set.style.ribbon.empty() && !(is_plain_line_set(set.style) && !state.texture))
+            append_set_strokes(out, set, kCoverageMarginPx, (*strokes)[i], (*strokes)[i]);
+    };
+    // Sets share nothing but the frame's paths, which they read: on the host (CPU devices,
+    // where the device is idle by now) they run side by side, each set a chunk taken as
+    // threads finish. A device tracker submits work, which one thread must do.
+    if (ctx_->preferred_compute_site() == ComputeSite::Host) {
+        parallel_for(
+            enabled.size(), 1, [&](size_t first, size_t last, size_t) {
+                for (size_t k = first; k < last; ++k) prepare(k);
+            },
+            enabled.size());
+    } else {
+        for (size_t k = 0; k < enabled.size(); ++k) prepare(k);
     }
+    for (LineSetFrame& out : outs) frame.sets.push_back(std::move(out));
     frame.timings.coherence_ms = param_timer.elapsed_ms();
 }
 
