@@ -1,11 +1,14 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// Feature-line extraction: one invocation per face appends that face's contour,
-// suggestive-contour, crease and border segments with an atomic counter.
-// Mirrors engine/lines/extract_reference.cpp and view_quantities.h line by line, with
-// `precise` so that no multiply-add is fused and results match the CPU reference
-// (rtsc's rules: docs/research/rtsc-lines.md §1–2).
+// Feature-line extraction, per face (the second of two passes; lines_vertex.comp wrote each
+// vertex's view quantities and sign byte): the corners' bytes decide whether a line can
+// cross the face (most faces: none), then that face's contour, suggestive-contour, crease
+// and border segments are appended with an atomic counter. Mirrors
+// engine/lines/extract_reference.cpp line by line, with `precise` so that no multiply-add
+// is fused and results match the CPU reference (rtsc's rules: docs/research/rtsc-lines.md
+// §1–2).
 #include "lines_shared.glsl"
+#include "lines_signs.glsl"
 
 layout(local_size_x = 64) in;
 
@@ -18,60 +21,19 @@ layout(std430, binding = 3) buffer Output {
     uint pad0, pad1;
     LineSegment segments[];
 } out_buf;
+layout(std430, binding = 4) readonly buffer Views { VertexView views[]; };
 
 layout(push_constant) uniform LinesPush {
     vec4 eye;        // xyz: eye (world), w: sug_thresh / fs²
     float fade;      // 0.03 / fs², or 0 without fading
     uint flags;
-    uint face_count;
+    uint count;      // faces
     uint pad;
 } pc;
-
-// The cheap per-view quantities first; the suggestive test only for faces that need it
-// (most faces have no zero crossing at all). Same expressions as view_quantities.h.
-struct View {
-    float ndotv, kr, u, w;
-};
-
-View vertex_view(uint i) {
-    CurvVertex cv = vertices[i];
-    precise vec3 v = pc.eye.xyz - cv.position.xyz;
-    precise float inv_len = 1.0 / sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
-    v = vec3(v.x * inv_len, v.y * inv_len, v.z * inv_len);
-    vec3 n = cv.normal.xyz, e1 = cv.pdir1_k1.xyz, e2 = cv.pdir2_k2.xyz;
-    float k1 = cv.pdir1_k1.w, k2 = cv.pdir2_k2.w;
-    precise float ndotv = n.x * v.x + n.y * v.y + n.z * v.z;
-    precise float u = v.x * e1.x + v.y * e1.y + v.z * e1.z;
-    precise float w = v.x * e2.x + v.y * e2.y + v.z * e2.z;
-    precise float u2 = u * u;
-    precise float w2 = w * w;
-    precise float kr = k1 * u2 + k2 * w2;
-    return View(ndotv, kr, u, w);
-}
-
-// The suggestive-contour test numerator (threshold subtracted); the denominator is n·v.
-float test_numerator(uint i, View b) {
-    CurvVertex cv = vertices[i];
-    float k1 = cv.pdir1_k1.w, k2 = cv.pdir2_k2.w;
-    vec4 C = cv.dcurv;
-    float u = b.u, w = b.w, ndotv = b.ndotv;
-    precise float u2 = u * u;
-    precise float w2 = w * w;
-    precise float csc2 = 1.0 / (u2 + w2);
-    precise float num0 = (u2 * (u * C[0] + 3.0 * w * C[1]) + w2 * (3.0 * u * C[2] + w * C[3])) * csc2;
-    precise float tr = (k2 - k1) * u * w * csc2;
-    precise float num1 = num0 - 2.0 * ndotv * (tr * tr);
-    precise float test_num = num1 - pc.eye.w * ndotv;
-    return test_num;
-}
 
 void append(LineSegment s) {
     uint index = atomicAdd(out_buf.count, 1u);
     if (index < out_buf.capacity) out_buf.segments[index] = s;
-}
-
-bool has_both_signs(vec3 v) {
-    return (v[0] > 0.0 || v[1] > 0.0 || v[2] > 0.0) && (v[0] < 0.0 || v[1] < 0.0 || v[2] < 0.0);
 }
 
 // rtsc's draw_face_isoline2 from the lone vertex, with the test trimming and fade alpha.
@@ -150,33 +112,22 @@ void face_isoline(uint f, uvec3 corners, vec3 val, vec3 num, vec3 den, bool has_
 
 void main() {
     uint f = gl_GlobalInvocationID.x;
-    if (f >= pc.face_count) return;
+    if (f >= pc.count) return;
     uvec4 face = faces[f];
     uvec3 corners = face.xyz;
-    View v0 = vertex_view(corners[0]);
-    View v1 = vertex_view(corners[1]);
-    View v2 = vertex_view(corners[2]);
+    VertexView v0 = views[corners[0]];
+    VertexView v1 = views[corners[1]];
+    VertexView v2 = views[corners[2]];
+    uint any_sign = v0.signs | v1.signs | v2.signs;
+    uint all_signs = v0.signs & v1.signs & v2.signs;
 
-    if ((pc.flags & FLAG_SUGGESTIVE) != 0u) {
-        vec3 val = vec3(v0.kr, v1.kr, v2.kr);
-        bool back_facing = v0.ndotv <= 0.0 && v1.ndotv <= 0.0 && v2.ndotv <= 0.0;
-        if (has_both_signs(val) && !back_facing) {
-            vec3 num = vec3(test_numerator(corners[0], v0), test_numerator(corners[1], v1),
-                            test_numerator(corners[2], v2));
-            vec3 den = vec3(v0.ndotv, v1.ndotv, v2.ndotv);
-            bool rejected =
-                (num[0] <= 0.0 && den[0] >= 0.0 && num[1] <= 0.0 && den[1] >= 0.0 && num[2] <= 0.0 && den[2] >= 0.0) ||
-                (num[0] >= 0.0 && den[0] <= 0.0 && num[1] >= 0.0 && den[1] <= 0.0 && num[2] >= 0.0 && den[2] <= 0.0);
-            if (!rejected) face_isoline(f, corners, val, num, den, true, pc.fade, LINE_SUGGESTIVE);
-        }
-    }
-    if ((pc.flags & FLAG_SILHOUETTES) != 0u) {
-        vec3 val = vec3(v0.ndotv, v1.ndotv, v2.ndotv);
-        vec3 num = vec3(v0.kr, v1.kr, v2.kr);
-        bool rejected = num[0] <= 0.0 && num[1] <= 0.0 && num[2] <= 0.0;
-        if (has_both_signs(val) && !rejected)
-            face_isoline(f, corners, val, num, vec3(1.0), false, 0.0, LINE_SILHOUETTE);
-    }
+    if ((pc.flags & FLAG_SUGGESTIVE) != 0u && (any_sign & SUGGESTIVE_ANY) == SUGGESTIVE_ANY &&
+        (all_signs & SUGGESTIVE_REJECTED) == 0u)
+        face_isoline(f, corners, vec3(v0.kr, v1.kr, v2.kr), vec3(v0.test_num, v1.test_num, v2.test_num),
+                     vec3(v0.ndotv, v1.ndotv, v2.ndotv), true, pc.fade, LINE_SUGGESTIVE);
+    if ((pc.flags & FLAG_SILHOUETTES) != 0u && (any_sign & CONTOUR_ANY) == CONTOUR_ANY)
+        face_isoline(f, corners, vec3(v0.ndotv, v1.ndotv, v2.ndotv), vec3(v0.kr, v1.kr, v2.kr), vec3(1.0), false, 0.0,
+                     LINE_SILHOUETTE);
     uint mask = face.w;
     for (int i = 0; i < 3; ++i) {
         bool crease = (pc.flags & FLAG_CREASES) != 0u && (mask & (1u << i)) != 0u;

@@ -23,6 +23,14 @@ struct CurvVertex {
     vec4 dcurv;      // C0..C3
 };
 
+// A vertex's view quantities (lines_vertex.comp), as engine/lines/view_quantities.h.
+struct VertexView {
+    float ndotv;
+    float kr;
+    float test_num;  // the suggestive test's numerator, threshold subtracted
+    uint signs;      // lines_signs.glsl
+};
+
 struct LineSegment {
     vec4 p0;     // xyz world, w alpha
     vec4 p1;

@@ -6,6 +6,7 @@
 #include "core/error.h"
 #include "lines/extract_reference.h"
 #include "lines_extract_comp.h"
+#include "lines_vertex_comp.h"
 
 namespace lw {
 
@@ -19,8 +20,12 @@ struct LinesPush {
     glm::vec4 eye;  // w: sug_thresh / fs²
     float fade;
     uint32_t flags;
-    uint32_t face_count;
+    uint32_t count;  // vertices (lines_vertex.comp) or faces (lines_extract.comp)
     uint32_t pad;
+};
+struct VertexView {  // mirrors VertexView in shaders/lines_shared.glsl
+    float ndotv, kr, test_num;
+    uint32_t signs;
 };
 static_assert(sizeof(LinesPush) == 32);
 constexpr VkDeviceSize kHeaderBytes = 16;  // count, capacity, 2 × pad
@@ -29,8 +34,12 @@ constexpr VkDeviceSize kHeaderBytes = 16;  // count, capacity, 2 × pad
 
 LineExtractor::LineExtractor(const Context& ctx)
     : ctx_(&ctx),
+      vertex_pipeline_(ctx, {.spirv = LW_SPIRV(lines_vertex_comp_spv),
+                             .storage_buffers = 2,
+                             .push_constant_size = sizeof(LinesPush),
+                             .name = "lines extract, per vertex"}),
       pipeline_(ctx, {.spirv = LW_SPIRV(lines_extract_comp_spv),
-                      .storage_buffers = 4,
+                      .storage_buffers = 5,
                       .push_constant_size = sizeof(LinesPush),
                       .name = "lines extract"}) {}
 
@@ -61,6 +70,9 @@ void LineExtractor::set_mesh(const LineMesh& lm) {
     vertices_ = upload_buffer(*ctx_, vertices, usage, "line mesh vertices");
     faces_ = upload_buffer(*ctx_, faces, usage, "line mesh faces");
     face_edges_ = upload_buffer(*ctx_, face_edges, usage, "line mesh face edges");
+    views_ = Buffer(*ctx_, {.size = std::max<VkDeviceSize>(1, vertices.size()) * sizeof(VertexView), .usage = usage,
+                            .name = "line mesh view quantities"});
+    vertex_count_ = static_cast<uint32_t>(vertices.size());
     face_count_ = static_cast<uint32_t>(faces.size());
     feature_size_ = lm.feature_size;
     if (capacity_ == 0) allocate_output(std::max<uint32_t>(4096, face_count_ / 32));
@@ -71,14 +83,20 @@ void LineExtractor::record(VkCommandBuffer cmd, const glm::vec3& eye, const Line
     const ScaledThresholds t = scaled_thresholds(params, feature_size_);
     const uint32_t flags = (params.silhouettes ? 1u : 0u) | (params.suggestive ? 2u : 0u) |
                            (params.creases ? 4u : 0u) | (params.borders ? 8u : 0u);
-    const LinesPush push{glm::vec4(eye, t.sug_thresh), t.fade, flags, face_count_, 0u};
+    const LinesPush vertex_push{glm::vec4(eye, t.sug_thresh), t.fade, flags, vertex_count_, 0u};
+    const LinesPush face_push{glm::vec4(eye, t.sug_thresh), t.fade, flags, face_count_, 0u};
     const uint32_t header[4] = {0u, capacity_, 0u, 0u};
     vkCmdUpdateBuffer(cmd, output_.get(), 0, sizeof(header), header);
     record_memory_barrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                           VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                           VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
     if (timer) timer->begin(cmd, "lines extract");
-    pipeline_.dispatch(*ctx_, cmd, {&vertices_, &faces_, &face_edges_, &output_}, &push, (face_count_ + 63) / 64);
+    // Each vertex's quantities once (a vertex has about six faces), then the faces.
+    vertex_pipeline_.dispatch(*ctx_, cmd, {&vertices_, &views_}, &vertex_push, (vertex_count_ + 63) / 64);
+    record_memory_barrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                          VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
+    pipeline_.dispatch(*ctx_, cmd, {&vertices_, &faces_, &face_edges_, &output_, &views_}, &face_push,
+                       (face_count_ + 63) / 64);
     if (timer) timer->end(cmd);
     record_memory_barrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                           VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);

@@ -5,8 +5,10 @@
 // Output: the same `LineSegment`s as extract_lines_reference (in another order: the pass
 //         appends with an atomic counter; `sort_segments` makes them comparable).
 //
-// shaders/lines_extract.comp runs one invocation per face. The output buffer starts at a
-// 32nd of the face count and grows (the pass is re-run) when a view needs more.
+// Two dispatches, laid out as the host extraction: shaders/lines_vertex.comp computes each
+// vertex's view quantities and sign byte once; shaders/lines_extract.comp runs one
+// invocation per face that reads them. The output buffer starts at a 32nd of the face count
+// and grows (the pass is re-run) when a view needs more.
 #pragma once
 
 #include <vector>
@@ -42,8 +44,9 @@ private:
     void allocate_output(uint32_t capacity);
 
     const Context* ctx_;
-    ComputePipeline pipeline_;
-    Buffer vertices_, faces_, face_edges_;
+    ComputePipeline vertex_pipeline_, pipeline_;
+    Buffer vertices_, faces_, face_edges_, views_;
+    uint32_t vertex_count_ = 0;
     Buffer output_;           // header (count, capacity) + segments, Device memory
     Buffer readback_;         // same size, Readback memory
     uint32_t capacity_ = 0;

@@ -9,12 +9,8 @@ namespace lw {
 
 namespace {
 
-// Suggestive contours: the zero set of kr on faces not entirely back-facing, unless the
-// DwKr test fails at all three corners (rtsc's early rejection).
-constexpr unsigned kSuggestiveAny = kKrPositive | kKrNegative | kNotBackFacing;
-constexpr unsigned kSuggestiveRejected = kTestBelow | kTestAbove;  // either one, at all three corners
-// Contours: the zero set of n·v, unless kr ≤ 0 at all three corners.
-constexpr unsigned kContourAny = kNdotvPositive | kNdotvNegative | kKrNotNegative;
+constexpr unsigned kSuggestiveAny = SUGGESTIVE_ANY, kSuggestiveRejected = SUGGESTIVE_REJECTED;
+constexpr unsigned kContourAny = CONTOUR_ANY;
 
 // For each 8-bit mask, the lanes whose bit is set, first, one byte each: the permutation
 // that packs the selected lanes of a vector to its front (AVX2 has no compress).

@@ -6,10 +6,10 @@
 // Output: the faces of the range, in order, where rtsc's face tests (rtsc-lines.md §2.1)
 //         can draw a suggestive contour, and those where they can draw a contour.
 //
-// The byte holds exactly the comparisons the tests make (NaN included), so a face is left
-// out only where the full test would reject it. The scan is the hot loop of the host
-// extraction (every face, every view): eight faces at a time with AVX2 where the CPU has
-// it, else one by one; both give the same lists (tests/test_lines.cpp).
+// The byte's bits and the tests are shaders/lines_signs.glsl's, which the GPU passes share.
+// The scan is the hot loop of the host extraction (every face, every view): eight faces at
+// a time with AVX2 where the CPU has it, else one by one; both give the same lists
+// (tests/test_lines.cpp).
 #pragma once
 
 #include <cstddef>
@@ -17,26 +17,19 @@
 
 #include <glm/glm.hpp>
 
+#include "../../shaders/lines_signs.glsl"
+
 namespace lw {
 
-enum SignBit : uint8_t {
-    kNdotvPositive = 1,    // n·v > 0
-    kNdotvNegative = 2,    // n·v < 0
-    kKrPositive = 4,       // kr > 0
-    kKrNegative = 8,       // kr < 0
-    kNotBackFacing = 16,   // !(n·v ≤ 0)
-    kTestBelow = 32,       // test_num ≤ 0 and n·v ≥ 0: the suggestive test fails here …
-    kTestAbove = 64,       // … test_num ≥ 0 and n·v ≤ 0: … or fails here (other sign of n·v)
-    kKrNotNegative = 128,  // !(kr ≤ 0): the contour is kept here
-};
-
-// Products of comparisons rather than branches, so that the vertex loop vectorizes.
+// The byte of one vertex; products of comparisons rather than branches, so that the vertex
+// loop vectorizes. The same expressions as shaders/lines_vertex.comp.
 inline uint8_t sign_byte(float ndotv, float kr, float test_num) {
-    const auto bit = [](bool on, SignBit b) { return unsigned(on) * unsigned(b); };
-    return uint8_t(bit(ndotv > 0.0f, kNdotvPositive) | bit(ndotv < 0.0f, kNdotvNegative) | bit(kr > 0.0f, kKrPositive) |
-                   bit(kr < 0.0f, kKrNegative) | bit(!(ndotv <= 0.0f), kNotBackFacing) |
-                   bit((test_num <= 0.0f) & (ndotv >= 0.0f), kTestBelow) |
-                   bit((test_num >= 0.0f) & (ndotv <= 0.0f), kTestAbove) | bit(!(kr <= 0.0f), kKrNotNegative));
+    const auto bit = [](bool on, unsigned b) { return unsigned(on) * b; };
+    return uint8_t(bit(ndotv > 0.0f, SIGN_NDOTV_POSITIVE) | bit(ndotv < 0.0f, SIGN_NDOTV_NEGATIVE) |
+                   bit(kr > 0.0f, SIGN_KR_POSITIVE) | bit(kr < 0.0f, SIGN_KR_NEGATIVE) |
+                   bit(!(ndotv <= 0.0f), SIGN_NOT_BACK_FACING) |
+                   bit((test_num <= 0.0f) & (ndotv >= 0.0f), SIGN_TEST_BELOW) |
+                   bit((test_num >= 0.0f) & (ndotv <= 0.0f), SIGN_TEST_ABOVE) | bit(!(kr <= 0.0f), SIGN_KR_NOT_NEGATIVE));
 }
 
 // Bytes past the last vertex the sign array must have (zeros): the vector scan reads four
