@@ -39,17 +39,17 @@ ScreenPath segment_path(glm::vec2 a, glm::vec2 b) {
 enum class Drawer { LinePass, SolidStroke };
 
 // Ink (0 paper … 1 black) of a kSize² image drawn over white by `draw` (recording into the
-// target, returning the vertex buffer to keep alive).
+// target, its vertices in the arena).
 template <class Draw>
 std::vector<float> ink_of(const Context& ctx, Draw&& draw) {
     RenderTarget target(ctx, kSize, kSize, VK_FORMAT_R8G8B8A8_UNORM, 1);
     const SurfacePass surface(ctx);
     Buffer readback(ctx, {.size = VkDeviceSize(kSize) * kSize * 4, .usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                           .purpose = MemoryPurpose::Readback, .name = "test readback"});
-    Buffer keep;
+    UploadArena arena(VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, "test triangles");
     ctx.submit_and_wait([&](VkCommandBuffer cmd) {
         surface.record_clear(cmd, target, SurfaceStyle{});
-        keep = draw(cmd, target);
+        draw(cmd, target, arena);
         record_image_to_buffer(cmd, target.color, readback);
         record_memory_barrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                               VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
@@ -64,8 +64,8 @@ std::vector<float> ink_of(const Context& ctx, Draw&& draw) {
 std::vector<float> stroke_ink(const Context& ctx, const std::vector<StrokeVertex>& vertices) {
     const StrokePass strokes(ctx);
     const SlamTexture solid(ctx, solid_slam());
-    return ink_of(ctx, [&](VkCommandBuffer cmd, RenderTarget& target) {
-        return strokes.record(ctx, cmd, target, vertices, solid);
+    return ink_of(ctx, [&](VkCommandBuffer cmd, RenderTarget& target, UploadArena& arena) {
+        strokes.record(ctx, cmd, target, vertices, solid, arena);
     });
 }
 
@@ -83,8 +83,8 @@ std::vector<StrokeVertex> build(const ScreenPath& path, float width, Cap cap, Jo
 std::vector<float> draw_ink(const Context& ctx, const ScreenPath& path, float width, Drawer drawer) {
     if (drawer == Drawer::SolidStroke) return stroke_ink(ctx, build(path, width, Cap::Butt, Join::Mitre));
     const LinePass lines(ctx);
-    return ink_of(ctx, [&](VkCommandBuffer cmd, RenderTarget& target) {
-        return lines.record(ctx, cmd, target, {path}, LineDrawStyle{.width = width, .fade = false});
+    return ink_of(ctx, [&](VkCommandBuffer cmd, RenderTarget& target, UploadArena& arena) {
+        lines.record(ctx, cmd, target, {path}, LineDrawStyle{.width = width, .fade = false}, arena);
     });
 }
 

@@ -214,20 +214,11 @@ void GraphicsPipeline::push_image(const Context& ctx, VkCommandBuffer cmd, uint3
     ctx.cmd_push_descriptor_set(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &write);
 }
 
-Buffer upload_vertices(const Context& ctx, std::span<const std::byte> bytes, const char* name) {
-    Buffer buffer(ctx, {.size = bytes.size(), .usage = VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
-                        .purpose = MemoryPurpose::Upload, .name = name});
-    std::memcpy(buffer.mapped(), bytes.data(), bytes.size());
-    return buffer;
-}
-
-void GraphicsPipeline::draw(VkCommandBuffer cmd, const Buffer& vertices, uint32_t vertex_count, const void* push,
+void GraphicsPipeline::draw(VkCommandBuffer cmd, UploadArena::Slice vertices, uint32_t vertex_count, const void* push,
                             uint32_t push_size, uint32_t instance_count) const {
     if (push_size > 0)
         vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0, push_size, push);
-    VkDeviceSize offset = 0;
-    VkBuffer buffer = vertices.get();
-    vkCmdBindVertexBuffers(cmd, 0, 1, &buffer, &offset);
+    vkCmdBindVertexBuffers(cmd, 0, 1, &vertices.buffer, &vertices.offset);
     vkCmdDraw(cmd, vertex_count, instance_count, 0, 0);
 }
 

@@ -91,6 +91,11 @@ public:
     // Pushes the constants (vertex and fragment stages), binds `vertices` at binding 0 and
     // draws; the pipeline must be bound.
     void draw(VkCommandBuffer cmd, const Buffer& vertices, uint32_t vertex_count, const void* push,
+              uint32_t push_size, uint32_t instance_count = 1) const {
+        draw(cmd, {vertices.get(), 0}, vertex_count, push, push_size, instance_count);
+    }
+    // The same from a slice of an upload arena.
+    void draw(VkCommandBuffer cmd, UploadArena::Slice vertices, uint32_t vertex_count, const void* push,
               uint32_t push_size, uint32_t instance_count = 1) const;
 
     // Binds the storage buffers to bindings 0.. (push descriptors) for the following draws.
@@ -102,9 +107,6 @@ private:
     Handle<VkPipelineLayout> layout_;
     Handle<VkPipeline> pipeline_;
 };
-
-// A vertex buffer in Upload memory holding `bytes` (for per-frame geometry built on the CPU).
-[[nodiscard]] Buffer upload_vertices(const Context& ctx, std::span<const std::byte> bytes, const char* name);
 
 [[nodiscard]] Handle<VkShaderModule> create_shader_module(const Context& ctx, std::span<const uint32_t> spirv);
 

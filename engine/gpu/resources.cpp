@@ -87,6 +87,25 @@ Buffer& ensure_buffer(const Context& ctx, Buffer& buffer, const BufferDesc& desc
     return buffer;
 }
 
+UploadArena::Slice UploadArena::push(const Context& ctx, std::span<const std::byte> bytes) {
+    const VkDeviceSize start = (used_ + 15) / 16 * 16;
+    if (buffer_.get() == VK_NULL_HANDLE || start + bytes.size() > buffer_.size()) {
+        const VkDeviceSize size = std::max<VkDeviceSize>({VkDeviceSize(bytes.size()), 2 * buffer_.size(), 64 * 1024});
+        if (buffer_.get() != VK_NULL_HANDLE) retired_.push_back(std::move(buffer_));
+        buffer_ = Buffer(ctx, {.size = size, .usage = usage_, .purpose = MemoryPurpose::Upload, .name = name_});
+        used_ = 0;
+        return push(ctx, bytes);
+    }
+    std::memcpy(static_cast<std::byte*>(buffer_.mapped()) + start, bytes.data(), bytes.size());
+    used_ = start + bytes.size();
+    return {buffer_.get(), start};
+}
+
+void UploadArena::reset() {
+    used_ = 0;
+    retired_.clear();
+}
+
 Buffer upload_buffer(const Context& ctx, std::span<const std::byte> bytes, VkBufferUsageFlags usage, const char* name) {
     Buffer staging(ctx, {.size = bytes.size(), .usage = VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                          .purpose = MemoryPurpose::Upload, .name = "staging"});

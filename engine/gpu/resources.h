@@ -55,6 +55,29 @@ private:
 // sizes do not reallocate every frame; the old contents are lost). Returns `buffer`.
 Buffer& ensure_buffer(const Context& ctx, Buffer& buffer, const BufferDesc& desc);
 
+// Per-draw data of a frame (vertex triangles of each line set and layer) packed into one
+// host-visible buffer kept from frame to frame, so that no buffer is made per draw. A push
+// that does not fit moves to a buffer twice as big; the old one stays alive until reset(),
+// since draws already recorded read it. reset() once the frame's submission has completed.
+class UploadArena {
+public:
+    UploadArena(VkBufferUsageFlags usage, const char* name) : usage_(usage), name_(name) {}
+    struct Slice {
+        VkBuffer buffer = VK_NULL_HANDLE;
+        VkDeviceSize offset = 0;
+    };
+    // Copies `bytes` in (16-byte aligned) and says where they are.
+    [[nodiscard]] Slice push(const Context& ctx, std::span<const std::byte> bytes);
+    void reset();
+
+private:
+    VkBufferUsageFlags usage_;
+    const char* name_;
+    Buffer buffer_;
+    VkDeviceSize used_ = 0;
+    std::vector<Buffer> retired_;  // outgrown this frame, still read by its draws
+};
+
 // A Device buffer filled with `bytes` through a staging buffer (waits for the copy).
 [[nodiscard]] Buffer upload_buffer(const Context& ctx, std::span<const std::byte> bytes, VkBufferUsageFlags usage,
                                    const char* name);

@@ -296,15 +296,14 @@ Frame FrameRenderer::finish() {
     const bool any_strokes = std::any_of(strokes.begin(), strokes.end(), [](const auto& s) { return !s.empty(); });
     if (!stroke_pass_ && (layers_ || any_strokes)) stroke_pass_ = std::make_unique<StrokePass>(*ctx_, target.color.format());
 
-    // (2) Line sets in order, then layers, over the surface; colour read back. Vertex
-    // buffers must outlive the submission.
-    std::vector<Buffer> buffers;
+    // (2) Line sets in order, then layers, over the surface; colour read back. Their
+    // triangles go into the slot's arena (its last frame's submission completed).
+    slot.vertices.reset();
     ctx_->submit_and_wait([&](VkCommandBuffer cmd) {
         slot.timer.reset(cmd);
         slot.timer.begin(cmd, "lines draw");
-        if (slot.draw_lines) record_sets(cmd, target, frame, slot.sets, in.lines, strokes, buffers);
-        if (layers_ && in.layers)
-            for (Buffer& b : layers_->record(*ctx_, cmd, target, *stroke_pass_)) buffers.push_back(std::move(b));
+        if (slot.draw_lines) record_sets(cmd, target, frame, slot.sets, in.lines, strokes, slot.vertices);
+        if (layers_ && in.layers) layers_->record(*ctx_, cmd, target, *stroke_pass_, slot.vertices);
         slot.timer.end(cmd);
         if (in.outputs.color) record_image_to_buffer(cmd, target.color, slot.color_readback);
         record_memory_barrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
@@ -378,17 +377,16 @@ void FrameRenderer::prepare_sets(Frame& frame, const std::vector<LineSetDesc>& s
 
 void FrameRenderer::record_sets(VkCommandBuffer cmd, RenderTarget& target, const Frame& frame,
                                 const std::vector<LineSetDesc>& sets, const LinesDesc& lines,
-                                const std::vector<std::vector<StrokeVertex>>& strokes, std::vector<Buffer>& keep_alive) {
+                                const std::vector<std::vector<StrokeVertex>>& strokes, UploadArena& arena) {
     for (const LineSetFrame& out : frame.sets) {
         const LineSetDesc& set = sets[out.set];
         const SetState& state = sets_[out.set];
         if (!set.style.ribbon.empty()) continue;
         if (!strokes[out.set].empty()) {
             if (!solid_) solid_ = std::make_unique<SlamTexture>(*ctx_, solid_slam());
-            keep_alive.push_back(stroke_pass_->record(*ctx_, cmd, target, strokes[out.set],
-                                                      state.texture ? *state.texture : *solid_));
+            stroke_pass_->record(*ctx_, cmd, target, strokes[out.set], state.texture ? *state.texture : *solid_, arena);
         } else if (is_plain_line_set(set.style) && !state.texture) {
-            keep_alive.push_back(line_pass_.record(*ctx_, cmd, target, out.paths, plain_draw_style(lines, set)));
+            line_pass_.record(*ctx_, cmd, target, out.paths, plain_draw_style(lines, set), arena);
         }
     }
 }

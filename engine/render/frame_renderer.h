@@ -187,6 +187,7 @@ private:
         RenderTarget target;
         Buffer depth_readback, color_readback;
         GpuTimer timer;
+        UploadArena vertices{VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, "line and stroke triangles"};  // the lines draw's
         FrameInput input;
         std::vector<LineSetDesc> sets;
         bool draw_lines = false;
@@ -228,7 +229,7 @@ private:
                       const std::vector<glm::vec3>& positions, std::vector<std::vector<StrokeVertex>>* strokes);
     void record_sets(VkCommandBuffer cmd, RenderTarget& target, const Frame& frame,
                      const std::vector<LineSetDesc>& sets, const LinesDesc& lines,
-                     const std::vector<std::vector<StrokeVertex>>& strokes, std::vector<Buffer>& keep_alive);
+                     const std::vector<std::vector<StrokeVertex>>& strokes, UploadArena& arena);
     std::vector<SetState> sets_;
     FaceGroups groups_;
     std::unique_ptr<StrokePass> stroke_pass_;

@@ -83,15 +83,13 @@ void LayerPass::restore(const std::vector<std::optional<CoherenceTracker::State>
     }
 }
 
-std::vector<Buffer> LayerPass::record(const Context& ctx, VkCommandBuffer cmd, const RenderTarget& target,
-                                      const StrokePass& strokes) const {
-    std::vector<Buffer> buffers;
+void LayerPass::record(const Context& ctx, VkCommandBuffer cmd, const RenderTarget& target, const StrokePass& strokes,
+                       UploadArena& arena) const {
     for (const Layer& layer : layers_) {
-        if (!layer.fill.empty()) buffers.push_back(strokes.record(ctx, cmd, target, layer.fill, *solid_));
+        if (!layer.fill.empty()) strokes.record(ctx, cmd, target, layer.fill, *solid_, arena);
         if (!layer.strokes.empty())
-            buffers.push_back(strokes.record(ctx, cmd, target, layer.strokes, layer.texture ? *layer.texture : *solid_));
+            strokes.record(ctx, cmd, target, layer.strokes, layer.texture ? *layer.texture : *solid_, arena);
     }
-    return buffers;
 }
 
 }  // namespace lw

@@ -49,9 +49,9 @@ public:
     // fixed texture phases every `spacing` pixels, as 3D strokes are.
     std::vector<LayerResult> prepare(std::vector<LayerFrame>& frames, bool coherent, float spacing);
 
-    // Records the draws of the last prepare(); the returned buffers must outlive the submission.
-    [[nodiscard]] std::vector<Buffer> record(const Context& ctx, VkCommandBuffer cmd, const RenderTarget& target,
-                                             const StrokePass& strokes) const;
+    // Records the draws of the last prepare(), their vertices put in `arena`.
+    void record(const Context& ctx, VkCommandBuffer cmd, const RenderTarget& target, const StrokePass& strokes,
+                UploadArena& arena) const;
 
     // The SLAM layers' tracker states (absent for solid layers), for --resume.
     [[nodiscard]] std::vector<std::optional<CoherenceTracker::State>> states() const;

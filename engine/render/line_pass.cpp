@@ -102,17 +102,16 @@ LinePass::LinePass(const Context& ctx, VkFormat color_format)
                       .push_constant_size = sizeof(LineDrawPush),
                       .name = "lines draw"}) {}
 
-Buffer LinePass::record(const Context& ctx, VkCommandBuffer cmd, RenderTarget& target,
-                        const std::vector<ScreenPath>& paths, const LineDrawStyle& style) const {
+void LinePass::record(const Context& ctx, VkCommandBuffer cmd, RenderTarget& target, const std::vector<ScreenPath>& paths,
+                      const LineDrawStyle& style, UploadArena& arena) const {
     const std::vector<StrokeVertex> vertices = line_triangles(paths, style, kCoverageMarginPx, false);
-    if (vertices.empty()) return Buffer();
-    Buffer buffer = upload_vertices(ctx, std::as_bytes(std::span(vertices)), "line triangles");
+    if (vertices.empty()) return;
+    const UploadArena::Slice buffer = arena.push(ctx, std::as_bytes(std::span(vertices)));
     target.begin_overlay(cmd);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.get());
     const LineDrawPush push{{float(target.width), float(target.height)}, kDashPeriodPx, 0.0f};
     pipeline_.draw(cmd, buffer, static_cast<uint32_t>(vertices.size()), &push, sizeof(push));
     target.end_overlay(cmd);
-    return buffer;
 }
 
 }  // namespace lw

@@ -47,10 +47,10 @@ class LinePass {
 public:
     explicit LinePass(const Context& ctx, VkFormat color_format = VK_FORMAT_R8G8B8A8_UNORM);
 
-    // Builds the triangles of `paths` and records their drawing; the returned buffer must live
-    // until the command buffer has completed.
-    [[nodiscard]] Buffer record(const Context& ctx, VkCommandBuffer cmd, RenderTarget& target,
-                                const std::vector<ScreenPath>& paths, const LineDrawStyle& style) const;
+    // Builds the triangles of `paths` into `arena` and records their drawing; the arena must
+    // not be reset before the command buffer has completed.
+    void record(const Context& ctx, VkCommandBuffer cmd, RenderTarget& target, const std::vector<ScreenPath>& paths,
+                const LineDrawStyle& style, UploadArena& arena) const;
 
 private:
     GraphicsPipeline pipeline_;

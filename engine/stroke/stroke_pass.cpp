@@ -36,17 +36,16 @@ StrokePass::StrokePass(const Context& ctx, VkFormat color_format)
                       .push_constant_size = sizeof(StrokePush),
                       .name = "strokes"}) {}
 
-Buffer StrokePass::record(const Context& ctx, VkCommandBuffer cmd, const RenderTarget& target,
-                          const std::vector<StrokeVertex>& vertices, const SlamTexture& slam) const {
-    if (vertices.empty()) return Buffer();
-    Buffer buffer = upload_vertices(ctx, std::as_bytes(std::span(vertices)), "stroke triangles");
+void StrokePass::record(const Context& ctx, VkCommandBuffer cmd, const RenderTarget& target,
+                        const std::vector<StrokeVertex>& vertices, const SlamTexture& slam, UploadArena& arena) const {
+    if (vertices.empty()) return;
+    const UploadArena::Slice buffer = arena.push(ctx, std::as_bytes(std::span(vertices)));
     target.begin_overlay(cmd);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.get());
     pipeline_.push_image(ctx, cmd, 0, slam.view(), slam.sampler());
     const StrokePush push{{float(target.width), float(target.height)}, float(slam.levels()), 0.0f};
     pipeline_.draw(cmd, buffer, static_cast<uint32_t>(vertices.size()), &push, sizeof(push));
     target.end_overlay(cmd);
-    return buffer;
 }
 
 }  // namespace lw

@@ -23,9 +23,10 @@ class StrokePass {
 public:
     explicit StrokePass(const Context& ctx, VkFormat color_format = VK_FORMAT_R8G8B8A8_UNORM);
 
-    // Records the draw; the returned vertex buffer must live until the submission completed.
-    [[nodiscard]] Buffer record(const Context& ctx, VkCommandBuffer cmd, const RenderTarget& target,
-                                const std::vector<StrokeVertex>& vertices, const SlamTexture& slam) const;
+    // Records the draw, its vertices put in `arena` (not to be reset before the submission
+    // completed).
+    void record(const Context& ctx, VkCommandBuffer cmd, const RenderTarget& target,
+                const std::vector<StrokeVertex>& vertices, const SlamTexture& slam, UploadArena& arena) const;
 
 private:
     GraphicsPipeline pipeline_;
