@@ -106,11 +106,13 @@ struct SampleGrid {
                     if (glm::length(e.sample().pixel - p) <= radius) f(e);
             }
     }
-    // The nearest sample within `radius` (of equally near ones, the last visited).
-    std::optional<Entry> nearest(glm::vec2 p, float radius) const {
+    // The nearest sample of line set `line_set` within `radius` (of equally near ones, the
+    // last visited).
+    std::optional<Entry> nearest(glm::vec2 p, float radius, const std::string& line_set) const {
         std::optional<Entry> best;
         float best_d = radius;
         for_each_within(p, radius, [&](const Entry& e) {
+            if (e.path->line_set != line_set) return;
             const float d = glm::length(e.sample().pixel - p);
             if (d <= best_d) {
                 best_d = d;
@@ -147,28 +149,35 @@ PathPoint point_on_path(const SampleGrid::Entry& e, glm::vec2 p) {
     return {best, t};
 }
 
-double median(std::vector<double> v) {
-    if (v.empty()) return 0.0;
-    std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(v.size() / 2), v.end());
-    return v[v.size() / 2];
-}
-
 }  // namespace
 
 SlidingMeasure measure_sliding(const std::vector<PathDump>& frames, float match_px) {
-    std::vector<double> dts;
+    std::vector<double> dts, pixels;
     for (size_t f = 1; f < frames.size(); ++f) {
         const SampleGrid previous(frames[f - 1], std::max(match_px, 1.0f));
         for (const auto& path : frames[f].paths)
             for (const auto& s : path.samples) {
-                const std::optional<SampleGrid::Entry> match = previous.nearest(s.pixel, match_px);
+                const std::optional<SampleGrid::Entry> match = previous.nearest(s.pixel, match_px, path.line_set);
                 if (!match) continue;
                 double dt = double(s.t) - double(match->sample().t);
                 dt -= std::round(dt);  // wrapped to half a period
                 dts.push_back(std::abs(dt));
+                if (path.rho != 0.0f) pixels.push_back(std::abs(dt) / std::abs(double(path.rho)));
             }
     }
-    return {median(dts), dts.size()};
+    std::sort(pixels.begin(), pixels.end());
+    SlidingMeasure m;
+    m.pairs = dts.size();
+    if (dts.empty()) return m;
+    std::sort(dts.begin(), dts.end());
+    m.median_dt = dts[dts.size() / 2];
+    m.p90_dt = dts[std::min(dts.size() - 1, dts.size() * 9 / 10)];
+    m.pops = double(dts.end() - std::upper_bound(dts.begin(), dts.end(), 0.25)) / double(dts.size());
+    if (!pixels.empty()) {
+        m.median_px = pixels[pixels.size() / 2];
+        m.p90_px = pixels[std::min(pixels.size() - 1, pixels.size() * 9 / 10)];
+    }
+    return m;
 }
 
 PhaseError measure_phase_error(const PathDump& frame, const PathDump& reference, float match_px) {
@@ -230,23 +239,41 @@ StretchMeasure measure_stretch(const std::vector<PathDump>& frames) {
     return m;
 }
 
-std::vector<PathDump> paths_of_line_set(const std::vector<PathDump>& frames, const std::string& line_set) {
+namespace {
+
+template <class Key>
+std::vector<PathDump> paths_where(const std::vector<PathDump>& frames, Key key, const std::string& value) {
     std::vector<PathDump> out;
     for (const PathDump& frame : frames) {
         PathDump subset{.frame = frame.frame};
         for (const DumpPath& path : frame.paths)
-            if (path.line_set == line_set) subset.paths.push_back(path);
+            if (key(path) == value) subset.paths.push_back(path);
         out.push_back(std::move(subset));
     }
     return out;
 }
 
-std::vector<std::string> line_sets_in(const std::vector<PathDump>& frames) {
-    std::vector<std::string> names;
+template <class Key>
+std::vector<std::string> values_in(const std::vector<PathDump>& frames, Key key) {
+    std::vector<std::string> values;
     for (const PathDump& frame : frames)
         for (const DumpPath& path : frame.paths)
-            if (std::find(names.begin(), names.end(), path.line_set) == names.end()) names.push_back(path.line_set);
-    return names;
+            if (std::find(values.begin(), values.end(), key(path)) == values.end()) values.push_back(key(path));
+    return values;
 }
+
+const std::string& set_of(const DumpPath& path) { return path.line_set; }
+const std::string& type_of(const DumpPath& path) { return path.type; }
+
+}  // namespace
+
+std::vector<PathDump> paths_of_line_set(const std::vector<PathDump>& frames, const std::string& line_set) {
+    return paths_where(frames, set_of, line_set);
+}
+std::vector<std::string> line_sets_in(const std::vector<PathDump>& frames) { return values_in(frames, set_of); }
+std::vector<PathDump> paths_of_type(const std::vector<PathDump>& frames, const std::string& type) {
+    return paths_where(frames, type_of, type);
+}
+std::vector<std::string> types_in(const std::vector<PathDump>& frames) { return values_in(frames, type_of); }
 
 }  // namespace lw

@@ -8,8 +8,11 @@
 // Only visible paths are dumped.
 //
 // Measures (the coherence issue's acceptance, computed from dumps so outside tools agree):
-//   sliding — for consecutive frames, the median |Δt| (wrapped to half a period) between
-//             samples of the two frames lying within 1.5 px of each other on screen;
+//   sliding — for consecutive frames, |Δt| (wrapped to half a period) between samples of the
+//             two frames lying within 1.5 px of each other on screen, each matched in its own
+//             line set (each set has its own texture and tracker, so T of a crease and T of a
+//             silhouette crossing it are not comparable): its median, its 90th
+//             percentile (the tail a viewer sees), and the share of "pops" (|Δt| > 0.25);
 //   stretch — per sample, the on-screen length of one period of the sampled texture,
 //             ds/du, and the share of samples inside the best factor-of-2 band [x, 2x).
 #pragma once
@@ -57,6 +60,11 @@ struct PathDump {
 
 struct SlidingMeasure {
     double median_dt = 0.0;  // median |Δt| over matched sample pairs, periods
+    double p90_dt = 0.0;     // its 90th percentile
+    double pops = 0.0;       // share of pairs with |Δt| > 0.25 period
+    // The same two in pixels along the path (|Δt| / |ρ|): periods depend on the scale a
+    // policy draws at, pixels are what a viewer sees slide.
+    double median_px = 0.0, p90_px = 0.0;
     size_t pairs = 0;
 };
 [[nodiscard]] SlidingMeasure measure_sliding(const std::vector<PathDump>& frames, float match_px = 1.5f);
@@ -84,5 +92,8 @@ struct StretchMeasure {
 // measured on its own; and the line-set names found, in order of first appearance.
 [[nodiscard]] std::vector<PathDump> paths_of_line_set(const std::vector<PathDump>& frames, const std::string& line_set);
 [[nodiscard]] std::vector<std::string> line_sets_in(const std::vector<PathDump>& frames);
+// The same by line type ("silhouette", …, "layer").
+[[nodiscard]] std::vector<PathDump> paths_of_type(const std::vector<PathDump>& frames, const std::string& type);
+[[nodiscard]] std::vector<std::string> types_in(const std::vector<PathDump>& frames);
 
 }  // namespace lw

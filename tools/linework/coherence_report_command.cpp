@@ -1,11 +1,13 @@
 // `linework coherence-report DUMPS...` — sliding and stretch measured from path dumps.
 //
 // Reads every frame_NNNN.json of each dump folder (in frame order) and prints the two
-// measures of engine/coherence/path_dump.h: sliding (median |Δt| of nearby samples in
-// consecutive frames) and stretch (on-screen pixels per texture period, and the share of
+// measures of engine/coherence/path_dump.h for all paths, per line set and per line type:
+// sliding (median and 90th percentile of |Δt| of nearby samples in consecutive frames, and
+// the share of pops over a quarter period; with --baseline, as ratios to another render) and stretch (on-screen pixels per texture period, and the share of
 // samples inside the best factor-of-2 band). With --against REF: per frame, how far the
 // parameterization is from REF's dump of the same frame (a farm chunk against one render).
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -18,19 +20,43 @@ namespace lw::cli {
 
 namespace {
 
-void print_measures(const std::string& what, const std::vector<PathDump>& frames) {
-    const SlidingMeasure sliding = measure_sliding(frames);
-    const StretchMeasure stretch = measure_stretch(frames);
+struct Measures {
+    SlidingMeasure sliding;
+    StretchMeasure stretch;
+};
+
+Measures measure(const std::vector<PathDump>& frames) { return {measure_sliding(frames), measure_stretch(frames)}; }
+
+// Below `nothing` (1e-4 periods, 0.01 px) nothing slides measurably: such a ratio is 0, not
+// a quotient of rounding errors (a still camera's lines give 0 under both policies).
+double ratio(double a, double b, double nothing = 1e-4) {
+    if (a <= nothing) return 0.0;
+    return b > nothing ? a / b : INFINITY;
+}
+
+// One group's measures; against a baseline's same group (another policy's render of the same
+// shot), their ratios as well.
+void print_measures(const std::string& what, const Measures& m, const Measures* baseline) {
     std::printf("  %s:\n", what.c_str());
-    std::printf("    sliding: median |dt| %.5f periods over %zu matched sample pairs\n", sliding.median_dt, sliding.pairs);
+    std::printf("    sliding: median |dt| %.5f, p90 %.5f periods (%.2f, %.2f px), pops (|dt| > 0.25) %.3f %% of %zu matched "
+                "sample pairs\n",
+                m.sliding.median_dt, m.sliding.p90_dt, m.sliding.median_px, m.sliding.p90_px, 100.0 * m.sliding.pops,
+                m.sliding.pairs);
     std::printf("    stretch: %.2f %% of %zu samples within [%.1f, %.1f) px per period; median %.1f px\n",
-                100.0 * stretch.share_in_band, stretch.samples, stretch.band_low, 2.0 * stretch.band_low,
-                stretch.median_ds_du);
+                100.0 * m.stretch.share_in_band, m.stretch.samples, m.stretch.band_low, 2.0 * m.stretch.band_low,
+                m.stretch.median_ds_du);
+    if (baseline && baseline->sliding.pairs > 0)
+        std::printf("    against the baseline: median %.3f, p90 %.3f, pops %.3f; in pixels: median %.3f, p90 %.3f\n",
+                    ratio(m.sliding.median_dt, baseline->sliding.median_dt),
+                    ratio(m.sliding.p90_dt, baseline->sliding.p90_dt), ratio(m.sliding.pops, baseline->sliding.pops),
+                    ratio(m.sliding.median_px, baseline->sliding.median_px, 0.01),
+                    ratio(m.sliding.p90_px, baseline->sliding.p90_px, 0.01));
 }
 
 struct ReportOptions {
     std::vector<std::string> folders;
     std::string against;
+    std::string baseline;
     double max_p90 = -1.0;  // < 0: no threshold
 };
 
@@ -67,21 +93,41 @@ int report_against(const std::string& folder, const std::vector<PathDump>& frame
     return over > 0 ? 1 : 0;
 }
 
+// The groups a report shows: all paths, each line set (each has its own texture and
+// tracker, so its own period band) and each line type.
+struct Group {
+    std::string name;
+    std::vector<PathDump> frames;
+};
+std::vector<Group> groups_of(const std::vector<PathDump>& frames) {
+    std::vector<Group> groups{{"all paths", frames}};
+    const std::vector<std::string> sets = line_sets_in(frames);
+    if (sets.size() > 1)
+        for (const std::string& set : sets)
+            groups.push_back({set.empty() ? "layers" : "line set " + set, paths_of_line_set(frames, set)});
+    const std::vector<std::string> types = types_in(frames);
+    if (types.size() > 1)
+        for (const std::string& type : types) groups.push_back({"type " + type, paths_of_type(frames, type)});
+    return groups;
+}
+
 int run_report(const ReportOptions& o) {
     int status = 0;
+    std::vector<std::pair<std::string, Measures>> baseline;
+    if (!o.baseline.empty())
+        for (const Group& g : groups_of(read_dumps(o.baseline))) baseline.emplace_back(g.name, measure(g.frames));
     for (const std::string& folder : o.folders) {
         const std::vector<PathDump> frames = read_dumps(folder);
         if (!o.against.empty()) {
             status = std::max(status, report_against(folder, frames, o));
             continue;
         }
-        std::printf("%s: %zu frames\n", folder.c_str(), frames.size());
-        print_measures("all paths", frames);
-        // Per line set: each has its own texture and tracker, so its own period band.
-        const std::vector<std::string> sets = line_sets_in(frames);
-        if (sets.size() > 1)
-            for (const std::string& set : sets)
-                print_measures(set.empty() ? "layers" : "line set " + set, paths_of_line_set(frames, set));
+        std::printf("%s: %zu frames%s\n", folder.c_str(), frames.size(),
+                    o.baseline.empty() ? "" : (", baseline " + o.baseline).c_str());
+        for (const Group& g : groups_of(frames)) {
+            const auto base = std::find_if(baseline.begin(), baseline.end(), [&](const auto& b) { return b.first == g.name; });
+            print_measures(g.name, measure(g.frames), base == baseline.end() ? nullptr : &base->second);
+        }
     }
     return status;
 }
@@ -97,10 +143,14 @@ Runner add_coherence_report_command(CLI::App& app) {
     cmd->add_option("--against", o->against,
                     "Reference dump folder of the same frames (one render of the shot): print per frame how far "
                     "the parameterization is from it (|dt| in periods: median, 90th percentile, max)");
+    cmd->add_option("--baseline", o->baseline,
+                    "Dump folder of the same shot under another policy (e.g. --param arclength): print each "
+                    "measure's ratio to it as well (the coherence goal is median <= 0.2, p90 <= 0.35, pops <= 0.25)");
     cmd->add_option("--max-p90", o->max_p90, "With --against: exit 1 when a frame's 90th percentile passes this "
                                              "many periods");
     return [o] {
         if (o->max_p90 >= 0.0 && o->against.empty()) throw usage_error("--max-p90 needs --against REF");
+        if (!o->baseline.empty() && !o->against.empty()) throw usage_error("--baseline and --against are two reports: give one");
         return run_report(*o);
     };
 }
