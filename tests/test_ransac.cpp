@@ -1,5 +1,6 @@
 // RANSAC fit of T(s) = ρs + φ (Bénard et al. 2010, §4.2): recovery under outliers, and the
 // GPU pass against the CPU reference.
+#include <algorithm>
 #include <random>
 
 #include "coherence/ransac.h"
@@ -98,6 +99,49 @@ TEST_F(RansacGpu, MatchesTheCpuReference) {
         EXPECT_NEAR(gpu[p].phi, cpu[p].phi, 1e-3f * std::max(1.0f, std::abs(cpu[p].phi))) << p;
     }
     EXPECT_GT(fitted, 200u);
+}
+
+// The phase alone (a scale known from the view): the window of width 2·inlier·|ρ| holding the
+// most votes' phases, its median. Against a brute force that tries every vote's phase as the
+// window's lower end, and robust to 40 % outliers.
+TEST(Ransac, PhaseFitIsTheDensestWindowsMedian) {
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    for (int trial = 0; trial < 200; ++trial) {
+        const float rho = (trial % 2 ? -1.0f : 1.0f) * (0.002f + 0.01f * unit(rng));
+        const size_t count = 1 + size_t(unit(rng) * 12.0f);
+        std::vector<Vote> votes;
+        for (size_t k = 0; k < count; ++k) votes.push_back({unit(rng) * 0.05f, 2.0f * float(k)});
+        const PhaseFit fit = fit_phase(votes, rho, 1.5f);
+        // Brute force: every phase as a window's lower end, the most votes (the lowest end on
+        // ties), then the median (the upper one of an even count) of that window.
+        std::vector<float> phases;
+        for (const Vote& v : votes) phases.push_back(v.t - rho * v.s);
+        std::sort(phases.begin(), phases.end());
+        size_t best = 0;
+        float best_low = 0.0f;
+        for (const float low : phases) {
+            size_t n = 0;
+            for (const float q : phases) n += q >= low && q - low <= 2.0f * 1.5f * std::abs(rho);
+            if (n > best) {
+                best = n;
+                best_low = low;
+            }
+        }
+        std::vector<float> window;
+        for (const float q : phases)
+            if (q >= best_low && q - best_low <= 2.0f * 1.5f * std::abs(rho)) window.push_back(q);
+        ASSERT_EQ(fit.inliers, best) << trial;
+        EXPECT_EQ(fit.phi, window[window.size() / 2]) << trial;
+    }
+    EXPECT_EQ(fit_phase({}, 0.01f, 1.5f).inliers, 0u);
+    // 120 votes of one line (0.2 px jitter) and 40 % outliers: φ within half a pixel.
+    for (uint32_t seed = 1; seed <= 5; ++seed) {
+        const std::vector<Vote> votes = synthetic_votes(0.005f, 0.3f, 120, 0.4f, seed);
+        const PhaseFit fit = fit_phase(votes, 0.005f, 1.5f);
+        EXPECT_NEAR(fit.phi, 0.3f, 0.5f * 0.005f) << seed;
+        EXPECT_GE(fit.inliers, 60u) << seed;
+    }
 }
 
 }  // namespace

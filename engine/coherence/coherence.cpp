@@ -37,6 +37,18 @@ float path_length(const ScreenPath& path) {
     return path.samples.size() < 2 ? 0.0f : path.samples.back().s - path.samples.front().s;
 }
 
+// Pixels a unit of length at `world` covers on screen: the projection's Jacobian J (2×3) at
+// the point, sqrt(|a × b|) for its rows a, b (det(J·Jᵀ)^¼: the scale of a perspective or
+// orthographic camera, and of a vector layer's zoom).
+float pixels_per_unit(const CameraMatrices& camera, glm::vec3 world, float width, float height) {
+    const glm::mat4& m = camera.view_proj;
+    const glm::vec4 clip = m * glm::vec4(world, 1.0f);
+    auto row = [&](int i) { return glm::vec3(m[0][i], m[1][i], m[2][i]); };
+    const glm::vec3 a = 0.5f * width * (row(0) * clip.w - clip.x * row(3)) / (clip.w * clip.w);
+    const glm::vec3 b = 0.5f * height * (row(1) * clip.w - clip.y * row(3)) / (clip.w * clip.w);
+    return std::sqrt(glm::length(glm::cross(a, b)));
+}
+
 }  // namespace
 
 ScreenPath resample_at_phase(const ScreenPath& path, const PathParam& param, float spacing) {
@@ -124,28 +136,27 @@ void start_loop_at_seam(ScreenPath& path, VoteSet& votes, size_t p) {
     }
 }
 
-// The SLAM's self-similarity makes T and 2^k·T draw the same stroke (the level fold of
-// slam_level.h absorbs the power of two). A short path born with T = s/L, though, starts
-// with a steep ρ (a 4 px path: 1/4 period per pixel), and splatting such values makes every
-// later vote and every sub-pixel error count in periods of a tiny texture. So T is kept in
-// the octave of the tiling scale ρ0 = κ/Lmax: when |ρ| leaves [ρ0/2, 2ρ0] (not at every
-// crossing of ρ0, so that a path near the bound does not flip back and forth), T is scaled
-// by the power of two that brings |ρ| nearest to ρ0. The drawn stroke does not change.
-float vote_span(const VoteSet& votes, size_t p) {
-    float lo = INFINITY, hi = -INFINITY;
-    for (uint32_t k = votes.offsets[p]; k < votes.offsets[p + 1]; ++k) {
-        lo = std::min(lo, votes.votes[k].s);
-        hi = std::max(hi, votes.votes[k].s);
+// A path's T(s) = ρs + φ: |ρ| the tracker's scale (update_view_scale), in the direction
+// RANSAC found (without a fit, the one more votes agree with; RANSAC's slope sign was measured
+// the better judge of a path's direction than counting votes both ways), and φ the phase
+// most votes agree on (fit_phase). Without votes the path starts at phase 0, at the scale
+// every other path has (§4.2's T = s/L would start it in another octave and texture size).
+void param_from_scale(PathParam& param, const PathFit& fit, const VoteSet& votes, size_t p, float view_rho,
+                      float inlier_px) {
+    const std::span<const Vote> own(votes.votes.data() + votes.offsets[p], votes.offsets[p + 1] - votes.offsets[p]);
+    param.rho = view_rho;
+    param.phi = 0.0f;
+    param.fitted = false;
+    if (own.empty()) return;
+    PhaseFit phase = fit_phase(own, fit.fitted && fit.rho < 0.0f ? -view_rho : view_rho, inlier_px);
+    if (fit.fitted) {
+        param.rho = fit.rho < 0.0f ? -view_rho : view_rho;
+    } else if (const PhaseFit reversed = fit_phase(own, -view_rho, inlier_px); reversed.inliers > phase.inliers) {
+        param.rho = -view_rho;
+        phase = reversed;
     }
-    return hi > lo ? hi - lo : 0.0f;
-}
-
-void keep_in_home_octave(PathParam& param, float rho0) {
-    const float ratio = std::abs(param.rho) / rho0;
-    if (!(ratio > 0.0f) || !std::isfinite(ratio) || (ratio >= 0.5f && ratio <= 2.0f)) return;
-    const float scale = std::exp2(-std::round(std::log2(ratio)));
-    param.rho *= scale;
-    param.phi *= scale;
+    param.phi = phase.phi;
+    param.fitted = true;
 }
 
 }  // namespace
@@ -219,10 +230,56 @@ CoherenceTracker::CoherenceTracker(const Context& ctx, uint32_t width, uint32_t 
                                    .name = "splat readback"});
 }
 
-VoteSet CoherenceTracker::gather_votes(const std::vector<ScreenPath>& paths, const SurfaceFrame& surface) const {
-    VoteSet set;
+std::vector<CoherenceTracker::Carried> CoherenceTracker::carry_back(const std::vector<ScreenPath>& paths,
+                                                                    const SurfaceFrame& surface) const {
+    std::vector<Carried> out;
+    if (!has_previous_) return out;
     const bool track_surface = surface.positions && surface.faces &&
                                previous_positions_.size() == surface.positions->size();
+    for (uint32_t p = 0; p < paths.size(); ++p) {
+        if (!paths[p].visible) continue;
+        for (uint32_t k = 0; k < paths[p].samples.size(); ++k) {
+            const ScreenSample& sample = paths[p].samples[k];
+            // The sample's surface point one frame earlier: moved with its face.
+            glm::vec3 previous = sample.position;
+            if (track_surface && sample.face < surface.faces->size()) {
+                const glm::uvec3 c = (*surface.faces)[sample.face];
+                for (int i = 0; i < 3; ++i)
+                    previous += sample.bary[i] * (previous_positions_[c[i]] - (*surface.positions)[c[i]]);
+            }
+            const glm::vec4 clip = previous_camera_.view_proj * glm::vec4(previous, 1.0f);
+            out.push_back({p, k, project_to_pixel(previous_camera_, previous, float(width_), float(height_)), clip.z / clip.w});
+        }
+    }
+    return out;
+}
+
+CoherenceTracker::ViewZoom CoherenceTracker::view_zoom(const std::vector<Carried>& carried,
+                                                       const CameraMatrices& camera) const {
+    // The view's zoom at the point on the previous view's axis (the image centre) at the
+    // samples' median depth: a camera's dolly or focal change, a vector layer's scale, and 1
+    // for an orbit about the subject or a still camera, whatever the samples do.
+    std::vector<float> depths;
+    for (const Carried& c : carried)
+        if (c.pixel.z > 0.0f && std::isfinite(c.ndc_depth)) depths.push_back(c.ndc_depth);
+    const ViewZoom none{1.0f, glm::vec2(0.5f * float(width_), 0.5f * float(height_))};
+    if (depths.empty()) return none;
+    std::nth_element(depths.begin(), depths.begin() + std::ptrdiff_t(depths.size() / 2), depths.end());
+    const glm::vec4 h = glm::inverse(previous_camera_.view_proj) * glm::vec4(0.0f, 0.0f, depths[depths.size() / 2], 1.0f);
+    const glm::vec3 centre = glm::vec3(h) / h.w;
+    const float change = pixels_per_unit(camera, centre, float(width_), float(height_)) /
+                         pixels_per_unit(previous_camera_, centre, float(width_), float(height_));
+    const glm::vec3 at = project_to_pixel(camera, centre, float(width_), float(height_));
+    if (!std::isfinite(change) || !(change > 0.0f) || !(at.z > 0.0f)) return none;
+    return {change, glm::vec2(at)};
+}
+
+VoteSet CoherenceTracker::gather_votes(const std::vector<ScreenPath>& paths, const CameraMatrices& camera,
+                                       const SurfaceFrame& surface, float& zoom) const {
+    VoteSet set;
+    const std::vector<Carried> carried = carry_back(paths, surface);
+    const ViewZoom view = view_zoom(carried, camera);
+    zoom = view.zoom;
     // Where each sample was a frame earlier; the splat is then read at all those pixels at
     // once (on the host: at them alone, splat_grid.h).
     struct Query {
@@ -231,35 +288,36 @@ VoteSet CoherenceTracker::gather_votes(const std::vector<ScreenPath>& paths, con
     };
     std::vector<Query> queries;
     std::vector<glm::ivec2> pixels;
-    for (uint32_t p = 0; p < paths.size(); ++p) {
-        const ScreenPath& path = paths[p];
-        if (!path.visible || !has_previous_) continue;
-        for (uint32_t k = 0; k < path.samples.size(); ++k) {
-            const ScreenSample& sample = path.samples[k];
-            // The sample's surface point one frame earlier: moved with its face.
-            glm::vec3 previous = sample.position;
-            if (track_surface && sample.face < surface.faces->size()) {
-                const glm::uvec3 c = (*surface.faces)[sample.face];
-                for (int i = 0; i < 3; ++i)
-                    previous += sample.bary[i] * (previous_positions_[c[i]] - (*surface.positions)[c[i]]);
-            }
-            glm::vec3 pixel = project_to_pixel(previous_camera_, previous, float(width_), float(height_));
-            if (path.type == LineType::Silhouette || path.type == LineType::Suggestive) {
-                // A contour is not attached to the surface: it slides over it as the view
-                // turns, so only the surface point's motion across the line carries the
-                // line; its motion along the line is the surface sliding under the contour
-                // and would drag the texture along a contour that stays put on screen.
-                const glm::vec2 tangent = path_tangent(path, k);
-                const glm::vec2 moved = glm::vec2(pixel) - sample.pixel;
-                const glm::vec2 across = sample.pixel + moved - glm::dot(moved, tangent) * tangent;
-                pixel = glm::vec3(across, pixel.z);
-            }
-            if (pixel.z <= 0.0f || pixel.x < 0.0f || pixel.y < 0.0f || pixel.x >= float(width_) ||
-                pixel.y >= float(height_))
-                continue;
-            queries.push_back({p, k, glm::vec2(pixel)});
-            pixels.emplace_back(int(pixel.x), int(pixel.y));
+    for (const Carried& c : carried) {
+        const ScreenPath& path = paths[c.path];
+        const ScreenSample& sample = path.samples[c.sample];
+        glm::vec3 pixel = c.pixel;
+        if (path.type == LineType::Silhouette) {
+            // A contour is not attached to the surface: it slides over it as the view turns,
+            // but its motion across itself is its surface point's (the normal image velocity of
+            // an occluding contour is that of the surface point on it); its motion along the
+            // line is the surface sliding under the contour and would drag the texture along
+            // a contour that stays put on screen. Along the line it moves as the view's zoom
+            // scales the image about the zoom's centre (a dolly; nothing on an orbit; the
+            // centre's own motion is left out: on an orbit it is parallax, not the line's
+            // motion, and measured worse).
+            const glm::vec2 tangent = path_tangent(path, c.sample);
+            const glm::vec2 moved = glm::vec2(pixel) - sample.pixel;
+            const glm::vec2 zoomed = (sample.pixel - view.centre) * (1.0f / view.zoom - 1.0f);
+            pixel = glm::vec3(sample.pixel + moved + glm::dot(zoomed - moved, tangent) * tangent, pixel.z);
+        } else if (path.type == LineType::Suggestive) {
+            // A suggestive contour (the zero set of κr) moves over the surface at a speed of
+            // its own, across itself too, so its surface point's motion is not the line's:
+            // it looks up its closest correspondent where it is now (§4.1), moved only by the
+            // view's zoom. Measured against the across motion (120-frame orbits, 640×480, p90
+            // |Δt| against the tiling policy's): a statue scan 0.93 → 0.36, LeePerrySmith
+            // 0.22 → 0.14, Suzanne 0.15 → 0.12, FlightHelmet 0.34 → 0.27.
+            pixel = glm::vec3(sample.pixel + (sample.pixel - view.centre) * (1.0f / view.zoom - 1.0f), pixel.z);
         }
+        if (pixel.z <= 0.0f || pixel.x < 0.0f || pixel.y < 0.0f || pixel.x >= float(width_) || pixel.y >= float(height_))
+            continue;
+        queries.push_back({c.path, c.sample, glm::vec2(pixel)});
+        pixels.emplace_back(int(pixel.x), int(pixel.y));
     }
     std::vector<glm::vec4> sums;
     if (site_ == ComputeSite::Host) {
@@ -290,6 +348,37 @@ VoteSet CoherenceTracker::gather_votes(const std::vector<ScreenPath>& paths, con
     return set;
 }
 
+// Why one scale for the set, carried through the view's zoom, and not each path's fitted
+// slope (§4.2 fits both ρ and φ per path): fitted per path, ρ carried each frame's few-percent
+// slope error into the next frame with nothing pulling it back. On a 360° orbit it wandered
+// over the whole octave the SLAM fold allows (median |log2 ρ/ρ0| 0.3 on FlightHelmet's
+// silhouettes, a third of the paths in the octave above the others), and every change of
+// scale slid the texture along the path (BENCHMARKS "Coherence on every model"). A
+// silhouette or suggestive contour slides over the surface and has no length of its own to
+// follow; a crease has, but its foreshortening from frame to frame is smaller than the fit's
+// noise. So ρ follows only the view's zoom (1 on an orbit, the ratio on a dolly or a vector
+// layer's zoom; gather_votes), the same for every path of the set, and paths
+// that meet or overlap in the splat agree on it; RANSAC's fit still gives each path's
+// direction and its disagreeing runs, and the phase is fitted alone.
+void CoherenceTracker::update_view_scale(VoteSet& votes, float zoom, const CoherenceParams& params) {
+    // The tiling scale ρ0 is where fold_slam_level changes level (λ = 1: level 1 and 0.5 at
+    // twice the coordinate scale). A scale held there by an orbit switched between the two
+    // with every rounding of the zoom (identical strokes, as A1.0 = [A0.5 A0.5], but another
+    // texture period): start √2 from either level change instead.
+    const float rho0 = params.length_scale / params.slam_length_px;
+    if (!(view_rho_ > 0.0f) || !has_previous_) view_rho_ = params.slam_levels ? rho0 * float(M_SQRT1_2) : rho0;
+    if (std::isfinite(zoom) && zoom > 0.0f) view_rho_ /= zoom;  // the texture keeps its size on the surface
+    // Kept in T's home octave [ρ0/2, 2ρ0] (the SLAM fold draws T and 2^k·T alike, and T's
+    // values stay in periods of the texture as drawn); the votes carry the previous frame's T,
+    // so they are scaled with it.
+    const float ratio = view_rho_ / rho0;
+    if (!(ratio >= 0.5f && ratio <= 2.0f) && std::isfinite(ratio) && ratio > 0.0f) {
+        const float scale = std::exp2(-std::round(std::log2(ratio)));
+        view_rho_ *= scale;
+        for (Vote& vote : votes.votes) vote.t *= scale;
+    }
+}
+
 void CoherenceTracker::splat(const std::vector<ScreenPath>& paths, const std::vector<PathParam>& params, float radius,
                              GpuTimer* timer) {
     splat_sprites(sprites_of(paths, params), radius, timer);
@@ -298,6 +387,7 @@ void CoherenceTracker::splat(const std::vector<ScreenPath>& paths, const std::ve
 void CoherenceTracker::restore(const State& state, const SurfaceFrame& surface) {
     has_previous_ = state.has_previous;
     previous_camera_ = state.camera;
+    view_rho_ = state.view_rho;
     if (surface.positions) previous_positions_ = *surface.positions;
     if (state.has_previous) splat_sprites(state.sprites, state.radius, nullptr);
 }
@@ -488,21 +578,15 @@ std::vector<PathParam> CoherenceTracker::update(std::vector<ScreenPath>& paths, 
     });
     std::vector<PathFit> fits;
     VoteSet votes;
-    float typical_rho = params.length_scale / params.slam_length_px;
     if (params.policy == ParamPolicy::Coherent) {
-        votes = gather_votes(paths, surface);
+        float zoom = 1.0f;
+        votes = gather_votes(paths, camera, surface, zoom);
+        update_view_scale(votes, zoom, params);
         for (size_t p = 0; p < paths.size(); ++p) start_loop_at_seam(paths[p], votes, p);
+        // RANSAC's fit finds each path's direction along the previous parameterization and the
+        // runs of votes that disagree with it (pieces of paths that were apart a frame earlier).
         fits = fitter_.fit(votes, params.ransac);
         split_merged_paths(paths, votes, fits, params.ransac);
-        // The scale most paths settled on: for paths whose votes agree on a phase but cannot
-        // give a slope (all at one arclength, or sub-pixel paths with equal t).
-        std::vector<float> rhos;
-        for (const PathFit& fit : fits)
-            if (fit.fitted) rhos.push_back(std::abs(fit.rho));
-        if (!rhos.empty()) {
-            std::nth_element(rhos.begin(), rhos.begin() + std::ptrdiff_t(rhos.size() / 2), rhos.end());
-            typical_rho = rhos[rhos.size() / 2];
-        }
     }
     std::vector<PathParam> out(paths.size());
     for (size_t p = 0; p < paths.size(); ++p) {
@@ -512,36 +596,7 @@ std::vector<PathParam> CoherenceTracker::update(std::vector<ScreenPath>& paths, 
         switch (params.policy) {
             case ParamPolicy::Coherent:
                 param.votes = fits[p].votes;
-                param.fitted = fits[p].fitted;
-                if (param.fitted && vote_span(votes, p) < params.min_slope_span_px) {
-                    // Votes over a few pixels fix a phase but not a slope: the least-squares ρ
-                    // of a short fragment jumps by tens of percent from frame to frame. Keep
-                    // the tiling scale (in T's home octave, see keep_in_home_octave) and take
-                    // the phase as the median over the votes.
-                    const float rho0 = params.length_scale / params.slam_length_px;
-                    param.rho = fits[p].rho < 0.0f ? -rho0 : rho0;
-                    std::vector<float> phases;
-                    for (uint32_t k = votes.offsets[p]; k < votes.offsets[p + 1]; ++k)
-                        phases.push_back(votes.votes[k].t - param.rho * votes.votes[k].s);
-                    std::nth_element(phases.begin(), phases.begin() + std::ptrdiff_t(phases.size() / 2), phases.end());
-                    param.phi = phases[phases.size() / 2];
-                } else if (param.fitted) {
-                    param.rho = fits[p].rho;
-                    param.phi = fits[p].phi;
-                } else if (param.votes >= 2) {
-                    // Votes without a slope: keep their phase at the typical scale, so that the
-                    // texture does not jump (§4.2 leaves this case open).
-                    param.rho = typical_rho;
-                    double phase = 0.0;
-                    for (uint32_t k = votes.offsets[p]; k < votes.offsets[p + 1]; ++k)
-                        phase += votes.votes[k].t - typical_rho * votes.votes[k].s;
-                    param.phi = float(phase / param.votes);
-                } else {
-                    // Fewer than two votes: T(s) = s/L (§4.2), or the tiling scale.
-                    param.rho = params.fresh_paths_tile ? params.length_scale / params.slam_length_px : stretch_rho;
-                    param.phi = 0.0f;
-                }
-                keep_in_home_octave(param, params.length_scale / params.slam_length_px);
+                param_from_scale(param, fits[p], votes, p, view_rho_, params.ransac.inlier_px);
                 param.fold = fold_slam_level(param.rho, params.length_scale, params.slam_length_px);
                 break;
             case ParamPolicy::Arclength:  // tiling: one period per texture length on screen

@@ -5,7 +5,10 @@
 //   1. votes: every sample of the new paths is carried to frame f − 1 (its surface point
 //      moved with the mesh, projected with frame f − 1's camera) and reads the splat buffer
 //      (Σ w·t, Σ w) there; where Σ w > 0 it votes (Σwt/Σw, s) — §4.2;
-//   2. fit: RANSAC per path (ransac_gpu.h); fewer than two votes: T(s) = s/L;
+//   2. fit: RANSAC per path (ransac_gpu.h) finds each path's direction and the runs of votes
+//      that disagree (merged paths, split there); ρ is not the path's own, as in §4.2, but
+//      one scale for the set carried through the view's zoom, and each path fits its phase φ
+//      to its votes (fit_phase; no votes: φ = 0). Why: update_view_scale in coherence.cpp;
 //   3. splat: every sample writes t = T(s) as a sprite of radius δ,
 //      w = clamp(1 − d/δ, 0, 1), additive, into a float buffer kept for frame f + 1 — §4.1
 //      (the extra channels, Σ w·(c − pixel), place each vote where its average was taken).
@@ -43,13 +46,11 @@ struct CoherenceParams {
     // fragments of a few pixels show a sliver of the texture and are re-extracted differently
     // every frame (on the orbit of BENCHMARKS.md they hold half the samples).
     float min_stroke_length_px = 8.0f;
-    // A path whose votes span fewer pixels than this keeps the tiling scale and fits only its
-    // phase (a slope from votes a few pixels apart is noise).
-    float min_slope_span_px = 16.0f;
-    // A path without votes starts at T(s) = s·κ/Lmax (the tiling scale) instead of the
-    // paper's T(s) = s/L. For styles with no coarser level to fold into (dashes, plain
-    // displacement): their on-screen lengths are then exact where nothing moved.
-    bool fresh_paths_tile = false;
+    // The texture is a SLAM whose level follows ρ: T's scale starts at ρ0/√2, in the middle
+    // of the level range, not at ρ0 = κ/Lmax, where the level changes between 1 and 0.5 (see
+    // update_view_scale). Without levels (dashes, displacement) it starts at ρ0, so that
+    // their lengths on screen are as given.
+    bool slam_levels = true;
     RansacParams ransac;
 };
 
@@ -112,7 +113,10 @@ public:
                                                 GpuTimer* timer = nullptr, VoteSet* votes_out = nullptr);
 
     // Forgets the previous frame (a cut).
-    void reset() { has_previous_ = false; }
+    void reset() {
+        has_previous_ = false;
+        view_rho_ = 0.0f;
+    }
 
     // What the next update() needs of the frames before it, small enough to keep beside an
     // offline render (`linework render --resume`): the last splat's sprites (centre, T) and
@@ -123,8 +127,9 @@ public:
         CameraMatrices camera;
         float radius = 0.0f;
         std::vector<glm::vec3> sprites;  // x, y in pixels; T
+        float view_rho = 0.0f;  // the scale of every path, carried through the view's zoom (0: not set)
     };
-    [[nodiscard]] State state() const { return {has_previous_, previous_camera_, last_radius_, last_sprites_}; }
+    [[nodiscard]] State state() const { return {has_previous_, previous_camera_, last_radius_, last_sprites_, view_rho_}; }
     // Splats the state's sprites again (the same buffer, bit for bit, on the same device and
     // compute site).
     void restore(const State& state, const SurfaceFrame& surface);
@@ -138,7 +143,26 @@ private:
     // fit on the agreeing pieces and fit the others on their own (RANSAC again).
     void split_merged_paths(std::vector<ScreenPath>& paths, VoteSet& votes, std::vector<PathFit>& fits,
                             const RansacParams& ransac) const;
-    [[nodiscard]] VoteSet gather_votes(const std::vector<ScreenPath>& paths, const SurfaceFrame& surface) const;
+    // Each visible sample's surface point a frame earlier (moved with its face), projected
+    // with the previous camera: its pixel and clip w, and its NDC depth.
+    struct Carried {
+        uint32_t path, sample;
+        glm::vec3 pixel;
+        float ndc_depth;
+    };
+    [[nodiscard]] std::vector<Carried> carry_back(const std::vector<ScreenPath>& paths, const SurfaceFrame& surface) const;
+    // The view's zoom since the previous frame (how many more pixels a unit of length covers
+    // now at the samples' median depth on the previous view's axis) and that point's pixel now.
+    struct ViewZoom {
+        float zoom = 1.0f;
+        glm::vec2 centre;
+    };
+    [[nodiscard]] ViewZoom view_zoom(const std::vector<Carried>& carried, const CameraMatrices& camera) const;
+    // Also the view's zoom (ViewZoom::zoom).
+    [[nodiscard]] VoteSet gather_votes(const std::vector<ScreenPath>& paths, const CameraMatrices& camera,
+                                       const SurfaceFrame& surface, float& zoom) const;
+    // The scale of lines that slide over the surface, carried through the view's zoom.
+    void update_view_scale(VoteSet& votes, float zoom, const CoherenceParams& params);
     void splat(const std::vector<ScreenPath>& paths, const std::vector<PathParam>& params, float radius,
                GpuTimer* timer);
     void splat_sprites(const std::vector<glm::vec3>& sprites, float radius, GpuTimer* timer);
@@ -161,6 +185,7 @@ private:
     std::vector<glm::vec3> previous_positions_;
     std::vector<glm::vec3> last_sprites_;  // what made it (state())
     float last_radius_ = 0.0f;
+    float view_rho_ = 0.0f;  // ρ of every path (0: not set yet)
 };
 
 }  // namespace lw

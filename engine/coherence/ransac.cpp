@@ -116,4 +116,26 @@ std::vector<PathFit> fit_paths_reference(const VoteSet& set, const RansacParams&
     return fits;
 }
 
+PhaseFit fit_phase(std::span<const Vote> votes, float rho, float inlier_px) {
+    PhaseFit fit;
+    if (votes.empty()) return fit;
+    std::vector<float> phases;
+    phases.reserve(votes.size());
+    for (const Vote& v : votes) phases.push_back(v.t - rho * v.s);
+    std::sort(phases.begin(), phases.end());
+    const float width = 2.0f * inlier_px * std::abs(rho);
+    size_t best_first = 0, best_count = 0;
+    for (size_t first = 0, end = 0; first < phases.size(); ++first) {
+        end = std::max(end, first);
+        while (end < phases.size() && phases[end] - phases[first] <= width) ++end;
+        if (end - first > best_count) {
+            best_count = end - first;
+            best_first = first;
+        }
+    }
+    fit.phi = phases[best_first + best_count / 2];
+    fit.inliers = uint32_t(best_count);
+    return fit;
+}
+
 }  // namespace lw

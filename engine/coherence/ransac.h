@@ -5,7 +5,8 @@
 // Output: (ρ, φ) per path: RANSAC over two-vote hypotheses, the iteration count derived from
 //         the inlier-ratio estimate and the target probability and refined as better
 //         hypotheses are found, then least squares on the inliers of the best one. Fewer
-//         than two votes: no fit (the caller uses T(s) = s/L).
+//         than two votes: no fit. (The tracker keeps the fit's direction and inliers and
+//         takes ρ from the view: coherence.h.)
 //
 // The GPU pass (ransac_gpu.h, shaders/coherence_ransac.comp, one workgroup per path) draws
 // the same random sequence — a hash of (seed, path, hypothesis) — and evaluates hypotheses
@@ -63,5 +64,15 @@ struct VoteSet {
 };
 
 [[nodiscard]] std::vector<PathFit> fit_paths_reference(const VoteSet& set, const RansacParams& params);
+
+// The phase alone, for a scale ρ known from elsewhere (the view's, coherence.h): the votes'
+// phases t − ρ·s, the window of width 2·inlier_px·|ρ| holding the most of them (every
+// hypothesis of a one-parameter RANSAC tried; the first such window on ties), and the median
+// of that window. One vote is enough. A host function on every compute site.
+struct PhaseFit {
+    float phi = 0.0f;
+    uint32_t inliers = 0;  // 0: no votes
+};
+[[nodiscard]] PhaseFit fit_phase(std::span<const Vote> votes, float rho, float inlier_px);
 
 }  // namespace lw

@@ -103,7 +103,7 @@ CoherenceParams line_set_coherence(const CoherenceParams& base, const LineSetDes
                                                                 : float(slam->height) / set.style.width;
     } else {
         params.length_scale = set.coherence.length_scale > 0.0f ? set.coherence.length_scale : 1.0f;
-        params.fresh_paths_tile = true;
+        params.slam_levels = false;
     }
     return params;
 }

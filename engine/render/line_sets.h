@@ -55,8 +55,7 @@ struct FaceGroups {
 // The coherence parameters of one set: `base` (policy, splat radius, RANSAC, fragment
 // length) with the set's SLAM length, κ (default: square texels, the SLAM's height over the
 // stroke width), policy and spacing. Sets without a SLAM count T in texture lengths of
-// `base.slam_length_px` pixels; they start new paths at the tiling scale (a dash pattern has
-// no coarser level to fold into, see CoherenceParams::fresh_paths_tile).
+// `base.slam_length_px` pixels.
 [[nodiscard]] CoherenceParams line_set_coherence(const CoherenceParams& base, const LineSetDesc& set,
                                                  const Slam* slam, float scene_spacing_px);
 

@@ -12,8 +12,9 @@ namespace lw::cli {
 
 namespace {
 
-// 2: one tracker per line set; 3: the line mesh's pose.
-constexpr char kMagic[8] = {'L', 'W', 'S', 'T', 'A', 'T', 'E', '3'};
+// 2: one tracker per line set; 3: the line mesh's pose; 4: the view scale of the coherent
+// parameterization.
+constexpr char kMagic[8] = {'L', 'W', 'S', 'T', 'A', 'T', 'E', '4'};
 
 class Writer {
 public:
@@ -60,6 +61,7 @@ void put_state(Writer& w, const std::optional<CoherenceTracker::State>& state) {
     w.put(state->radius);
     w.put(uint32_t(state->sprites.size()));
     w.put_bytes(state->sprites.data(), state->sprites.size() * sizeof(glm::vec3));
+    w.put(state->view_rho);
 }
 
 std::optional<CoherenceTracker::State> get_state(Reader& r) {
@@ -70,6 +72,7 @@ std::optional<CoherenceTracker::State> get_state(Reader& r) {
     state.radius = r.get<float>();
     state.sprites.resize(r.count(sizeof(glm::vec3)));
     r.get_bytes(state.sprites.data(), state.sprites.size() * sizeof(glm::vec3));
+    state.view_rho = r.get<float>();
     return state;
 }
 
