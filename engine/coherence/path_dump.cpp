@@ -149,6 +149,22 @@ PathPoint point_on_path(const SampleGrid::Entry& e, glm::vec2 p) {
     return {best, t};
 }
 
+// The median, 90th percentile, largest value and share over a quarter period of |Δt| values
+// (sorted here); zeros for none.
+struct Quantiles {
+    double median = 0.0, p90 = 0.0, max = 0.0, over_quarter = 0.0;
+};
+Quantiles quantiles(std::vector<double>& values) {
+    Quantiles q;
+    if (values.empty()) return q;
+    std::sort(values.begin(), values.end());
+    q.median = values[values.size() / 2];
+    q.p90 = values[std::min(values.size() - 1, values.size() * 9 / 10)];
+    q.max = values.back();
+    q.over_quarter = double(values.end() - std::upper_bound(values.begin(), values.end(), 0.25)) / double(values.size());
+    return q;
+}
+
 }  // namespace
 
 SlidingMeasure measure_sliding(const std::vector<PathDump>& frames, float match_px) {
@@ -165,19 +181,9 @@ SlidingMeasure measure_sliding(const std::vector<PathDump>& frames, float match_
                 if (path.rho != 0.0f) pixels.push_back(std::abs(dt) / std::abs(double(path.rho)));
             }
     }
-    std::sort(pixels.begin(), pixels.end());
-    SlidingMeasure m;
-    m.pairs = dts.size();
-    if (dts.empty()) return m;
-    std::sort(dts.begin(), dts.end());
-    m.median_dt = dts[dts.size() / 2];
-    m.p90_dt = dts[std::min(dts.size() - 1, dts.size() * 9 / 10)];
-    m.pops = double(dts.end() - std::upper_bound(dts.begin(), dts.end(), 0.25)) / double(dts.size());
-    if (!pixels.empty()) {
-        m.median_px = pixels[pixels.size() / 2];
-        m.p90_px = pixels[std::min(pixels.size() - 1, pixels.size() * 9 / 10)];
-    }
-    return m;
+    const Quantiles periods = quantiles(dts), along = quantiles(pixels);
+    return {.median_dt = periods.median, .p90_dt = periods.p90, .pops = periods.over_quarter,
+            .median_px = along.median, .p90_px = along.p90, .pairs = dts.size()};
 }
 
 PhaseError measure_phase_error(const PathDump& frame, const PathDump& reference, float match_px) {
@@ -201,15 +207,8 @@ PhaseError measure_phase_error(const PathDump& frame, const PathDump& reference,
             });
             if (best_dt >= 0.0) dts.push_back(best_dt);
         }
-    PhaseError e;
-    e.pairs = dts.size();
-    if (dts.empty()) return e;
-    std::sort(dts.begin(), dts.end());
-    e.median = dts[dts.size() / 2];
-    e.p90 = dts[std::min(dts.size() - 1, dts.size() * 9 / 10)];
-    e.max = dts.back();
-    e.over_quarter = double(dts.end() - std::upper_bound(dts.begin(), dts.end(), 0.25)) / double(dts.size());
-    return e;
+    const Quantiles q = quantiles(dts);
+    return {.median = q.median, .p90 = q.p90, .max = q.max, .over_quarter = q.over_quarter, .pairs = dts.size()};
 }
 
 StretchMeasure measure_stretch(const std::vector<PathDump>& frames) {
