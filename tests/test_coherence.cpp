@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <numbers>
 
 #include <nlohmann/json.hpp>
 
@@ -202,6 +203,26 @@ TEST_F(CoherenceGpu, StillPathsKeepTheirScaleAndFragmentsAreDropped) {
     EXPECT_LE(std::abs(last[0].rho), 2.0f / 64.0f);
 }
 
+// A camera that scales the image about its centre by `zoom`.
+CameraMatrices zoomed_camera(float zoom) {
+    CameraMatrices camera;
+    camera.view_proj = glm::scale(glm::mat4(1.0f), glm::vec3(zoom, zoom, 1.0f));
+    return camera;
+}
+
+// The segment a–b of a plane as `camera` draws it: samples every 2 px, their surface points.
+ScreenPath line_on_plane(const CameraMatrices& camera, glm::vec3 a, glm::vec3 b, LineType type, int width, int height) {
+    ScreenPath path{.type = type, .visible = true};
+    const glm::vec2 pa(project_to_pixel(camera, a, float(width), float(height)));
+    const glm::vec2 pb(project_to_pixel(camera, b, float(width), float(height)));
+    const float length = glm::length(pb - pa);
+    for (float s = 0.0f; s <= length; s += 2.0f)
+        path.samples.push_back(ScreenSample{.pixel = glm::mix(pa, pb, s / length), .depth = 1.0f, .s = s,
+                                            .position = glm::mix(a, b, s / length), .face = 0,
+                                            .bary = glm::vec3(1, 0, 0), .alpha = 1.0f});
+    return path;
+}
+
 // One scale for the set, carried through the view's zoom (issue 19): a line on a plane, seen
 // by a camera that zooms 6 % a frame about the image centre, keeps its texture on the plane:
 // |ρ|·zoom stays the starting scale (times the power of two that keeps T in its home octave)
@@ -211,21 +232,14 @@ TEST_F(CoherenceGpu, ScaleFollowsTheViewsZoomAndTheTextureStaysOnTheSurface) {
     for (const LineType type : {LineType::Silhouette, LineType::Crease}) {
         CoherenceTracker tracker(ctx(), width, height);
         const CoherenceParams params{.length_scale = 1.0f, .slam_length_px = 128.0f};
-        const float rho_start = float(M_SQRT1_2) / 128.0f;  // ρ0/√2: a SLAM's scale starts mid-level
+        const float rho_start = (1.0f / std::numbers::sqrt2_v<float>) / 128.0f;  // ρ0/√2: a SLAM's scale starts mid-level
         const glm::vec3 a(-0.5f, -0.2f, 0.5f), b(0.4f, 0.3f, 0.5f), middle = 0.5f * (a + b);
         float zoom = 1.0f, t_middle = 0.0f;
         for (int frame = 0; frame < 14; ++frame) {
             if (frame >= 4) zoom *= 1.06f;  // still for four frames, then a zoom to 1.79×
-            CameraMatrices camera;
-            camera.view_proj = glm::scale(glm::mat4(1.0f), glm::vec3(zoom, zoom, 1.0f));
-            ScreenPath path{.type = type, .visible = true};
-            const glm::vec2 pa(project_to_pixel(camera, a, width, height)), pb(project_to_pixel(camera, b, width, height));
-            const float length = glm::length(pb - pa);
-            for (float s = 0.0f; s <= length; s += 2.0f)
-                path.samples.push_back(ScreenSample{.pixel = glm::mix(pa, pb, s / length), .depth = 1.0f, .s = s,
-                                                    .position = glm::mix(a, b, s / length), .face = 0,
-                                                    .bary = glm::vec3(1, 0, 0), .alpha = 1.0f});
-            std::vector<ScreenPath> paths{path};
+            const CameraMatrices camera = zoomed_camera(zoom);
+            std::vector<ScreenPath> paths{line_on_plane(camera, a, b, type, width, height)};
+            const glm::vec2 pa = paths[0].samples.front().pixel, pb = paths[0].samples.back().pixel;
             const std::vector<PathParam> out = tracker.update(paths, camera, {}, params);
             ASSERT_EQ(out.size(), 1u);
             const float octave = std::abs(out[0].rho) * zoom / rho_start;
@@ -237,10 +251,39 @@ TEST_F(CoherenceGpu, ScaleFollowsTheViewsZoomAndTheTextureStaysOnTheSurface) {
             if (frame == 0) t_middle = t;
             // Within a pixel's worth of T at the starting scale (the votes' rounding).
             EXPECT_NEAR(t, t_middle, rho_start) << line_type_name(type) << ", frame " << frame;
+            if (frame < 4) EXPECT_EQ(std::abs(out[0].rho), rho_start) << frame;  // a still view: exactly
             if (frame > 0 && frame < 4) EXPECT_TRUE(out[0].fitted) << frame;
         }
         EXPECT_NEAR(zoom, 1.79f, 0.01f);  // past √2: T's octave folds once
     }
+}
+
+// A resumed render (`--resume`, a farm chunk) restores the set's scale with the splat: a
+// tracker restored from another's state after a zoom continues it exactly.
+TEST_F(CoherenceGpu, ARestoredTrackerContinuesTheZoomedScale) {
+    const int width = 200, height = 150;
+    const CoherenceParams params{.length_scale = 1.0f, .slam_length_px = 128.0f};
+    const glm::vec3 a(-0.5f, -0.2f, 0.5f), b(0.4f, 0.3f, 0.5f);
+    CoherenceTracker first(ctx(), width, height);
+    float zoom = 1.0f;
+    for (int frame = 0; frame < 6; ++frame, zoom *= 1.1f) {
+        std::vector<ScreenPath> paths{line_on_plane(zoomed_camera(zoom), a, b, LineType::Silhouette, width, height)};
+        (void)first.update(paths, zoomed_camera(zoom), {}, params);
+    }
+    const CoherenceTracker::State state = first.state();
+    // ρ0/√2 over five zooms of 1.1, doubled once when it left T's home octave.
+    EXPECT_NEAR(state.view_rho * std::pow(1.1f, 5.0f), 2.0f * (1.0f / std::numbers::sqrt2_v<float>) / 128.0f, 1e-5f);
+    CoherenceTracker resumed(ctx(), width, height);
+    resumed.restore(state, {});
+    std::vector<ScreenPath> paths{line_on_plane(zoomed_camera(zoom), a, b, LineType::Silhouette, width, height)};
+    std::vector<ScreenPath> same = paths;
+    const std::vector<PathParam> expected = first.update(paths, zoomed_camera(zoom), {}, params);
+    const std::vector<PathParam> got = resumed.update(same, zoomed_camera(zoom), {}, params);
+    ASSERT_EQ(got.size(), 1u);
+    ASSERT_EQ(expected.size(), 1u);
+    EXPECT_TRUE(got[0].fitted);
+    EXPECT_EQ(got[0].rho, expected[0].rho);
+    EXPECT_EQ(got[0].phi, expected[0].phi);
 }
 
 // On CPU devices the tracker splats and fits on the host (ComputeSite); both sites must give

@@ -2,9 +2,12 @@
 //
 // Bénard et al. 2010, §4. Each visible path has T(s) = ρ·s + φ over its screen arclength s
 // (pixels from the path's first sample). Per frame f:
-//   1. votes: every sample of the new paths is carried to frame f − 1 (its surface point
-//      moved with the mesh, projected with frame f − 1's camera) and reads the splat buffer
-//      (Σ w·t, Σ w) there; where Σ w > 0 it votes (Σwt/Σw, s) — §4.2;
+//   1. votes: every sample of the new paths is carried to frame f − 1 and reads the splat
+//      buffer (Σ w·t, Σ w) there; where Σ w > 0 it votes (Σwt/Σw, s) — §4.2. Creases,
+//      borders and layers go where their surface point was (moved with the mesh, projected
+//      with frame f − 1's camera); a silhouette takes that point's motion across itself and
+//      the view's zoom along itself; a suggestive contour stays where it is, moved by the
+//      zoom alone (gather_votes says why);
 //   2. fit: RANSAC per path (ransac_gpu.h) finds each path's direction and the runs of votes
 //      that disagree (merged paths, split there); ρ is not the path's own, as in §4.2, but
 //      one scale for the set carried through the view's zoom, and each path fits its phase φ
@@ -12,9 +15,10 @@
 //   3. splat: every sample writes t = T(s) as a sprite of radius δ,
 //      w = clamp(1 − d/δ, 0, 1), additive, into a float buffer kept for frame f + 1 — §4.1
 //      (the extra channels, Σ w·(c − pixel), place each vote where its average was taken).
-// Steps 2 and 3 run on the device (a compute dispatch; an RGBA32F render target read back)
-// or, on CPU devices, on the host (fit_paths_reference; the splat read at the votes' pixels
-// alone, splat_grid.h): ComputeSite.
+// RANSAC and the splat run on the device (a compute dispatch; an RGBA32F render target read
+// back) or, on CPU devices, on the host (fit_paths_reference; the splat read at the votes'
+// pixels alone, splat_grid.h): ComputeSite. The scale and the phase fit are host code on
+// both.
 // The two comparison policies of the issue: arclength (tiling, T = s·κ / Lmax) and stretch
 // (T = s/L, one texture stretched over the path, no level folding).
 #pragma once
@@ -101,7 +105,7 @@ public:
     CoherenceTracker(const Context& ctx, uint32_t width, uint32_t height)
         : CoherenceTracker(ctx, width, height, ctx.preferred_compute_site()) {}
 
-    // Parameterizes this frame's visible paths (entries for hidden paths stay default) and
+    // Parameterizes this frame's paths (hidden ones get the set's scale and phase 0) and
     // splats them for the next frame. Visible paths shorter than min_stroke_length_px are
     // removed, closed loops may be rotated to start at the seam they
     // inherited, and paths that merged pieces of different earlier paths split (see
@@ -161,7 +165,7 @@ private:
     // Also the view's zoom (ViewZoom::zoom).
     [[nodiscard]] VoteSet gather_votes(const std::vector<ScreenPath>& paths, const CameraMatrices& camera,
                                        const SurfaceFrame& surface, float& zoom) const;
-    // The scale of lines that slide over the surface, carried through the view's zoom.
+    // The set's scale (every path's |ρ|), carried through the view's zoom.
     void update_view_scale(VoteSet& votes, float zoom, const CoherenceParams& params);
     void splat(const std::vector<ScreenPath>& paths, const std::vector<PathParam>& params, float radius,
                GpuTimer* timer);

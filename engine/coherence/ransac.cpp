@@ -118,10 +118,12 @@ std::vector<PathFit> fit_paths_reference(const VoteSet& set, const RansacParams&
 
 PhaseFit fit_phase(std::span<const Vote> votes, float rho, float inlier_px) {
     PhaseFit fit;
-    if (votes.empty()) return fit;
+    if (votes.empty() || !std::isfinite(rho)) return fit;
     std::vector<float> phases;
     phases.reserve(votes.size());
-    for (const Vote& v : votes) phases.push_back(v.t - rho * v.s);
+    for (const Vote& v : votes)
+        if (const float phase = v.t - rho * v.s; std::isfinite(phase)) phases.push_back(phase);
+    if (phases.empty()) return fit;
     std::sort(phases.begin(), phases.end());
     const float width = 2.0f * inlier_px * std::abs(rho);
     size_t best_first = 0, best_count = 0;
