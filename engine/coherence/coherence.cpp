@@ -277,12 +277,9 @@ CoherenceTracker::ViewZoom CoherenceTracker::view_zoom(const std::vector<Carried
     return {change, glm::vec2(at)};
 }
 
-VoteSet CoherenceTracker::gather_votes(const std::vector<ScreenPath>& paths, const CameraMatrices& camera,
-                                       const SurfaceFrame& surface, float& zoom) const {
+VoteSet CoherenceTracker::gather_votes(const std::vector<ScreenPath>& paths, const std::vector<Carried>& carried,
+                                       const ViewZoom& view) const {
     VoteSet set;
-    const std::vector<Carried> carried = carry_back(paths, surface);
-    const ViewZoom view = view_zoom(carried, camera);
-    zoom = view.zoom;
     // Where each sample was a frame earlier; the splat is then read at all those pixels at
     // once (on the host: at them alone, splat_grid.h).
     struct Query {
@@ -295,6 +292,8 @@ VoteSet CoherenceTracker::gather_votes(const std::vector<ScreenPath>& paths, con
         const ScreenPath& path = paths[c.path];
         const ScreenSample& sample = path.samples[c.sample];
         glm::vec3 pixel = c.pixel;
+        // Where the view's zoom about its centre moves the sample (nothing on an orbit).
+        const glm::vec2 zoomed = (sample.pixel - view.centre) * (1.0f / view.zoom - 1.0f);
         if (path.type == LineType::Silhouette) {
             // A contour is not attached to the surface: it slides over it as the view turns,
             // but its motion across itself is its surface point's (the normal image velocity of
@@ -306,7 +305,6 @@ VoteSet CoherenceTracker::gather_votes(const std::vector<ScreenPath>& paths, con
             // motion, and measured worse).
             const glm::vec2 tangent = path_tangent(path, c.sample);
             const glm::vec2 moved = glm::vec2(pixel) - sample.pixel;
-            const glm::vec2 zoomed = (sample.pixel - view.centre) * (1.0f / view.zoom - 1.0f);
             pixel = glm::vec3(sample.pixel + moved + glm::dot(zoomed - moved, tangent) * tangent, pixel.z);
         } else if (path.type == LineType::Suggestive) {
             // A suggestive contour (the zero set of κr) moves over the surface at a speed of
@@ -315,7 +313,7 @@ VoteSet CoherenceTracker::gather_votes(const std::vector<ScreenPath>& paths, con
             // view's zoom. Measured against the across motion (120-frame orbits, 640×480, p90
             // |Δt| against the tiling policy's): a statue scan 0.93 → 0.36, LeePerrySmith
             // 0.22 → 0.14, Suzanne 0.15 → 0.12, FlightHelmet 0.34 → 0.27.
-            pixel = glm::vec3(sample.pixel + (sample.pixel - view.centre) * (1.0f / view.zoom - 1.0f), pixel.z);
+            pixel = glm::vec3(sample.pixel + zoomed, pixel.z);
         }
         if (pixel.z <= 0.0f || pixel.x < 0.0f || pixel.y < 0.0f || pixel.x >= float(width_) || pixel.y >= float(height_))
             continue;
@@ -582,9 +580,10 @@ std::vector<PathParam> CoherenceTracker::update(std::vector<ScreenPath>& paths, 
     std::vector<PathFit> fits;
     VoteSet votes;
     if (params.policy == ParamPolicy::Coherent) {
-        float zoom = 1.0f;
-        votes = gather_votes(paths, camera, surface, zoom);
-        update_view_scale(votes, zoom, params);
+        const std::vector<Carried> carried = carry_back(paths, surface);
+        const ViewZoom view = view_zoom(carried, camera);
+        votes = gather_votes(paths, carried, view);
+        update_view_scale(votes, view.zoom, params);
         for (size_t p = 0; p < paths.size(); ++p) start_loop_at_seam(paths[p], votes, p);
         // RANSAC's fit finds each path's direction along the previous parameterization and the
         // runs of votes that disagree with it (pieces of paths that were apart a frame earlier).

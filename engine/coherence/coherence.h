@@ -162,9 +162,9 @@ private:
         glm::vec2 centre;
     };
     [[nodiscard]] ViewZoom view_zoom(const std::vector<Carried>& carried, const CameraMatrices& camera) const;
-    // Also the view's zoom (ViewZoom::zoom).
-    [[nodiscard]] VoteSet gather_votes(const std::vector<ScreenPath>& paths, const CameraMatrices& camera,
-                                       const SurfaceFrame& surface, float& zoom) const;
+    // The votes of the carried samples, each line type moved as the comments there say.
+    [[nodiscard]] VoteSet gather_votes(const std::vector<ScreenPath>& paths, const std::vector<Carried>& carried,
+                                       const ViewZoom& view) const;
     // The set's scale (every path's |ρ|), carried through the view's zoom.
     void update_view_scale(VoteSet& votes, float zoom, const CoherenceParams& params);
     void splat(const std::vector<ScreenPath>& paths, const std::vector<PathParam>& params, float radius,
