@@ -3,7 +3,8 @@
 // Feature-line extraction, per face (the second of two passes; lines_vertex.comp wrote each
 // vertex's view quantities and sign byte): the corners' bytes decide whether a line can
 // cross the face (most faces: none), then that face's contour, suggestive-contour, crease
-// and border segments are appended with an atomic counter. Mirrors
+// and border segments, and those of rtsc's other lines that the flags turn on
+// (lines_ridges.glsl), are appended with an atomic counter. Mirrors
 // engine/lines/extract_reference.cpp line by line, with `precise` so that no multiply-add
 // is fused and results match the CPU reference (rtsc's rules: docs/research/rtsc-lines.md
 // §1–2).
@@ -22,19 +23,18 @@ layout(std430, binding = 3) buffer Output {
     LineSegment segments[];
 } out_buf;
 layout(std430, binding = 4) readonly buffer Views { VertexView views[]; };
+// Read only for the optional lines that need them (flags).
+layout(std430, binding = 5) readonly buffer HighlightNum { float highlight_num[]; };
+layout(std430, binding = 6) readonly buffer Apparent { ApparentVertex apparent[]; };
 
-layout(push_constant) uniform LinesPush {
-    vec4 eye;        // xyz: eye (world), w: sug_thresh / fs²
-    float fade;      // 0.03 / fs², or 0 without fading
-    uint flags;
-    uint count;      // faces
-    uint pad;
-} pc;
+LINES_PUSH_CONSTANTS
 
 void append(LineSegment s) {
     uint index = atomicAdd(out_buf.count, 1u);
     if (index < out_buf.capacity) out_buf.segments[index] = s;
 }
+
+#include "lines_ridges.glsl"
 
 // rtsc's draw_face_isoline2 from the lone vertex, with the test trimming and fade alpha.
 void face_isoline(uint f, uvec3 corners, vec3 val, vec3 num, vec3 den, bool has_den, float fade, uint type) {
@@ -147,4 +147,24 @@ void main() {
         s.key1 = corners[k];
         append(s);
     }
+
+    // rtsc's other lines (off by default).
+    if ((pc.flags & FLAG_SUGGESTIVE_HIGHLIGHTS) != 0u && (any_sign & SUGGESTIVE_ANY) == SUGGESTIVE_ANY) {
+        vec3 num = vec3(highlight_num[corners[0]], highlight_num[corners[1]], highlight_num[corners[2]]);
+        vec3 den = vec3(v0.ndotv, v1.ndotv, v2.ndotv);
+        bool all_below = true, all_above = true;
+        for (int i = 0; i < 3; ++i) {
+            all_below = all_below && num[i] <= 0.0 && den[i] >= 0.0;
+            all_above = all_above && num[i] >= 0.0 && den[i] <= 0.0;
+        }
+        if (!all_below && !all_above)
+            face_isoline(f, corners, vec3(v0.kr, v1.kr, v2.kr), num, den, true, pc.fade, LINE_SUGGESTIVE_HIGHLIGHT);
+    }
+    bool fade = (pc.flags & FLAG_FADE) != 0u;
+    bool back_facing = v0.ndotv <= 0.0 && v1.ndotv <= 0.0 && v2.ndotv <= 0.0;
+    if ((pc.flags & FLAG_RIDGES) != 0u && !back_facing) ridge_face(f, corners, true, pc.thresholds.x, fade);
+    if ((pc.flags & FLAG_VALLEYS) != 0u && !back_facing) ridge_face(f, corners, false, pc.thresholds.x, fade);
+    if ((pc.flags & FLAG_APPARENT_RIDGES) != 0u) apparent_ridge_face(f, corners, pc.thresholds.y, fade);
+    if ((pc.flags & FLAG_PRINCIPAL_HIGHLIGHTS) != 0u && !back_facing)
+        principal_highlight_face(f, corners, pc.eye.xyz, pc.thresholds.w, fade);
 }

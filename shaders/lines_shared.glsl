@@ -7,13 +7,35 @@
 #define LINE_SUGGESTIVE 1u
 #define LINE_CREASE 2u
 #define LINE_BORDER 3u
+#define LINE_RIDGE 4u
+#define LINE_VALLEY 5u
+#define LINE_APPARENT_RIDGE 6u
+#define LINE_SUGGESTIVE_HIGHLIGHT 7u
+#define LINE_PRINCIPAL_HIGHLIGHT 8u
 #define NO_KEY 0xffffffffu
 
-// Bits of LinesPush.flags
+// Bits of LinesPush.flags: bit t draws LineType t; FLAG_FADE fades rtsc's other lines.
 #define FLAG_SILHOUETTES 1u
 #define FLAG_SUGGESTIVE 2u
 #define FLAG_CREASES 4u
 #define FLAG_BORDERS 8u
+#define FLAG_RIDGES 16u
+#define FLAG_VALLEYS 32u
+#define FLAG_APPARENT_RIDGES 64u
+#define FLAG_SUGGESTIVE_HIGHLIGHTS 128u
+#define FLAG_PRINCIPAL_HIGHLIGHTS 256u
+#define FLAG_FADE 512u
+
+// The push constants of every line extraction pass (LinesPush in extract_gpu.cpp).
+#define LINES_PUSH_CONSTANTS                                                           \
+    layout(push_constant) uniform LinesPush {                                         \
+        vec4 eye;         /* xyz: eye (world), w: sug_thresh / fs² */                  \
+        vec4 thresholds;  /* rv_thresh / fs, ar_thresh / fs², sh_thresh / fs², ph_thresh / fs² */ \
+        float fade;       /* 0.03 / fs², or 0 without fading */                        \
+        uint flags;                                                                    \
+        uint count;       /* vertices or faces */                                      \
+        uint pad;                                                                      \
+    } pc;
 
 struct CurvVertex {
     vec4 position;   // xyz
@@ -29,6 +51,13 @@ struct VertexView {
     float kr;
     float test_num;  // the suggestive test's numerator, threshold subtracted
     uint signs;      // lines_signs.glsl
+};
+
+// Apparent ridges' view-dependent curvature per vertex (engine/lines/ridge_lines.h).
+struct ApparentVertex {
+    float q1;
+    float t1x, t1y;
+    float dt1q1;
 };
 
 struct LineSegment {

@@ -12,14 +12,11 @@ layout(local_size_x = 64) in;
 
 layout(std430, binding = 0) readonly buffer Vertices { CurvVertex vertices[]; };
 layout(std430, binding = 1) writeonly buffer Views { VertexView views[]; };
+// Written only for the optional lines that read them (flags).
+layout(std430, binding = 2) writeonly buffer HighlightNum { float highlight_num[]; };
+layout(std430, binding = 3) writeonly buffer Apparent { ApparentVertex apparent[]; };
 
-layout(push_constant) uniform LinesPush {
-    vec4 eye;        // xyz: eye (world), w: sug_thresh / fs²
-    float fade;
-    uint flags;
-    uint count;      // vertices
-    uint pad;
-} pc;
+LINES_PUSH_CONSTANTS
 
 uint bit(bool on, uint b) { return on ? b : 0u; }
 
@@ -50,4 +47,34 @@ void main() {
                  bit(test_num <= 0.0 && ndotv >= 0.0, SIGN_TEST_BELOW) |
                  bit(test_num >= 0.0 && ndotv <= 0.0, SIGN_TEST_ABOVE) | bit(!(kr <= 0.0), SIGN_KR_NOT_NEGATIVE);
     views[i] = VertexView(ndotv, kr, test_num, signs);
+
+    // Suggestive highlights' test numerator: −num1 − sh_thresh/fs²·n·v (rtsc's shtest_num).
+    if ((pc.flags & FLAG_SUGGESTIVE_HIGHLIGHTS) != 0u) {
+        precise float num_sh = -num1 - pc.thresholds.z * ndotv;
+        highlight_num[i] = num_sh;
+    }
+    // Apparent ridges: q1 and t1 of Q = S + (secθ − 1)·S·ŵŵᵀ (ridge_lines.cpp, apparent_curvature).
+    if ((pc.flags & FLAG_APPARENT_RIDGES) != 0u) {
+        precise float sec_minus_1 = 1.0 / abs(ndotv) - 1.0;
+        precise float uu = u2 * csc2, uw = u * w * csc2, ww = w2 * csc2;
+        precise float q11 = k1 * (1.0 + sec_minus_1 * uu);
+        precise float q12 = k1 * (sec_minus_1 * uw);
+        precise float q21 = k2 * (sec_minus_1 * uw);
+        precise float q22 = k2 * (1.0 + sec_minus_1 * ww);
+        precise float m1 = q11 * q11 + q21 * q21, m12 = q11 * q12 + q21 * q22, m2 = q12 * q12 + q22 * q22;
+        precise float value = 0.5 * (m1 + m2);
+        precise float root = sqrt(m12 * m12 + 0.25 * ((m2 - m1) * (m2 - m1)));
+        if (value > 0.0)
+            value += root;
+        else
+            value -= root;
+        precise vec2 e = vec2(m2 - value, -m12);
+        precise float len = sqrt(e.x * e.x + e.y * e.y);
+        vec2 t1 = vec2(0.0, 1.0);
+        if (len > 0.0) {
+            precise float inv = 1.0 / len;
+            t1 = vec2(e.x * inv, e.y * inv);
+        }
+        apparent[i] = ApparentVertex(value, t1.x, t1.y, 0.0);
+    }
 }

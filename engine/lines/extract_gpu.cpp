@@ -5,6 +5,8 @@
 
 #include "core/error.h"
 #include "lines/extract_reference.h"
+#include "lines/ridge_lines.h"
+#include "lines_apparent_comp.h"
 #include "lines_extract_comp.h"
 #include "lines_vertex_comp.h"
 
@@ -16,18 +18,20 @@ namespace {
 struct CurvVertex {
     glm::vec4 position, normal, pdir1_k1, pdir2_k2, dcurv;
 };
-struct LinesPush {
-    glm::vec4 eye;  // w: sug_thresh / fs²
+struct LinesPush {  // LINES_PUSH_CONSTANTS
+    glm::vec4 eye;         // w: sug_thresh / fs²
+    glm::vec4 thresholds;  // rv_thresh / fs, ar_thresh / fs², sh_thresh / fs², ph_thresh / fs²
     float fade;
     uint32_t flags;
-    uint32_t count;  // vertices (lines_vertex.comp) or faces (lines_extract.comp)
+    uint32_t count;  // vertices (lines_vertex.comp, lines_apparent.comp) or faces (lines_extract.comp)
     uint32_t pad;
 };
 struct VertexView {  // mirrors VertexView in shaders/lines_shared.glsl
     float ndotv, kr, test_num;
     uint32_t signs;
 };
-static_assert(sizeof(LinesPush) == 32);
+static_assert(sizeof(LinesPush) == 48);
+constexpr uint32_t kFlagFade = 512u;  // FLAG_FADE
 constexpr VkDeviceSize kHeaderBytes = 16;  // count, capacity, 2 × pad
 
 }  // namespace
@@ -35,11 +39,15 @@ constexpr VkDeviceSize kHeaderBytes = 16;  // count, capacity, 2 × pad
 LineExtractor::LineExtractor(const Context& ctx)
     : ctx_(&ctx),
       vertex_pipeline_(ctx, {.spirv = LW_SPIRV(lines_vertex_comp_spv),
-                             .storage_buffers = 2,
+                             .storage_buffers = 4,
                              .push_constant_size = sizeof(LinesPush),
                              .name = "lines extract, per vertex"}),
+      apparent_pipeline_(ctx, {.spirv = LW_SPIRV(lines_apparent_comp_spv),
+                               .storage_buffers = 6,
+                               .push_constant_size = sizeof(LinesPush),
+                               .name = "lines extract, apparent ridges per vertex"}),
       pipeline_(ctx, {.spirv = LW_SPIRV(lines_extract_comp_spv),
-                      .storage_buffers = 5,
+                      .storage_buffers = 7,
                       .push_constant_size = sizeof(LinesPush),
                       .name = "lines extract"}) {}
 
@@ -70,8 +78,12 @@ void LineExtractor::set_mesh(const LineMesh& lm) {
     vertices_ = upload_buffer(*ctx_, vertices, usage, "line mesh vertices");
     faces_ = upload_buffer(*ctx_, faces, usage, "line mesh faces");
     face_edges_ = upload_buffer(*ctx_, face_edges, usage, "line mesh face edges");
-    views_ = Buffer(*ctx_, {.size = std::max<VkDeviceSize>(1, vertices.size()) * sizeof(VertexView), .usage = usage,
-                            .name = "line mesh view quantities"});
+    const VkDeviceSize nv = std::max<VkDeviceSize>(1, vertices.size());
+    views_ = Buffer(*ctx_, {.size = nv * sizeof(VertexView), .usage = usage, .name = "line mesh view quantities"});
+    highlight_num_ = Buffer(*ctx_, {.size = nv * sizeof(float), .usage = usage, .name = "suggestive highlight test"});
+    apparent_ = Buffer(*ctx_, {.size = nv * sizeof(ApparentVertex), .usage = usage, .name = "apparent ridge curvature"});
+    vertex_face_offsets_ = upload_buffer(*ctx_, lm.vertex_face_offsets, usage, "line mesh vertex face offsets");
+    vertex_faces_ = upload_buffer(*ctx_, lm.vertex_faces, usage, "line mesh vertex faces");
     vertex_count_ = static_cast<uint32_t>(vertices.size());
     face_count_ = static_cast<uint32_t>(faces.size());
     feature_size_ = lm.feature_size;
@@ -81,10 +93,12 @@ void LineExtractor::set_mesh(const LineMesh& lm) {
 void LineExtractor::record(VkCommandBuffer cmd, const glm::vec3& eye, const LineParams& params, GpuTimer* timer) const {
     if (face_count_ == 0) throw Error("line extraction: no mesh set");
     const ScaledThresholds t = scaled_thresholds(params, feature_size_);
-    const uint32_t flags = (params.silhouettes ? 1u : 0u) | (params.suggestive ? 2u : 0u) |
-                           (params.creases ? 4u : 0u) | (params.borders ? 8u : 0u);
-    const LinesPush vertex_push{glm::vec4(eye, t.sug_thresh), t.fade, flags, vertex_count_, 0u};
-    const LinesPush face_push{glm::vec4(eye, t.sug_thresh), t.fade, flags, face_count_, 0u};
+    uint32_t flags = params.fade ? kFlagFade : 0u;  // FLAG_* of shaders/lines_shared.glsl: bit t for LineType t
+    for (int type = 0; type < kLineTypeCount; ++type)
+        if (line_type_enabled(params, LineType(type))) flags |= 1u << type;
+    const glm::vec4 thresholds(t.rv_thresh, t.ar_thresh, t.sh_thresh, t.ph_thresh);
+    const LinesPush vertex_push{glm::vec4(eye, t.sug_thresh), thresholds, t.fade, flags, vertex_count_, 0u};
+    const LinesPush face_push{glm::vec4(eye, t.sug_thresh), thresholds, t.fade, flags, face_count_, 0u};
     const uint32_t header[4] = {0u, capacity_, 0u, 0u};
     vkCmdUpdateBuffer(cmd, output_.get(), 0, sizeof(header), header);
     record_memory_barrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
@@ -92,11 +106,21 @@ void LineExtractor::record(VkCommandBuffer cmd, const glm::vec3& eye, const Line
                           VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
     if (timer) timer->begin(cmd, "lines extract");
     // Each vertex's quantities once (a vertex has about six faces), then the faces.
-    vertex_pipeline_.dispatch(*ctx_, cmd, {&vertices_, &views_}, &vertex_push, (vertex_count_ + 63) / 64);
-    record_memory_barrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                          VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
-    pipeline_.dispatch(*ctx_, cmd, {&vertices_, &faces_, &face_edges_, &output_, &views_}, &face_push,
-                       (face_count_ + 63) / 64);
+    const auto compute_to_compute = [&] {
+        record_memory_barrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                              VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                              VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+    };
+    vertex_pipeline_.dispatch(*ctx_, cmd, {&vertices_, &views_, &highlight_num_, &apparent_}, &vertex_push,
+                              (vertex_count_ + 63) / 64);
+    compute_to_compute();
+    if (params.apparent_ridges) {  // D_t1 q1 reads the neighbours' q1: a pass of its own
+        apparent_pipeline_.dispatch(*ctx_, cmd, {&vertices_, &views_, &apparent_, &vertex_face_offsets_, &vertex_faces_, &faces_},
+                                    &vertex_push, (vertex_count_ + 63) / 64);
+        compute_to_compute();
+    }
+    pipeline_.dispatch(*ctx_, cmd, {&vertices_, &faces_, &face_edges_, &output_, &views_, &highlight_num_, &apparent_},
+                       &face_push, (face_count_ + 63) / 64);
     if (timer) timer->end(cmd);
     record_memory_barrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                           VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);

@@ -7,7 +7,8 @@
 //
 // Two dispatches, laid out as the host extraction: shaders/lines_vertex.comp computes each
 // vertex's view quantities and sign byte once; shaders/lines_extract.comp runs one
-// invocation per face that reads them. The output buffer starts at a 32nd of the face count
+// invocation per face that reads them. Apparent ridges add shaders/lines_apparent.comp
+// between the two (each vertex's derivative reads its neighbours' curvature). The output buffer starts at a 32nd of the face count
 // and grows (the pass is re-run) when a view needs more.
 #pragma once
 
@@ -44,8 +45,10 @@ private:
     void allocate_output(uint32_t capacity);
 
     const Context* ctx_;
-    ComputePipeline vertex_pipeline_, pipeline_;
+    ComputePipeline vertex_pipeline_, apparent_pipeline_, pipeline_;
     Buffer vertices_, faces_, face_edges_, views_;
+    Buffer highlight_num_, apparent_;                 // per vertex, for rtsc's optional lines
+    Buffer vertex_face_offsets_, vertex_faces_;      // LineMesh's, for apparent ridges
     uint32_t vertex_count_ = 0;
     Buffer output_;           // header (count, capacity) + segments, Device memory
     Buffer readback_;         // same size, Readback memory

@@ -20,7 +20,8 @@ namespace lw {
 
 ScaledThresholds scaled_thresholds(const LineParams& params, float feature_size) {
     const float fs2 = feature_size * feature_size;
-    return {params.sug_thresh / fs2, params.fade ? params.fade_thresh / fs2 : 0.0f};
+    return {params.sug_thresh / fs2,      params.fade ? params.fade_thresh / fs2 : 0.0f, params.rv_thresh / feature_size,
+            params.ar_thresh / fs2,       params.sh_thresh / fs2,                         params.ph_thresh / fs2};
 }
 
 namespace {
@@ -52,6 +53,39 @@ __attribute__((target_clones("avx2", "default"))) void vertex_pass(const LineVer
         test_num[i] = v.test_num;
         signs[i] = sign_byte(v.ndotv, v.kr, v.test_num);
     }
+}
+
+// The per-vertex values only rtsc's optional lines read, over vertices [begin, end):
+// suggestive highlights' test numerator −tanθ·DwKr·cosθ − sh_thresh/fs²·n·v (rtsc-lines.md
+// §1), and apparent ridges' q1 and t1 (their derivative needs every vertex's: a second pass).
+void optional_vertex_pass(const LineMesh& lm, const glm::vec3& eye, const LineParams& params,
+                          const ScaledThresholds& thresholds, size_t begin, size_t end, ExtractWorkspace& ws) {
+    if (params.suggestive_highlights) {
+        const LineVertexArrays& va = lm.vertex_arrays;
+        using F = LineVertexArrays::Field;
+        const auto at = [&](F f, size_t i) { return va.field(f)[i]; };
+        for (size_t i = begin; i < end; ++i) {
+            // With no threshold the suggestive test's numerator is rtsc's num1 itself.
+            const VertexView v = vertex_view({at(F::Px, i), at(F::Py, i), at(F::Pz, i)}, {at(F::Nx, i), at(F::Ny, i), at(F::Nz, i)},
+                                             {at(F::E1x, i), at(F::E1y, i), at(F::E1z, i)},
+                                             {at(F::E2x, i), at(F::E2y, i), at(F::E2z, i)}, at(F::K1, i), at(F::K2, i),
+                                             {at(F::C0, i), at(F::C1, i), at(F::C2, i), at(F::C3, i)}, eye, 0.0f);
+            ws.highlight_num[i] = -v.test_num - thresholds.sh_thresh * v.ndotv;
+        }
+    }
+    if (params.apparent_ridges) apparent_curvature(lm, eye, ws.ndotv.data(), begin, end, ws.apparent.data());
+}
+
+// rtsc's face tests for the suggestive highlight, as for the suggestive contour
+// (rtsc-lines.md §2.1–2.2) with its own test: kr changes sign, not all back-facing, and
+// the test is not failed at all three corners.
+bool highlight_candidate(const glm::uvec3& c, const ExtractWorkspace& ws) {
+    const unsigned any = ws.signs[c.x] | ws.signs[c.y] | ws.signs[c.z];
+    constexpr unsigned kNeeded = SIGN_KR_POSITIVE | SIGN_KR_NEGATIVE | SIGN_NOT_BACK_FACING;
+    if ((any & kNeeded) != kNeeded) return false;
+    const auto below = [&](uint32_t v) { return ws.highlight_num[v] <= 0.0f && ws.ndotv[v] >= 0.0f; };
+    const auto above = [&](uint32_t v) { return ws.highlight_num[v] >= 0.0f && ws.ndotv[v] <= 0.0f; };
+    return !(below(c.x) && below(c.y) && below(c.z)) && !(above(c.x) && above(c.y) && above(c.z));
 }
 
 // One face's isoline, rtsc's draw_face_isoline + draw_face_isoline2 (rtsc-lines.md §2.2–2.3):
@@ -174,8 +208,9 @@ constexpr size_t kMinFacesPerThread = 8192;
 // may cross, from the sign bytes alone (face_scan.h); then each list's faces, one line type
 // at a time, so that the branches inside an isoline see one kind of face. Segments come out
 // by type, each type in face order (chaining orders them canonically: chaining.h).
-void face_pass(const LineMesh& lm, const ExtractWorkspace& ws, const LineParams& params, float fade, uint32_t begin,
-               uint32_t end, std::vector<LineSegment>& out) {
+void face_pass(const LineMesh& lm, const ExtractWorkspace& ws, const glm::vec3& eye, const LineParams& params,
+               const ScaledThresholds& t, uint32_t begin, uint32_t end, std::vector<LineSegment>& out) {
+    const float fade = t.fade;
     const glm::uvec3* faces = lm.mesh.faces.data();
     const uint32_t* feature_masks = lm.feature_edges.data();
     const bool features = params.creases || params.borders;
@@ -192,6 +227,18 @@ void face_pass(const LineMesh& lm, const ExtractWorkspace& ws, const LineParams&
     if (features)
         for (uint32_t f = begin; f < end; ++f)
             if (feature_masks[f]) feature_edges(lm, f, feature_masks[f], params, out);
+    // rtsc's other lines (off by default): no byte scan, each face tests itself.
+    if (params.suggestive_highlights)
+        for (uint32_t f = begin; f < end; ++f)
+            if (highlight_candidate(faces[f], ws))
+                face_isoline<true>(lm, f, kr, ws.highlight_num.data(), ndotv, fade, LineType::SuggestiveHighlight, out);
+    for (const bool ridge : {true, false})
+        if (ridge ? params.ridges : params.valleys)
+            for (uint32_t f = begin; f < end; ++f) ridge_face(lm, f, ndotv, ridge, t.rv_thresh, params.fade, out);
+    if (params.apparent_ridges)
+        for (uint32_t f = begin; f < end; ++f) apparent_ridge_face(lm, f, ws.apparent.data(), t.ar_thresh, params.fade, out);
+    if (params.principal_highlights)
+        for (uint32_t f = begin; f < end; ++f) principal_highlight_face(lm, f, eye, ndotv, t.ph_thresh, params.fade, out);
 }
 
 }  // namespace
@@ -205,15 +252,19 @@ void extract_lines_reference(const LineMesh& lm, const glm::vec3& eye, const Lin
     ws.kr.resize(nv);
     ws.test_num.resize(nv);
     ws.signs.resize(nv + kSignPadding);
+    if (params.suggestive_highlights) ws.highlight_num.resize(nv);
+    if (params.apparent_ridges) ws.apparent.resize(nv);
     const size_t faces = lm.mesh.faces.size();
     const size_t blocks = (faces + kBlockFaces - 1) / kBlockFaces;
     threads = std::min(threads, std::max<size_t>(1, faces / kMinFacesPerThread));
     const auto face_block = [&](size_t b, std::vector<LineSegment>& into) {
-        face_pass(lm, ws, params, thresholds.fade, uint32_t(b * kBlockFaces),
-                  uint32_t(std::min(faces, (b + 1) * kBlockFaces)), into);
+        face_pass(lm, ws, eye, params, thresholds, uint32_t(b * kBlockFaces), uint32_t(std::min(faces, (b + 1) * kBlockFaces)),
+                  into);
     };
     if (threads == 1) {  // straight into the output
         vertex_pass(lm.vertex_arrays, eye, thresholds.sug_thresh, 0, nv, ws);
+        optional_vertex_pass(lm, eye, params, thresholds, 0, nv, ws);
+        if (params.apparent_ridges) apparent_derivative(lm, ws.ndotv.data(), 0, nv, ws.apparent.data());
         out.clear();
         for (size_t b = 0; b < blocks; ++b) face_block(b, out);
         return;
@@ -225,8 +276,14 @@ void extract_lines_reference(const LineMesh& lm, const glm::vec3& eye, const Lin
     if (ws.blocks.size() < blocks) ws.blocks.resize(blocks);
     std::atomic<size_t> next_block{0};
     parallel_team(threads, [&](size_t member, size_t members, TeamSync& sync) {
-        vertex_pass(lm.vertex_arrays, eye, thresholds.sug_thresh, nv * member / members, nv * (member + 1) / members, ws);
+        const size_t first = nv * member / members, last = nv * (member + 1) / members;
+        vertex_pass(lm.vertex_arrays, eye, thresholds.sug_thresh, first, last, ws);
+        optional_vertex_pass(lm, eye, params, thresholds, first, last, ws);
         sync.arrive_and_wait();
+        if (params.apparent_ridges) {  // reads the neighbours' q1
+            apparent_derivative(lm, ws.ndotv.data(), first, last, ws.apparent.data());
+            sync.arrive_and_wait();
+        }
         for (size_t b = next_block.fetch_add(1); b < blocks; b = next_block.fetch_add(1)) {
             // Filled as a local: neighbouring blocks' vectors share cache lines, and every
             // append writes the vector's end.

@@ -2,8 +2,10 @@
 //
 // Input:  a `LineMesh`, the eye (world space, same as the mesh), `LineParams`.
 // Output: `LineSegment`s: per face, the contour (zero set of n·v kept where kr ≥ 0), the
-//         suggestive contour (zero set of kr where tanθ·DwKr > sug_thresh/fs², faded), and
-//         the creases and borders the face owns. Rules and their order follow rtsc's
+//         suggestive contour (zero set of kr where tanθ·DwKr > sug_thresh/fs², faded), the
+//         creases and borders the face owns, and those of rtsc's other lines that
+//         `LineParams` turns on: suggestive highlights (zero set of kr where
+//         −tanθ·DwKr > sh_thresh/fs², here) and the ridge-like lines (ridge_lines.h). Rules and their order follow rtsc's
 //         draw_face_isoline (docs/research/rtsc-lines.md §2) so that our lines match rtsc's.
 //
 // The GPU pass (extract_gpu.h, shaders/lines_extract.comp) must produce the same segments;
@@ -17,6 +19,7 @@
 
 #include "lines/line_mesh.h"
 #include "lines/line_types.h"
+#include "lines/ridge_lines.h"
 
 namespace lw {
 
@@ -26,13 +29,15 @@ namespace lw {
 struct ExtractWorkspace {
     std::vector<float> ndotv, kr, test_num;
     std::vector<uint8_t> signs;
+    std::vector<float> highlight_num;        // suggestive highlights' test numerator (when drawn)
+    std::vector<ApparentVertex> apparent;    // apparent ridges' view-dependent curvature (when drawn)
     std::vector<std::vector<LineSegment>> blocks;
     std::vector<size_t> offsets;
 };
 
 // Fills `out` (its capacity reused). Segments come out per block of 1024 faces, in order;
-// within a block by type (suggestive contours, contours, then creases and borders), each
-// type in face order; chaining does not depend on the order. `threads` > 1 runs vertex
+// within a block by type (suggestive contours, contours, creases and borders, then rtsc's
+// other lines), each type in face order; chaining does not depend on the order. `threads` > 1 runs vertex
 // and face blocks on several threads (core/parallel.h) and concatenates the face blocks'
 // segments in block order: the same segments in the same order whatever the count. Frames extract on
 // one thread (1, the default): the other core is lavapipe's while it draws the surface
@@ -42,10 +47,12 @@ void extract_lines_reference(const LineMesh& mesh, const glm::vec3& eye, const L
 [[nodiscard]] std::vector<LineSegment> extract_lines_reference(const LineMesh& mesh, const glm::vec3& eye,
                                                                const LineParams& params, size_t threads = 1);
 
-// The scaled thresholds both implementations use: sug_thresh/fs² and (fade on) 0.03/fs².
+// The scaled thresholds both implementations use, as rtsc scales them: sug_thresh/fs²,
+// (fade on) 0.03/fs², rv_thresh/fs, ar_thresh/fs², sh_thresh/fs², ph_thresh/fs².
 struct ScaledThresholds {
     float sug_thresh;
     float fade;
+    float rv_thresh, ar_thresh, sh_thresh, ph_thresh;
 };
 [[nodiscard]] ScaledThresholds scaled_thresholds(const LineParams& params, float feature_size);
 

@@ -36,6 +36,7 @@ LineMesh build_line_mesh(const TriangleMesh& mesh, float crease_angle_deg) {
     line_mesh.feature_size = feature_size(line_mesh.mesh, line_mesh.curvature);
     line_mesh.feature_edges = feature_edge_masks(line_mesh.mesh, crease_angle_deg);
     line_mesh.vertex_arrays = line_vertex_arrays(line_mesh.mesh, line_mesh.curvature);
+    vertex_face_lists(line_mesh.mesh, line_mesh.vertex_face_offsets, line_mesh.vertex_faces);
     return line_mesh;
 }
 
@@ -43,6 +44,18 @@ void pose_line_mesh(LineMesh& line_mesh, const TriangleMesh& posed) {
     update_positions(line_mesh.mesh, posed);
     line_mesh.curvature = compute_curvature(line_mesh.mesh);
     line_mesh.vertex_arrays = line_vertex_arrays(line_mesh.mesh, line_mesh.curvature);
+}
+
+void vertex_face_lists(const WeldedMesh& mesh, std::vector<uint32_t>& offsets, std::vector<uint32_t>& faces) {
+    // Counting sort by vertex: a face index goes to each corner's list in face order.
+    offsets.assign(mesh.positions.size() + 1, 0u);
+    for (const glm::uvec3& f : mesh.faces)
+        for (int i = 0; i < 3; ++i) ++offsets[f[i] + 1];
+    for (size_t v = 0; v < mesh.positions.size(); ++v) offsets[v + 1] += offsets[v];
+    faces.resize(offsets.back());
+    std::vector<uint32_t> fill(offsets.begin(), offsets.end() - 1);
+    for (size_t f = 0; f < mesh.faces.size(); ++f)
+        for (int i = 0; i < 3; ++i) faces[fill[mesh.faces[f][i]]++] = uint32_t(f);
 }
 
 LineVertexArrays line_vertex_arrays(const WeldedMesh& mesh, const SurfaceCurvature& curvature) {

@@ -41,6 +41,9 @@ struct LineMesh {
     float feature_size = 0.0f;
     std::vector<uint32_t> feature_edges;
     LineVertexArrays vertex_arrays;  // of mesh.positions and curvature, kept in step with them
+    // The faces around each vertex, in face order (apparent ridges, ridge_lines.h): those of
+    // vertex v are vertex_faces[vertex_face_offsets[v] .. vertex_face_offsets[v + 1]).
+    std::vector<uint32_t> vertex_face_offsets, vertex_faces;
 };
 
 [[nodiscard]] LineMesh build_line_mesh(const TriangleMesh& mesh, float crease_angle_deg);
@@ -51,6 +54,9 @@ struct LineMesh {
 void pose_line_mesh(LineMesh& line_mesh, const TriangleMesh& posed);
 
 [[nodiscard]] LineVertexArrays line_vertex_arrays(const WeldedMesh& mesh, const SurfaceCurvature& curvature);
+
+// The faces around each vertex, in face order, as `LineMesh::vertex_faces` holds them.
+void vertex_face_lists(const WeldedMesh& mesh, std::vector<uint32_t>& offsets, std::vector<uint32_t>& faces);
 
 // Recomputes the feature-edge masks for another crease angle.
 [[nodiscard]] std::vector<uint32_t> feature_edge_masks(const WeldedMesh& mesh, float crease_angle_deg);

@@ -138,7 +138,7 @@ LineSelection read_selection(ObjectReader& set, const std::filesystem::path& fil
         select.types = 0;
         for (const std::string& name : strings(r, "types")) {
             const std::optional<LineType> type = line_type_from_name(name);
-            if (!type) r.fail_key("types", "unknown line type \"" + name + "\" (silhouette, suggestive, crease, border)");
+            if (!type) r.fail_key("types", "unknown line type \"" + name + "\" (" + line_type_names() + ")");
             select.types |= 1u << uint32_t(*type);
         }
         if (select.types == 0) r.fail_key("types", "selects no line type");

@@ -132,7 +132,9 @@ AnimationDesc read_animation(ObjectReader& parent, const std::filesystem::path& 
     return desc;
 }
 
-LineStyle read_line_type(ObjectReader& lines, LineType type, const std::filesystem::path& file, LinesDesc& desc) {
+// `ridge_threshold`: lines.ridge gave a threshold (lines.valley may not give another).
+LineStyle read_line_type(ObjectReader& lines, LineType type, const std::filesystem::path& file, LinesDesc& desc,
+                         bool& ridge_threshold) {
     const std::string name = line_type_name(type);
     ObjectReader r(lines.at(name), "lines." + name, file);
     LineStyle style = desc.styles[static_cast<size_t>(type)];
@@ -147,18 +149,19 @@ LineStyle read_line_type(ObjectReader& lines, LineType type, const std::filesyst
     if (r.has("ribbon_scale")) style.ribbon_scale = static_cast<float>(r.number("ribbon_scale", 1.0, 4096.0));
     if (!style.ribbon.empty() && !style.slam.empty())
         r.fail_key("ribbon", "a line type is drawn with a SLAM or a ribbon, not both");
-    if (type == LineType::Suggestive) {
-        if (r.has("threshold")) p.sug_thresh = static_cast<float>(r.number("threshold", 0.0, 10.0));
-        if (r.has("fade")) p.fade = r.boolean("fade");
+    if (float* threshold = line_type_threshold(p, type); threshold && r.has("threshold")) {
+        const float value = static_cast<float>(r.number("threshold", 0.0, 10.0));
+        // Ridges and valleys share rtsc's one rv_thresh.
+        if (type == LineType::Valley && ridge_threshold && value != *threshold)
+            r.fail_key("threshold", "ridges and valleys share one threshold (rtsc's rv_thresh); lines.ridge gives " +
+                                        std::to_string(*threshold));
+        ridge_threshold = ridge_threshold || type == LineType::Ridge;
+        *threshold = value;
     }
+    if (type == LineType::Suggestive && r.has("fade")) p.fade = r.boolean("fade");
     if (type == LineType::Crease && r.has("angle")) p.crease_angle_deg = static_cast<float>(r.number("angle", 0.0, 180.0));
     r.reject_unknown();
-    switch (type) {
-        case LineType::Silhouette: p.silhouettes = enabled; break;
-        case LineType::Suggestive: p.suggestive = enabled; break;
-        case LineType::Crease: p.creases = enabled; break;
-        case LineType::Border: p.borders = enabled; break;
-    }
+    set_line_type_enabled(p, type, enabled);
     return style;
 }
 
@@ -170,9 +173,10 @@ LinesDesc read_lines(ObjectReader& parent, const std::filesystem::path& file) {
         return desc;
     }
     ObjectReader r(v, "lines", file);
+    bool ridge_threshold = false;
     for (int t = 0; t < kLineTypeCount; ++t) {
         const LineType type = static_cast<LineType>(t);
-        if (r.has(line_type_name(type))) desc.styles[size_t(t)] = read_line_type(r, type, file, desc);
+        if (r.has(line_type_name(type))) desc.styles[size_t(t)] = read_line_type(r, type, file, desc, ridge_threshold);
     }
     if (r.has("hidden")) {
         const std::string h = r.string_of("hidden", {"none", "dashed", "faint"});

@@ -162,10 +162,8 @@ std::string scene_json(const SceneDesc& desc, const ViewCamera& camera, const st
             if (s.taper_px > 0.0f) entry["taper"] = round6(s.taper_px);
             if (!s.ribbon.empty()) entry["ribbon"] = relative_to(s.ribbon, dest_dir);
             if (s.ribbon_scale > 0.0f) entry["ribbon_scale"] = round6(s.ribbon_scale);
-            if (type == LineType::Suggestive) {
-                entry["threshold"] = round6(lines.params.sug_thresh);
-                entry["fade"] = lines.params.fade;
-            }
+            if (const float* threshold = line_type_threshold(lines.params, type)) entry["threshold"] = round6(*threshold);
+            if (type == LineType::Suggestive) entry["fade"] = lines.params.fade;
             if (type == LineType::Crease) entry["angle"] = round6(lines.params.crease_angle_deg);
             l[line_type_name(type)] = entry;
         }

@@ -25,7 +25,7 @@ enum class ParamPolicy { Coherent, Arclength, Stretch };
 enum class Visibility { Visible, Hidden, Any };
 
 struct LineSelection {
-    uint32_t types = (1u << kLineTypeCount) - 1;  // bit (1 << LineType): the types selected
+    uint32_t types = kDefaultLineTypes;  // bit (1 << LineType): the types selected (default: those drawn by default)
     Visibility visibility = Visibility::Visible;
     std::vector<std::string> models;     // model file names (as in the scene's "model"); empty: all
     std::vector<std::string> materials;  // glTF material names; empty: all

@@ -6,16 +6,35 @@
 
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <string_view>
 
 namespace lw {
 
-enum class LineType : uint32_t { Silhouette = 0, Suggestive = 1, Crease = 2, Border = 3 };
-constexpr int kLineTypeCount = 4;
+// The first four are drawn by default; the rest are rtsc's other lines, off by default as in
+// rtsc (docs/research/rtsc-lines.md §6). The numbers are shared with the GPU passes
+// (shaders/lines_shared.glsl) and written in path dumps: append, never renumber.
+enum class LineType : uint32_t {
+    Silhouette = 0,
+    Suggestive = 1,
+    Crease = 2,
+    Border = 3,
+    Ridge = 4,
+    Valley = 5,
+    ApparentRidge = 6,
+    SuggestiveHighlight = 7,
+    PrincipalHighlight = 8,
+};
+constexpr int kLineTypeCount = 9;
 
-// "silhouette", "suggestive", "crease", "border": SVG group ids and scene-file keys.
+// The types a line set selects when it does not say: those drawn by default.
+constexpr uint32_t kDefaultLineTypes = 0xfu;
+
+// SVG group ids, scene-file keys and `--lines` names.
 inline const char* line_type_name(LineType type) {
-    constexpr const char* names[kLineTypeCount] = {"silhouette", "suggestive", "crease", "border"};
+    constexpr const char* names[kLineTypeCount] = {"silhouette",     "suggestive",           "crease",
+                                                   "border",         "ridge",                "valley",
+                                                   "apparent_ridge", "suggestive_highlight", "principal_highlight"};
     return names[static_cast<uint32_t>(type) % kLineTypeCount];
 }
 
@@ -25,37 +44,73 @@ inline std::optional<LineType> line_type_from_name(std::string_view name) {
     return std::nullopt;
 }
 
+// "silhouette, suggestive, ..., principal_highlight", for error messages.
+inline std::string line_type_names() {
+    std::string list;
+    for (int t = 0; t < kLineTypeCount; ++t) list += std::string(t ? ", " : "") + line_type_name(LineType(t));
+    return list;
+}
+
 // Thresholds and switches of the feature-line extraction, as rtsc defines them
-// (DESIGN.md "Line extraction as rtsc does it"; docs/research/rtsc-lines.md).
+// (DESIGN.md "Line extraction as rtsc does it"; docs/research/rtsc-lines.md). Every
+// threshold is rtsc's, scaled by its feature size fs as rtsc scales it.
 struct LineParams {
     bool silhouettes = true;
     bool suggestive = true;
     bool creases = true;
     bool borders = true;
+    bool ridges = false;
+    bool valleys = false;
+    bool apparent_ridges = false;
+    bool suggestive_highlights = false;
+    bool principal_highlights = false;
     float sug_thresh = 0.01f;        // tanθ·DwKr threshold, scaled by 1 / feature_size²
-    bool fade = true;                // fade suggestive contours in as the test grows
-    float fade_thresh = 0.03f;       // alpha = t / (t + fade_thresh / fs²)
+    bool fade = true;                // fade lines in as their test grows (rtsc's draw_faded)
+    float fade_thresh = 0.03f;       // alpha = t / (t + fade_thresh / fs²) (suggestive contours and highlights)
     float crease_angle_deg = 45.0f;  // creases where face normals turn by more than this
+    float rv_thresh = 0.1f;          // ridges and valleys: |k1| above rv_thresh / fs
+    float ar_thresh = 0.1f;          // apparent ridges: view-dependent q1 above ar_thresh / fs²
+    float sh_thresh = 0.02f;         // suggestive highlights: −tanθ·DwKr above sh_thresh / fs²
+    float ph_thresh = 0.04f;         // principal highlights: (k1² − k2²)·n·v above ph_thresh / fs²
 };
 
-inline bool line_type_enabled(const LineParams& p, LineType type) {
+// The switch of one type in `p` (const or not).
+template <class Params>
+auto line_type_switch(Params& p, LineType type) -> decltype(&p.silhouettes) {
     switch (type) {
-        case LineType::Silhouette: return p.silhouettes;
-        case LineType::Suggestive: return p.suggestive;
-        case LineType::Crease: return p.creases;
-        case LineType::Border: return p.borders;
+        case LineType::Silhouette: return &p.silhouettes;
+        case LineType::Suggestive: return &p.suggestive;
+        case LineType::Crease: return &p.creases;
+        case LineType::Border: return &p.borders;
+        case LineType::Ridge: return &p.ridges;
+        case LineType::Valley: return &p.valleys;
+        case LineType::ApparentRidge: return &p.apparent_ridges;
+        case LineType::SuggestiveHighlight: return &p.suggestive_highlights;
+        case LineType::PrincipalHighlight: return &p.principal_highlights;
     }
-    return false;
+    return &p.silhouettes;  // unreachable: every enumerator is listed
 }
 
-inline void set_line_type_enabled(LineParams& p, LineType type, bool on) {
+// The field a type's scene key "threshold" sets; none (nullptr) for silhouettes, creases
+// and borders. Ridges and valleys share rtsc's one rv_thresh.
+template <class Params>
+auto line_type_threshold(Params& p, LineType type) -> decltype(&p.sug_thresh) {
     switch (type) {
-        case LineType::Silhouette: p.silhouettes = on; break;
-        case LineType::Suggestive: p.suggestive = on; break;
-        case LineType::Crease: p.creases = on; break;
-        case LineType::Border: p.borders = on; break;
+        case LineType::Suggestive: return &p.sug_thresh;
+        case LineType::Ridge:
+        case LineType::Valley: return &p.rv_thresh;
+        case LineType::ApparentRidge: return &p.ar_thresh;
+        case LineType::SuggestiveHighlight: return &p.sh_thresh;
+        case LineType::PrincipalHighlight: return &p.ph_thresh;
+        default: return nullptr;
     }
 }
+
+inline bool line_type_enabled(const LineParams& p, LineType type) {
+    return *line_type_switch(p, type);
+}
+
+inline void set_line_type_enabled(LineParams& p, LineType type, bool on) { *line_type_switch(p, type) = on; }
 
 inline void disable_line_type(LineParams& p, LineType type) { set_line_type_enabled(p, type, false); }
 

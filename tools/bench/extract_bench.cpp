@@ -34,7 +34,7 @@ LineParams types_flag(const std::string& types) {
     std::stringstream list(types);
     for (std::string name; std::getline(list, name, ',');) {
         const std::optional<LineType> type = line_type_from_name(name);
-        if (!type) throw usage_error("--types: unknown line type \"" + name + "\" (silhouette, suggestive, crease, border)");
+        if (!type) throw usage_error("--types: unknown line type \"" + name + "\" (" + line_type_names() + ")");
         set_line_type_enabled(params, *type, true);
     }
     return params;

@@ -61,14 +61,7 @@ const char* policy_name(ParamPolicy policy) {
 
 namespace {
 
-void toggle_type(LineParams& p, LineType type) {
-    switch (type) {
-        case LineType::Silhouette: p.silhouettes = !p.silhouettes; break;
-        case LineType::Suggestive: p.suggestive = !p.suggestive; break;
-        case LineType::Crease: p.creases = !p.creases; break;
-        case LineType::Border: p.borders = !p.borders; break;
-    }
-}
+void toggle_type(LineParams& p, LineType type) { set_line_type_enabled(p, type, !line_type_enabled(p, type)); }
 
 void toggle_strokes(ViewerState& s, size_t set) {
     if (set >= s.has_slam.size() || !s.has_slam[set]) {
@@ -83,13 +76,7 @@ void toggle_strokes(ViewerState& s, size_t set) {
 // A line set's switch: the shorthand's is its type's, an explicit set's its "enabled".
 bool* set_switch(LinesDesc& lines, size_t set) {
     if (!lines.sets.empty()) return &lines.sets[set].enabled;
-    switch (LineType(set)) {
-        case LineType::Silhouette: return &lines.params.silhouettes;
-        case LineType::Suggestive: return &lines.params.suggestive;
-        case LineType::Crease: return &lines.params.creases;
-        case LineType::Border: return &lines.params.borders;
-    }
-    return nullptr;
+    return set < size_t(kLineTypeCount) ? line_type_switch(lines.params, LineType(set)) : nullptr;
 }
 
 void line_set_controls(ViewerState& s, size_t i) {
@@ -212,8 +199,23 @@ void draw_panel(ViewerState& s) {
             ImGui::Checkbox("creases (c)", &lines.params.creases);
             ImGui::SameLine(170);
             ImGui::Checkbox("borders (b)", &lines.params.borders);
+            // rtsc's other lines (off by default, as in rtsc).
+            ImGui::Checkbox("ridges", &lines.params.ridges);
+            ImGui::SameLine(170);
+            ImGui::Checkbox("valleys", &lines.params.valleys);
+            ImGui::Checkbox("apparent ridges", &lines.params.apparent_ridges);
+            ImGui::Checkbox("sugg. highlights", &lines.params.suggestive_highlights);
+            ImGui::SameLine(170);
+            ImGui::Checkbox("princ. highlights", &lines.params.principal_highlights);
         }
         ImGui::SliderFloat("suggestive thr.", &lines.params.sug_thresh, 0.0f, 0.2f, "%.3f");
+        if (lines.params.ridges || lines.params.valleys)
+            ImGui::SliderFloat("ridge/valley thr.", &lines.params.rv_thresh, 0.0f, 1.0f, "%.3f");
+        if (lines.params.apparent_ridges) ImGui::SliderFloat("apparent ridge thr.", &lines.params.ar_thresh, 0.0f, 1.0f, "%.3f");
+        if (lines.params.suggestive_highlights)
+            ImGui::SliderFloat("sugg. highlight thr.", &lines.params.sh_thresh, 0.0f, 0.2f, "%.3f");
+        if (lines.params.principal_highlights)
+            ImGui::SliderFloat("princ. highlight thr.", &lines.params.ph_thresh, 0.0f, 0.4f, "%.3f");
         ImGui::SliderFloat("crease angle", &lines.params.crease_angle_deg, 1.0f, 179.0f, "%.0f°");
         if (ImGui::IsItemDeactivatedAfterEdit()) s.crease_changed = true;
         ImGui::SliderFloat("sample spacing px", &lines.sample_spacing_px, 0.5f, 16.0f, "%.1f");

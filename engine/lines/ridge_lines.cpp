@@ -1,0 +1,264 @@
+// Compiled with -ffp-contract=off -fno-math-errno (CMakeLists.txt): see ridge_lines.h.
+// Each expression keeps rtsc's order of operations (docs/research/rtsc-lines.md §6), so
+// that borderline faces decide as rtsc's do and the GPU (`precise`) gets the same bits.
+#include "lines/ridge_lines.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace lw {
+
+namespace {
+
+float dot3(const glm::vec3& a, const glm::vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+
+// trimesh2's in-place normalize: times 1/length; (0, …, 0, 1) for a zero or NaN length.
+glm::vec3 unit(glm::vec3 v) {
+    const float length = std::sqrt(dot3(v, v));
+    if (!(length > 0.0f)) return {0.0f, 0.0f, 1.0f};
+    const float inv = 1.0f / length;
+    return {v.x * inv, v.y * inv, v.z * inv};
+}
+
+// One ridge-like segment, rtsc's draw_segment_ridge / compute_segment_app_ridge: with the
+// face's corners a = r, b = r + 1, c = r + 2 (rtsc's v0, v1, v2), the line crosses edge a–b
+// where `e` changes sign (weights |e|) and goes on to edge b–c, or to the face's centre;
+// the strength `k` is interpolated with the same weights, less `thresh`, and a piece
+// below it at both ends is dropped. `tmax` (apparent ridges): the test of Judd et al.'s
+// Fig. 6, both sides' directions of increase point at the segment.
+void ridge_segment(const LineMesh& lm, uint32_t f, int r, const float* e, const float* k, float thresh, bool to_center,
+                   bool fade, const glm::vec3* tmax, LineType type, std::vector<LineSegment>& out) {
+    const glm::uvec3 corner = lm.mesh.faces[f];
+    const int a = r, b = (r + 1) % 3, c = (r + 2) % 3;
+    const glm::vec3 xa = lm.mesh.positions[corner[a]], xb = lm.mesh.positions[corner[b]], xc = lm.mesh.positions[corner[c]];
+    const float w10 = std::fabs(e[a]) / (std::fabs(e[a]) + std::fabs(e[b]));
+    const float w01 = 1.0f - w10;
+    const glm::vec3 p01 = w01 * xa + w10 * xb;
+    float k01 = std::fabs(w01 * k[a] + w10 * k[b]);
+    glm::vec4 bary01(0.0f), bary12(0.0f);
+    bary01[a] = w01;
+    bary01[b] = w10;
+    glm::vec3 p12;
+    float k12;
+    uint32_t key12;
+    if (to_center) {
+        p12 = (xa + xb + xc) / 3.0f;
+        k12 = std::fabs(k[a] + k[b] + k[c]) / 3.0f;
+        bary12 = glm::vec4(1.0f / 3.0f, 1.0f / 3.0f, 1.0f / 3.0f, 0.0f);
+        key12 = kNoKey;
+    } else {
+        const float w21 = std::fabs(e[b]) / (std::fabs(e[b]) + std::fabs(e[c]));
+        const float w12 = 1.0f - w21;
+        p12 = w12 * xb + w21 * xc;
+        k12 = std::fabs(w12 * k[b] + w21 * k[c]);
+        bary12[b] = w12;
+        bary12[c] = w21;
+        key12 = uint32_t(lm.mesh.face_edges[f][a]);
+    }
+    // Where e is exactly 0 at both ends of an edge (a symmetric mesh seen symmetrically) the
+    // weight is 0/0: rtsc hands GL a NaN vertex, which draws nothing; so do we.
+    if (!std::isfinite(p01.x + p01.y + p01.z + p12.x + p12.y + p12.z)) return;
+    k01 -= thresh;
+    if (k01 < 0.0f) k01 = 0.0f;
+    k12 -= thresh;
+    if (k12 < 0.0f) k12 = 0.0f;
+    if (k01 == 0.0f && k12 == 0.0f) return;
+    if (tmax) {
+        // perp points from the segment towards b, whichever way the face winds.
+        const glm::vec3 normal = 0.5f * glm::cross(xb - xa, xc - xa);
+        const glm::vec3 perp = glm::cross(normal, p01 - p12);
+        if (dot3(tmax[a], perp) <= 0.0f || dot3(tmax[b], perp) >= 0.0f || dot3(tmax[c], perp) <= 0.0f) return;
+    }
+    float alpha01 = 1.0f, alpha12 = 1.0f;
+    if (fade) {
+        alpha01 = k01 / (k01 + thresh);
+        alpha12 = k12 / (k12 + thresh);
+    }
+    out.push_back({glm::vec4(p01, alpha01), glm::vec4(p12, alpha12), bary01, bary12, f, uint32_t(type),
+                   uint32_t(lm.mesh.face_edges[f][c]), key12});
+}
+
+// The crossings of a ridge-like face: an edge "crosses" where the directions of increase
+// at its ends point against each other (rtsc: z01, z12, z20); then the segments rtsc draws
+// for them — from the two crossed edges, or (all three crossed, `three_to_center`) three
+// pieces to the centre.
+void crossed_face(const LineMesh& lm, uint32_t f, bool z01, bool z12, bool z20, const float* e, const float* k,
+                  float thresh, bool fade, bool three_to_center, const glm::vec3* tmax, LineType type,
+                  std::vector<LineSegment>& out) {
+    if (!z01) {
+        ridge_segment(lm, f, 1, e, k, thresh, false, fade, tmax, type, out);
+    } else if (!z12) {
+        ridge_segment(lm, f, 2, e, k, thresh, false, fade, tmax, type, out);
+    } else if (!z20) {
+        ridge_segment(lm, f, 0, e, k, thresh, false, fade, tmax, type, out);
+    } else if (three_to_center) {
+        ridge_segment(lm, f, 1, e, k, thresh, true, fade, tmax, type, out);
+        ridge_segment(lm, f, 2, e, k, thresh, true, fade, tmax, type, out);
+        ridge_segment(lm, f, 0, e, k, thresh, true, fade, tmax, type, out);
+    }
+}
+
+bool back_facing(const float* ndotv, const glm::uvec3& c) {
+    return ndotv[c.x] <= 0.0f && ndotv[c.y] <= 0.0f && ndotv[c.z] <= 0.0f;
+}
+
+// The eigenvalue of larger magnitude of the symmetric 2×2 matrix [m1 m12; m12 m2] and its
+// unit eigenvector (rtsc's largest_eig_2x2).
+void largest_eigen_2x2(float m1, float m12, float m2, glm::vec2& vector, float& value) {
+    value = 0.5f * (m1 + m2);
+    const float root = std::sqrt(m12 * m12 + 0.25f * ((m2 - m1) * (m2 - m1)));
+    if (value > 0.0f)
+        value += root;
+    else
+        value -= root;
+    const glm::vec2 v(m2 - value, -m12);
+    const float length = std::sqrt(v.x * v.x + v.y * v.y);
+    if (!(length > 0.0f)) {
+        vector = glm::vec2(0.0f, 1.0f);
+    } else {
+        const float inv = 1.0f / length;
+        vector = glm::vec2(v.x * inv, v.y * inv);
+    }
+}
+
+}  // namespace
+
+void apparent_curvature(const LineMesh& lm, const glm::vec3& eye, const float* ndotv, size_t begin, size_t end,
+                        ApparentVertex* out) {
+    const SurfaceCurvature& c = lm.curvature;
+    for (size_t i = begin; i < end; ++i) {
+        const glm::vec3 v = unit(eye - lm.mesh.positions[i]);
+        const float u = dot3(v, c.pdir1[i]), w = dot3(v, c.pdir2[i]);
+        const float u2 = u * u, w2 = w * w;
+        const float csc2 = 1.0f / (u2 + w2);
+        // Q = S·P⁻¹ = S + (secθ − 1)·S·ŵŵᵀ, ŵ the unit projected view direction (Judd et al. §3).
+        const float sec_minus_1 = 1.0f / std::fabs(ndotv[i]) - 1.0f;
+        const float uu = u2 * csc2, uw = u * w * csc2, ww = w2 * csc2;
+        const float q11 = c.k1[i] * (1.0f + sec_minus_1 * uu);
+        const float q12 = c.k1[i] * (sec_minus_1 * uw);
+        const float q21 = c.k2[i] * (sec_minus_1 * uw);
+        const float q22 = c.k2[i] * (1.0f + sec_minus_1 * ww);
+        glm::vec2 t1;
+        float q1;
+        largest_eigen_2x2(q11 * q11 + q21 * q21, q11 * q12 + q21 * q22, q12 * q12 + q22 * q22, t1, q1);
+        out[i] = {q1, t1.x, t1.y, 0.0f};
+    }
+}
+
+void apparent_derivative(const LineMesh& lm, const float* ndotv, size_t begin, size_t end, ApparentVertex* inout) {
+    const SurfaceCurvature& c = lm.curvature;
+    const auto& positions = lm.mesh.positions;
+    for (size_t i = begin; i < end; ++i) {
+        const glm::vec3 v0 = positions[i];
+        const float q1 = inout[i].q1;
+        const glm::vec3 t1 = inout[i].t1x * c.pdir1[i] + inout[i].t1y * c.pdir2[i];
+        const glm::vec3 t2 = glm::cross(c.normals[i], t1);
+        const float v0_t2 = dot3(v0, t2);
+        float derivative = 0.0f;
+        int estimates = 0;
+        for (uint32_t j = lm.vertex_face_offsets[i]; j < lm.vertex_face_offsets[i + 1]; ++j) {
+            // The point p on the opposite edge v1–v2 that lies along t1 from v0.
+            const uint32_t f = lm.vertex_faces[j];
+            const glm::uvec3 corner = lm.mesh.faces[f];
+            const int at = corner.x == i ? 0 : corner.y == i ? 1 : 2;
+            const uint32_t i1 = corner[(at + 1) % 3], i2 = corner[(at + 2) % 3];
+            const float v1_t2 = dot3(positions[i1], t2), v2_t2 = dot3(positions[i2], t2);
+            const float w1 = (v2_t2 - v0_t2) / (v2_t2 - v1_t2);
+            if (w1 < 0.0f || w1 >= 1.0f) continue;  // infinities fail here; NaN passes, as in rtsc
+            const float w2 = 1.0f - w1;
+            const glm::vec3 p = w1 * positions[i1] + w2 * positions[i2];
+            const float q1_p = w1 * inout[i1].q1 + w2 * inout[i2].q1;
+            // The derivative along the projected (screen) direction: distances shrink by |n·v|.
+            float distance = dot3(p - v0, t1);
+            distance *= std::fabs(ndotv[i]);
+            derivative += (q1_p - q1) / distance;
+            if (++estimates == 2) {  // a line through v0 leaves through two faces at most
+                derivative *= 0.5f;
+                break;
+            }
+        }
+        inout[i].dt1q1 = derivative;
+    }
+}
+
+void ridge_face(const LineMesh& lm, uint32_t f, const float* ndotv, bool ridge, float thresh, bool fade,
+                std::vector<LineSegment>& out) {
+    const glm::uvec3 corner = lm.mesh.faces[f];
+    if (back_facing(ndotv, corner)) return;
+    const float* k1 = lm.curvature.k1.data();
+    const float k[3] = {k1[corner.x], k1[corner.y], k1[corner.z]};
+    if (ridge ? (k[0] <= 0.0f || k[1] <= 0.0f || k[2] <= 0.0f) : (k[0] >= 0.0f || k[1] >= 0.0f || k[2] >= 0.0f)) return;
+    // e1 turned towards increasing k1 (decreasing for valleys): an edge crosses the line
+    // where its ends' turned directions oppose (Ohtake et al. 2004).
+    const float sign = ridge ? 1.0f : -1.0f;
+    float e[3];
+    glm::vec3 tmax[3], x[3];
+    for (int i = 0; i < 3; ++i) {
+        e[i] = lm.curvature.dcurv[corner[i]].x;
+        tmax[i] = (sign * e[i]) * lm.curvature.pdir1[corner[i]];
+        x[i] = lm.mesh.positions[corner[i]];
+    }
+    bool z01 = dot3(tmax[0], tmax[1]) <= 0.0f, z12 = dot3(tmax[1], tmax[2]) <= 0.0f, z20 = dot3(tmax[2], tmax[0]) <= 0.0f;
+    if (int(z01) + int(z12) + int(z20) < 2) return;
+    // The right kind of extremum: along each crossed edge k1 rises into it from one end.
+    z01 = z01 && (dot3(tmax[0], x[1] - x[0]) >= 0.0f || dot3(tmax[1], x[1] - x[0]) <= 0.0f);
+    z12 = z12 && (dot3(tmax[1], x[2] - x[1]) >= 0.0f || dot3(tmax[2], x[2] - x[1]) <= 0.0f);
+    z20 = z20 && (dot3(tmax[2], x[0] - x[2]) >= 0.0f || dot3(tmax[0], x[0] - x[2]) <= 0.0f);
+    if (int(z01) + int(z12) + int(z20) < 2) return;
+    crossed_face(lm, f, z01, z12, z20, e, k, thresh, fade, true, nullptr, ridge ? LineType::Ridge : LineType::Valley, out);
+}
+
+void principal_highlight_face(const LineMesh& lm, uint32_t f, const glm::vec3& eye, const float* ndotv, float thresh,
+                              bool fade, std::vector<LineSegment>& out) {
+    const glm::uvec3 corner = lm.mesh.faces[f];
+    if (back_facing(ndotv, corner)) return;
+    const SurfaceCurvature& c = lm.curvature;
+    const float k[3] = {c.k1[corner.x], c.k1[corner.y], c.k1[corner.z]};
+    // rtsc's two flavours, its "ridge" then its "valley" pass.
+    for (const bool convex : {true, false}) {
+        if (convex ? std::min({k[0], k[1], k[2]}) < 0.0f : std::max({k[0], k[1], k[2]}) > 0.0f) continue;
+        // The e1 turned to agree with the first corner's; none may turn by more than 45°.
+        glm::vec3 d[3] = {c.pdir1[corner.x], c.pdir1[corner.y], c.pdir1[corner.z]};
+        const glm::vec3 reference = d[0];
+        bool agree = true;
+        for (glm::vec3& di : d) {
+            if (dot3(di, reference) < 0.0f) di = -di;
+            // rtsc: give up where the dot product is below √½ (a double): for a float that
+            // is ≤ the float just below √½ (shaders/lines_ridges.glsl compares the same).
+            agree = agree && !(dot3(di, reference) <= 0.70710677f);
+        }
+        if (!agree) continue;
+        float along[3], strength[3];
+        for (int i = 0; i < 3; ++i) {
+            const glm::vec3 view = unit(eye - lm.mesh.positions[corner[i]]);
+            along[i] = dot3(view, d[i]);  // v·e1: zero where the view looks down e2
+            const float k1 = c.k1[corner[i]], k2 = c.k2[corner[i]];
+            strength[i] = dot3((k1 * k1 - k2 * k2) * view, c.normals[corner[i]]);
+        }
+        const bool z01 = along[0] * along[1] <= 0.0f, z12 = along[1] * along[2] <= 0.0f, z20 = along[2] * along[0] <= 0.0f;
+        if (int(z01) + int(z12) + int(z20) < 2) continue;
+        crossed_face(lm, f, z01, z12, z20, along, strength, thresh, fade, false, nullptr, LineType::PrincipalHighlight, out);
+    }
+}
+
+void apparent_ridge_face(const LineMesh& lm, uint32_t f, const ApparentVertex* apparent, float thresh, bool fade,
+                         std::vector<LineSegment>& out) {
+    // No back-face culling: rtsc keeps faces that are just back-facing, so that apparent
+    // ridges reach the contours they end at.
+    const glm::uvec3 corner = lm.mesh.faces[f];
+    const ApparentVertex q[3] = {apparent[corner.x], apparent[corner.y], apparent[corner.z]};
+    if (q[0].q1 <= thresh && q[1].q1 <= thresh && q[2].q1 <= thresh) return;
+    const float k[3] = {q[0].q1, q[1].q1, q[2].q1};
+    const float e[3] = {q[0].dt1q1, q[1].dt1q1, q[2].dt1q1};
+    glm::vec3 tmax[3];
+    for (int i = 0; i < 3; ++i) {
+        const glm::vec3 t1 = q[i].t1x * lm.curvature.pdir1[corner[i]] + q[i].t1y * lm.curvature.pdir2[corner[i]];
+        tmax[i] = q[i].dt1q1 * t1;
+    }
+    const bool z01 = dot3(tmax[0], tmax[1]) <= 0.0f, z12 = dot3(tmax[1], tmax[2]) <= 0.0f,
+               z20 = dot3(tmax[2], tmax[0]) <= 0.0f;
+    if (int(z01) + int(z12) + int(z20) < 2) return;
+    crossed_face(lm, f, z01, z12, z20, e, k, thresh, fade, true, tmax, LineType::ApparentRidge, out);
+}
+
+}  // namespace lw

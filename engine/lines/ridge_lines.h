@@ -1,0 +1,62 @@
+// engine/lines/ridge_lines.h — rtsc's lines at extrema of a curvature along its own
+// direction: ridges and valleys, principal highlights and apparent ridges (the plain C++
+// reference; shaders/lines_ridges.glsl does the same per face on the GPU).
+//
+// Input:  a `LineMesh` (curvature, derivative tensor, vertex → face adjacency), per vertex
+//         the view's n·v, the eye; for apparent ridges the per-vertex `ApparentVertex`
+//         computed here first. Thresholds as LineParams gives them (scaled by fs inside).
+// Output: `LineSegment`s appended per face, endpoints keyed by the mesh edge they lie on
+//         (kNoKey at a face's centre, where three pieces meet).
+//
+// Every rule is rtsc 1.6's (docs/research/rtsc-lines.md §6), so that our lines lie on its:
+//  - ridges (valleys): faces whose three k1 are > 0 (< 0), not all back-facing, where the
+//    derivative of k1 along e1 changes sign across at least two edges (Ohtake et al. 2004);
+//    endpoints where it crosses zero, kept where |k1| exceeds rv_thresh / fs, faded by
+//    |k1| − thresh over itself;
+//  - principal highlights (DeCarlo & Rusinkiewicz 2007): faces whose e1 agree within 45°,
+//    where v·e1 changes sign; strength (k1² − k2²)·n·v above ph_thresh / fs²; both rtsc's
+//    flavours, on convex (all k1 ≥ 0) and on concave (all k1 ≤ 0) faces;
+//  - apparent ridges (Judd, Durand & Adelson 2007, as rtsc computes them): the largest
+//    eigenvalue q1 of QᵀQ, Q the view-dependent shape operator, and its derivative along
+//    its own direction t1 taken from the neighbouring faces; lines where that derivative
+//    changes sign and both sides rise towards the line, q1 above ar_thresh / fs².
+//
+// This file is compiled with -ffp-contract=off (as extract_reference.cpp) so that the GPU,
+// with `precise`, computes the same values.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "lines/line_mesh.h"
+#include "lines/line_types.h"
+
+namespace lw {
+
+// A vertex's view-dependent curvature for apparent ridges: q1 (the largest eigenvalue of
+// QᵀQ, a squared curvature), its direction t1 in the (e1, e2) frame, and D_t1 q1.
+struct ApparentVertex {
+    float q1;
+    float t1x, t1y;
+    float dt1q1;
+};
+static_assert(sizeof(ApparentVertex) == 16, "ApparentVertex must match shaders/lines_shared.glsl");
+
+// Apparent ridges need two vertex passes: q1 and t1 of vertices [begin, end) first, then
+// (once every vertex has them) D_t1 q1 from each vertex's first two neighbouring faces
+// where the line along t1 crosses the opposite edge, in face order (rtsc's compute_Dt1q1).
+void apparent_curvature(const LineMesh& mesh, const glm::vec3& eye, const float* ndotv, size_t begin, size_t end,
+                        ApparentVertex* out);
+void apparent_derivative(const LineMesh& mesh, const float* ndotv, size_t begin, size_t end, ApparentVertex* inout);
+
+// One face's lines of each type; `fade`: rtsc's draw_faded.
+void ridge_face(const LineMesh& mesh, uint32_t face, const float* ndotv, bool ridge, float rv_thresh, bool fade,
+                std::vector<LineSegment>& out);
+void principal_highlight_face(const LineMesh& mesh, uint32_t face, const glm::vec3& eye, const float* ndotv,
+                              float ph_thresh, bool fade, std::vector<LineSegment>& out);
+void apparent_ridge_face(const LineMesh& mesh, uint32_t face, const ApparentVertex* apparent, float ar_thresh,
+                         bool fade, std::vector<LineSegment>& out);
+
+}  // namespace lw

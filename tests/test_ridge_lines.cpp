@@ -1,0 +1,212 @@
+// rtsc's other lines (issue 16 item 1): each on a generated surface where it lies at a known
+// place, the GPU pass against the C++ reference on shared models, and thread counts.
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <numbers>
+
+#include "geometry/test_meshes.h"
+#include "lines/chaining.h"
+#include "lines/extract_gpu.h"
+#include "lines/extract_reference.h"
+#include "scene/scene.h"
+#include "test_support.h"
+
+namespace lw {
+namespace {
+
+LineParams only(LineType type) {
+    LineParams params;
+    for (int t = 0; t < kLineTypeCount; ++t) set_line_type_enabled(params, LineType(t), LineType(t) == type);
+    return params;
+}
+
+LineParams every_type() {
+    LineParams params;
+    for (int t = 0; t < kLineTypeCount; ++t) set_line_type_enabled(params, LineType(t), true);
+    return params;
+}
+
+// Largest |coordinate − at| over the segments' endpoints, and their summed length.
+struct Placement {
+    float worst = 0.0f;
+    float length = 0.0f;
+    size_t segments = 0;
+};
+
+template <class Distance>
+Placement place(const std::vector<LineSegment>& segments, LineType type, Distance distance) {
+    Placement p;
+    for (const LineSegment& s : segments) {
+        EXPECT_EQ(s.type, uint32_t(type));
+        p.worst = std::max({p.worst, distance(glm::vec3(s.p0)), distance(glm::vec3(s.p1))});
+        p.length += glm::length(glm::vec3(s.p1) - glm::vec3(s.p0));
+        ++p.segments;
+    }
+    return p;
+}
+
+// A smoothed roof z = ∓a·sqrt(x² + b²) over [−1, 1] × [−0.5, 0.5]: its cross-section's
+// curvature peaks at x = 0 (|k1| = a/b there) and k2 = 0 along the ridge, so the ridge
+// (valley, for the upturned roof) is the line x = 0. 161 × 40 cells, h = 2/161: the crest
+// runs between two columns of vertices, not on one (on a column the symmetric estimates
+// of the derivative are exactly 0 at both ends of an edge and rtsc's crossing is 0/0).
+TriangleMesh roof(float sign) {
+    constexpr double a = 0.5, b = 0.05;
+    return make_height_field([&](double x, double) { return -sign * a * std::sqrt(x * x + b * b); }, {-1.0f, -0.5f},
+                             {1.0f, 0.5f}, 161, 40);
+}
+
+TEST(RidgeLines, RidgeAndValleyLieOnTheRoofsCrest) {
+    constexpr float h = 2.0f / 161.0f;
+    for (const float sign : {1.0f, -1.0f}) {
+        const LineMesh lm = build_line_mesh(roof(sign), 45.0f);
+        const glm::vec3 eye(0.4f, 0.3f, 3.0f);
+        const LineType wanted = sign > 0.0f ? LineType::Ridge : LineType::Valley;
+        const LineType other = sign > 0.0f ? LineType::Valley : LineType::Ridge;
+        const std::vector<LineSegment> lines = extract_lines_reference(lm, eye, only(wanted));
+        const Placement p = place(lines, wanted, [](const glm::vec3& x) { return std::abs(x.x); });
+        // Within half a cell of x = 0 and along the whole length.
+        EXPECT_LE(p.worst, 0.5f * h) << line_type_name(wanted);
+        EXPECT_GT(p.length, 0.95f) << line_type_name(wanted) << ": the crest is 1 long";
+        EXPECT_TRUE(extract_lines_reference(lm, eye, only(other)).empty())
+            << "a " << line_type_name(wanted) << " is not a " << line_type_name(other);
+    }
+}
+
+// Seen from straight above the crest (x = 0), the view-dependent curvature of the roof is
+// largest on the crest too (the surface is symmetric about x = 0 and so is the view), so the
+// apparent ridge is the same line.
+TEST(RidgeLines, ApparentRidgeLiesOnTheRoofsCrestSeenFromAbove) {
+    constexpr float h = 2.0f / 161.0f;
+    const LineMesh lm = build_line_mesh(roof(1.0f), 45.0f);
+    const std::vector<LineSegment> lines = extract_lines_reference(lm, glm::vec3(0.0f, 0.2f, 3.0f), only(LineType::ApparentRidge));
+    const Placement p = place(lines, LineType::ApparentRidge, [](const glm::vec3& x) { return std::abs(x.x); });
+    // Between the two columns of vertices next to the crest (some pieces end on them:
+    // rtsc's crossings along the crest-parallel edges, where t1's estimate turns).
+    EXPECT_LE(p.worst, 0.5f * h * 1.001f);
+    EXPECT_GT(p.length, 0.9f);
+}
+
+// A thin open cylinder (radius R about z): k1 = 1/R around, k2 = 0 along. Its principal
+// highlight is where the view looks along e2, v·e1 = 0: for an eye at d·(cos β, sin β) and
+// any height that is −d·sin(φ − β) = 0 at every height, the generator φ = β facing the eye.
+// β is half a cell, between two columns of vertices (on a column v·e1 is 0 at both ends of
+// an edge, and rtsc draws nothing on a face crossed three times).
+TEST(RidgeLines, PrincipalHighlightIsTheGeneratorFacingTheEye) {
+    constexpr float radius = 0.25f;
+    const LineMesh lm = build_line_mesh(make_open_cylinder(radius, 4.0f, 96, 64), 60.0f);
+    const float beta = std::numbers::pi_v<float> / 96.0f;
+    const glm::vec2 facing(std::cos(beta), std::sin(beta));
+    const std::vector<LineSegment> lines =
+        extract_lines_reference(lm, glm::vec3(3.0f * facing, 2.0f), only(LineType::PrincipalHighlight));
+    std::vector<LineSegment> inside;  // away from the open ends, whose curvature the border skews
+    for (const LineSegment& s : lines)
+        if (std::min(s.p0.z, s.p1.z) > 0.25f && std::max(s.p0.z, s.p1.z) < 3.75f) inside.push_back(s);
+    const Placement p = place(inside, LineType::PrincipalHighlight, [&](const glm::vec3& x) {
+        return glm::length(glm::vec2(x.x, x.y) - radius * facing);
+    });
+    const float cell = 2.0f * std::numbers::pi_v<float> * radius / 96.0f;
+    EXPECT_LE(p.worst, 0.5f * cell);
+    EXPECT_GT(p.length, 0.95f * 3.5f);
+}
+
+// A wave z = A·sin(ωx) seen obliquely: kr = 0 on its inflection lines x = nπ/ω; where
+// D_w kr > 0 they are suggestive contours, where it is < 0 suggestive highlights, in turn
+// from one inflection to the next.
+TEST(RidgeLines, SuggestiveHighlightsAreTheOtherInflections) {
+    constexpr double amplitude = 0.2, omega = 3.0;
+    const TriangleMesh wave = make_height_field([&](double x, double) { return amplitude * std::sin(omega * x); },
+                                                {-2.0f, -1.0f}, {2.0f, 1.0f}, 200, 100);
+    const LineMesh lm = build_line_mesh(wave, 60.0f);
+    const glm::vec3 eye(4.0f, 0.3f, 2.5f);
+    const float period = float(std::numbers::pi / omega);
+    const auto inflection = [&](const glm::vec3& x) { return int(std::lround(x.x / period)); };
+    const auto off_inflection = [&](const glm::vec3& x) { return std::abs(x.x - float(inflection(x)) * period); };
+    std::vector<int> highlight_lines, contour_lines;
+    for (const auto& [type, found] : {std::pair{LineType::SuggestiveHighlight, &highlight_lines},
+                                      std::pair{LineType::Suggestive, &contour_lines}}) {
+        std::vector<LineSegment> lines;
+        for (const LineSegment& s : extract_lines_reference(lm, eye, only(type)))
+            if (std::abs(s.p0.y) < 0.8f && std::abs(s.p0.x) < 1.8f) lines.push_back(s);  // off the borders
+        const Placement p = place(lines, type, off_inflection);
+        EXPECT_LE(p.worst, 0.02f) << line_type_name(type) << " (cells are 0.02 wide)";
+        for (const LineSegment& s : lines) found->push_back(inflection(glm::vec3(s.p0)));
+        std::sort(found->begin(), found->end());
+        found->erase(std::unique(found->begin(), found->end()), found->end());
+    }
+    // (Here: highlights on x = −π/ω, contours on x = 0; the third line, x = π/ω, is under
+    // both thresholds.)
+    EXPECT_GE(highlight_lines.size(), 1u);
+    EXPECT_GE(contour_lines.size(), 1u);
+    for (int n : highlight_lines) {
+        EXPECT_EQ(std::count(contour_lines.begin(), contour_lines.end(), n), 0) << "inflection " << n << " has both";
+        for (int m : contour_lines) EXPECT_EQ(std::abs(n - m) % 2, 1) << "they alternate: " << n << ", " << m;
+    }
+}
+
+// The GPU pass gives the reference's segments for every type at once (endpoints and alpha
+// within 1e-4, same faces and keys), and each of rtsc's other lines is found on a face scan.
+struct GpuCase {
+    std::string model;
+    glm::vec3 direction;  // from the centre towards the eye
+};
+
+class RidgeLinesGpu : public test::GpuTest, public ::testing::WithParamInterface<GpuCase> {};
+
+TEST_P(RidgeLinesGpu, SameSegmentsAsTheReference) {
+    const GpuCase& c = GetParam();
+    const LoadedScene scene = load_scene(scene_for_model(test::data_dir() / "models" / c.model));
+    const LineMesh lm = build_line_mesh(scene.mesh, 45.0f);
+    const glm::vec3 eye = scene.bounds.center() + 3.0f * scene.bounds.radius() * glm::normalize(c.direction);
+    const LineParams params = every_type();
+    std::vector<LineSegment> cpu = extract_lines_reference(lm, eye, params);
+    LineExtractor extractor(ctx());
+    extractor.set_mesh(lm);
+    std::vector<LineSegment> gpu = extractor.extract(eye, params);
+    sort_segments(cpu);
+    sort_segments(gpu);
+    ASSERT_EQ(gpu.size(), cpu.size());
+    std::array<size_t, kLineTypeCount> by_type{};
+    for (size_t i = 0; i < cpu.size(); ++i) {
+        const LineSegment &a = cpu[i], &b = gpu[i];
+        ASSERT_EQ(a.type, b.type) << i;
+        ASSERT_EQ(a.face, b.face) << i;
+        EXPECT_EQ(a.key0, b.key0) << i;
+        EXPECT_EQ(a.key1, b.key1) << i;
+        EXPECT_LE(glm::length(glm::vec3(a.p0) - glm::vec3(b.p0)), 1e-4f) << i << " " << line_type_name(LineType(a.type));
+        EXPECT_LE(glm::length(glm::vec3(a.p1) - glm::vec3(b.p1)), 1e-4f) << i << " " << line_type_name(LineType(a.type));
+        EXPECT_NEAR(a.p0.w, b.p0.w, 1e-4f) << i;
+        EXPECT_NEAR(a.p1.w, b.p1.w, 1e-4f) << i;
+        ++by_type[a.type];
+    }
+    for (int t = int(LineType::Ridge); t < kLineTypeCount; ++t) {
+        RecordProperty(line_type_name(LineType(t)), int(by_type[size_t(t)]));
+        EXPECT_GT(by_type[size_t(t)], 0u) << line_type_name(LineType(t)) << ": the comparison must see some";
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Models, RidgeLinesGpu,
+                         ::testing::Values(GpuCase{"spot/spot.glb", {0.8f, 0.3f, -0.7f}},
+                                           GpuCase{"LeePerrySmith/LeePerrySmith.glb", {0.0f, 0.1f, 1.0f}},
+                                           GpuCase{"LeePerrySmith/LeePerrySmith.glb", {0.7f, -0.2f, 0.5f}},
+                                           GpuCase{"Suzanne/Monkey.glb", {0.3f, 0.2f, 1.0f}}),
+                         [](const auto& param_info) { return "Case" + std::to_string(param_info.index); });
+
+// Apparent ridges' derivative pass reads every vertex's curvature: threads meet at a barrier
+// before it, and the output stays the same bytes at any thread count.
+TEST(RidgeLinesThreads, SameSegmentsAtAnyThreadCount) {
+    const LoadedScene scene = load_scene(scene_for_model(test::data_dir() / "models/LeePerrySmith/LeePerrySmith.glb"));
+    const LineMesh lm = build_line_mesh(scene.mesh, 30.0f);
+    const LineParams params = every_type();
+    const std::vector<LineSegment> one = extract_lines_reference(lm, scene.camera.eye, params, 1);
+    ASSERT_GT(one.size(), 500u);
+    for (size_t threads : {2u, 3u}) {
+        const std::vector<LineSegment> many = extract_lines_reference(lm, scene.camera.eye, params, threads);
+        ASSERT_EQ(many.size(), one.size()) << threads << " threads";
+        EXPECT_EQ(std::memcmp(many.data(), one.data(), one.size() * sizeof(LineSegment)), 0) << threads << " threads";
+    }
+}
+
+}  // namespace
+}  // namespace lw
