@@ -28,9 +28,12 @@ namespace {
 
 // Pass 1 over vertices [begin, end). Cloned for AVX2, chosen at load time where the CPU has
 // it: 8 vertices an instruction instead of 4, the same IEEE operations (no FMA) and so the
-// same bits.
-__attribute__((target_clones("avx2", "default"))) void vertex_pass(const LineVertexArrays& va, const glm::vec3& eye, float sug_thresh, size_t begin, size_t end,
-                 ExtractWorkspace& ws) {
+// same bits. `kHighlights`: also suggestive highlights' test numerator −num1 − sh_thresh·n·v
+// (rtsc-lines.md §1), from the same num1 — a loop of its own, as a test inside the loop
+// would keep it from vectorizing.
+template <bool kHighlights>
+[[gnu::always_inline]] inline void vertex_loop(const LineVertexArrays& va, const glm::vec3& eye, float sug_thresh,
+                                               float sh_thresh, size_t begin, size_t end, ExtractWorkspace& ws) {
     using F = LineVertexArrays::Field;
     const float *px = va.field(F::Px), *py = va.field(F::Py), *pz = va.field(F::Pz);
     const float *nx = va.field(F::Nx), *ny = va.field(F::Ny), *nz = va.field(F::Nz);
@@ -41,6 +44,7 @@ __attribute__((target_clones("avx2", "default"))) void vertex_pass(const LineVer
     float* ndotv = ws.ndotv.data();
     float* kr = ws.kr.data();
     float* test_num = ws.test_num.data();
+    float* highlight = ws.highlight_num.data();
     uint8_t* signs = ws.signs.data();
     const glm::vec3 e = eye;
     // The outputs overlap no input (the workspace's own arrays): no alias checks needed.
@@ -52,28 +56,64 @@ __attribute__((target_clones("avx2", "default"))) void vertex_pass(const LineVer
         kr[i] = v.kr;
         test_num[i] = v.test_num;
         signs[i] = sign_byte(v.ndotv, v.kr, v.test_num);
+        if constexpr (kHighlights) highlight[i] = -v.num1 - sh_thresh * v.ndotv;
     }
 }
 
+__attribute__((target_clones("avx2", "default"))) void vertex_pass(const LineVertexArrays& va, const glm::vec3& eye,
+                                                                   float sug_thresh, size_t begin, size_t end,
+                                                                   ExtractWorkspace& ws) {
+    vertex_loop<false>(va, eye, sug_thresh, 0.0f, begin, end, ws);
+}
+
+__attribute__((target_clones("avx2", "default"))) void vertex_pass_with_highlights(const LineVertexArrays& va,
+                                                                                   const glm::vec3& eye, float sug_thresh,
+                                                                                   float sh_thresh, size_t begin,
+                                                                                   size_t end, ExtractWorkspace& ws) {
+    vertex_loop<true>(va, eye, sug_thresh, sh_thresh, begin, end, ws);
+}
+
+// Pass 1, with or without suggestive highlights' numerator.
+void vertex_passes(const LineVertexArrays& va, const glm::vec3& eye, const LineParams& params,
+                   const ScaledThresholds& t, size_t begin, size_t end, ExtractWorkspace& ws) {
+    if (params.suggestive_highlights)
+        vertex_pass_with_highlights(va, eye, t.sug_thresh, t.sh_thresh, begin, end, ws);
+    else
+        vertex_pass(va, eye, t.sug_thresh, begin, end, ws);
+}
+
 // The per-vertex values only rtsc's optional lines read, over vertices [begin, end):
-// suggestive highlights' test numerator −tanθ·DwKr·cosθ − sh_thresh/fs²·n·v (rtsc-lines.md
-// §1), and apparent ridges' q1 and t1 (their derivative needs every vertex's: a second pass).
+// apparent ridges' q1 and t1 (their derivative needs every vertex's: a second pass) and
+// principal highlights' v·e1 and strength. (Suggestive highlights': in vertex_pass.)
 void optional_vertex_pass(const LineMesh& lm, const glm::vec3& eye, const LineParams& params,
                           const ScaledThresholds& thresholds, size_t begin, size_t end, ExtractWorkspace& ws) {
-    if (params.suggestive_highlights) {
-        const LineVertexArrays& va = lm.vertex_arrays;
-        using F = LineVertexArrays::Field;
-        const auto at = [&](F f, size_t i) { return va.field(f)[i]; };
-        for (size_t i = begin; i < end; ++i) {
-            // With no threshold the suggestive test's numerator is rtsc's num1 itself.
-            const VertexView v = vertex_view({at(F::Px, i), at(F::Py, i), at(F::Pz, i)}, {at(F::Nx, i), at(F::Ny, i), at(F::Nz, i)},
-                                             {at(F::E1x, i), at(F::E1y, i), at(F::E1z, i)},
-                                             {at(F::E2x, i), at(F::E2y, i), at(F::E2z, i)}, at(F::K1, i), at(F::K2, i),
-                                             {at(F::C0, i), at(F::C1, i), at(F::C2, i), at(F::C3, i)}, eye, 0.0f);
-            ws.highlight_num[i] = -v.test_num - thresholds.sh_thresh * v.ndotv;
-        }
-    }
     if (params.apparent_ridges) apparent_curvature(lm, eye, ws.ndotv.data(), begin, end, ws.apparent.data());
+    if (params.principal_highlights)
+        highlight_vertices(lm, eye, ws.ndotv.data(), thresholds.ph_thresh, begin, end, ws.principal_along.data(),
+                           ws.principal_strength.data(), ws.principal_flags.data());
+}
+
+// Finds every face's ridges and valleys (culling aside) when the mesh pose, the threshold
+// or fading changed since the cache was filled.
+void fill_ridge_cache(const LineMesh& lm, const LineParams& params, float thresh, size_t block_faces,
+                      ExtractWorkspace::RidgeCache& cache) {
+    if (cache.generation == lm.generation && cache.thresh == thresh && cache.fade == params.fade) return;
+    const size_t faces = lm.mesh.faces.size();
+    const std::vector<float> front(lm.mesh.positions.size(), 1.0f);  // every n·v > 0: nothing culled
+    for (int kind = 0; kind < 2; ++kind) {
+        std::vector<LineSegment>& segments = cache.segments[kind];
+        std::vector<uint32_t>& starts = cache.block_start[kind];
+        segments.clear();
+        starts.clear();
+        for (size_t f = 0; f < faces; ++f) {
+            if (f % block_faces == 0) starts.push_back(uint32_t(segments.size()));
+            ridge_face(lm, uint32_t(f), front.data(), kind == 0, thresh, params.fade, segments);
+        }
+        starts.push_back(uint32_t(segments.size()));
+    }
+    cache.generation = lm.generation;
+    cache.thresh = thresh;
+    cache.fade = params.fade;
 }
 
 // rtsc's face tests for the suggestive highlight, as for the suggestive contour
@@ -208,7 +248,7 @@ constexpr size_t kMinFacesPerThread = 8192;
 // may cross, from the sign bytes alone (face_scan.h); then each list's faces, one line type
 // at a time, so that the branches inside an isoline see one kind of face. Segments come out
 // by type, each type in face order (chaining orders them canonically: chaining.h).
-void face_pass(const LineMesh& lm, const ExtractWorkspace& ws, const glm::vec3& eye, const LineParams& params,
+void face_pass(const LineMesh& lm, const ExtractWorkspace& ws, const LineParams& params,
                const ScaledThresholds& t, uint32_t begin, uint32_t end, std::vector<LineSegment>& out) {
     const float fade = t.fade;
     const glm::uvec3* faces = lm.mesh.faces.data();
@@ -232,13 +272,26 @@ void face_pass(const LineMesh& lm, const ExtractWorkspace& ws, const glm::vec3& 
         for (uint32_t f = begin; f < end; ++f)
             if (highlight_candidate(faces[f], ws))
                 face_isoline<true>(lm, f, kr, ws.highlight_num.data(), ndotv, fade, LineType::SuggestiveHighlight, out);
-    for (const bool ridge : {true, false})
-        if (ridge ? params.ridges : params.valleys)
-            for (uint32_t f = begin; f < end; ++f) ridge_face(lm, f, ndotv, ridge, t.rv_thresh, params.fade, out);
+    for (int kind = 0; kind < 2; ++kind) {  // ridges, valleys: the view's share of the cache
+        if (!(kind == 0 ? params.ridges : params.valleys)) continue;
+        const ExtractWorkspace::RidgeCache& cache = ws.ridge_cache;
+        const size_t block = begin / kBlockFaces;
+        for (uint32_t i = cache.block_start[kind][block]; i < cache.block_start[kind][block + 1]; ++i) {
+            const LineSegment& s = cache.segments[kind][i];
+            const glm::uvec3 c = faces[s.face];
+            if (!(ndotv[c.x] <= 0.0f && ndotv[c.y] <= 0.0f && ndotv[c.z] <= 0.0f)) out.push_back(s);
+        }
+    }
     if (params.apparent_ridges)
         for (uint32_t f = begin; f < end; ++f) apparent_ridge_face(lm, f, ws.apparent.data(), t.ar_thresh, params.fade, out);
     if (params.principal_highlights)
-        for (uint32_t f = begin; f < end; ++f) principal_highlight_face(lm, f, eye, ndotv, t.ph_thresh, params.fade, out);
+        for (uint32_t f = begin; f < end; ++f) {
+            const glm::uvec3 c = faces[f];
+            const uint8_t* flags = ws.principal_flags.data();
+            if (principal_highlight_candidate(flags[c.x], flags[c.y], flags[c.z]))
+                principal_highlight_face(lm, f, ndotv, ws.principal_along.data(), ws.principal_strength.data(),
+                                         t.ph_thresh, params.fade, out);
+        }
 }
 
 }  // namespace
@@ -254,15 +307,21 @@ void extract_lines_reference(const LineMesh& lm, const glm::vec3& eye, const Lin
     ws.signs.resize(nv + kSignPadding);
     if (params.suggestive_highlights) ws.highlight_num.resize(nv);
     if (params.apparent_ridges) ws.apparent.resize(nv);
+    if (params.principal_highlights) {
+        ws.principal_along.resize(nv);
+        ws.principal_strength.resize(nv);
+        ws.principal_flags.resize(nv);
+    }
+    if (params.ridges || params.valleys) fill_ridge_cache(lm, params, thresholds.rv_thresh, kBlockFaces, ws.ridge_cache);
     const size_t faces = lm.mesh.faces.size();
     const size_t blocks = (faces + kBlockFaces - 1) / kBlockFaces;
     threads = std::min(threads, std::max<size_t>(1, faces / kMinFacesPerThread));
     const auto face_block = [&](size_t b, std::vector<LineSegment>& into) {
-        face_pass(lm, ws, eye, params, thresholds, uint32_t(b * kBlockFaces), uint32_t(std::min(faces, (b + 1) * kBlockFaces)),
+        face_pass(lm, ws, params, thresholds, uint32_t(b * kBlockFaces), uint32_t(std::min(faces, (b + 1) * kBlockFaces)),
                   into);
     };
     if (threads == 1) {  // straight into the output
-        vertex_pass(lm.vertex_arrays, eye, thresholds.sug_thresh, 0, nv, ws);
+        vertex_passes(lm.vertex_arrays, eye, params, thresholds, 0, nv, ws);
         optional_vertex_pass(lm, eye, params, thresholds, 0, nv, ws);
         if (params.apparent_ridges) apparent_derivative(lm, ws.ndotv.data(), 0, nv, ws.apparent.data());
         out.clear();
@@ -277,7 +336,7 @@ void extract_lines_reference(const LineMesh& lm, const glm::vec3& eye, const Lin
     std::atomic<size_t> next_block{0};
     parallel_team(threads, [&](size_t member, size_t members, TeamSync& sync) {
         const size_t first = nv * member / members, last = nv * (member + 1) / members;
-        vertex_pass(lm.vertex_arrays, eye, thresholds.sug_thresh, first, last, ws);
+        vertex_passes(lm.vertex_arrays, eye, params, thresholds, first, last, ws);
         optional_vertex_pass(lm, eye, params, thresholds, first, last, ws);
         sync.arrive_and_wait();
         if (params.apparent_ridges) {  // reads the neighbours' q1

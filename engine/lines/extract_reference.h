@@ -31,6 +31,18 @@ struct ExtractWorkspace {
     std::vector<uint8_t> signs;
     std::vector<float> highlight_num;        // suggestive highlights' test numerator (when drawn)
     std::vector<ApparentVertex> apparent;    // apparent ridges' view-dependent curvature (when drawn)
+    std::vector<float> principal_along, principal_strength;  // principal highlights' (when drawn)
+    std::vector<uint8_t> principal_flags;
+    // Ridges and valleys do not depend on the view but for back-face culling: found once per
+    // mesh pose and threshold (all faces, culling aside), each view keeps those on faces
+    // not back-facing. Per type, the segments in face order and where each face block starts.
+    struct RidgeCache {
+        uint64_t generation = 0;  // LineMesh::generation they were found on (0: none)
+        float thresh = 0.0f;
+        bool fade = false;
+        std::vector<LineSegment> segments[2];  // ridges, valleys
+        std::vector<uint32_t> block_start[2];
+    } ridge_cache;
     std::vector<std::vector<LineSegment>> blocks;
     std::vector<size_t> offsets;
 };

@@ -1,8 +1,18 @@
 #include "lines/line_mesh.h"
 
+#include <atomic>
 #include <cmath>
 
 namespace lw {
+
+namespace {
+
+uint64_t next_generation() {
+    static std::atomic<uint64_t> counter{0};
+    return ++counter;
+}
+
+}  // namespace
 
 std::vector<uint32_t> feature_edge_masks(const WeldedMesh& mesh, float crease_angle_deg) {
     std::vector<glm::vec3> face_normals(mesh.faces.size());
@@ -37,6 +47,7 @@ LineMesh build_line_mesh(const TriangleMesh& mesh, float crease_angle_deg) {
     line_mesh.feature_edges = feature_edge_masks(line_mesh.mesh, crease_angle_deg);
     line_mesh.vertex_arrays = line_vertex_arrays(line_mesh.mesh, line_mesh.curvature);
     vertex_face_lists(line_mesh.mesh, line_mesh.vertex_face_offsets, line_mesh.vertex_faces);
+    line_mesh.generation = next_generation();
     return line_mesh;
 }
 
@@ -44,6 +55,7 @@ void pose_line_mesh(LineMesh& line_mesh, const TriangleMesh& posed) {
     update_positions(line_mesh.mesh, posed);
     line_mesh.curvature = compute_curvature(line_mesh.mesh);
     line_mesh.vertex_arrays = line_vertex_arrays(line_mesh.mesh, line_mesh.curvature);
+    line_mesh.generation = next_generation();
 }
 
 void vertex_face_lists(const WeldedMesh& mesh, std::vector<uint32_t>& offsets, std::vector<uint32_t>& faces) {

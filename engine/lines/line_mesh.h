@@ -44,6 +44,9 @@ struct LineMesh {
     // The faces around each vertex, in face order (apparent ridges, ridge_lines.h): those of
     // vertex v are vertex_faces[vertex_face_offsets[v] .. vertex_face_offsets[v + 1]).
     std::vector<uint32_t> vertex_face_offsets, vertex_faces;
+    // A number no other build or pose of any line mesh has had: what per-view caches of
+    // view-independent lines (ExtractWorkspace) are keyed on.
+    uint64_t generation = 0;
 };
 
 [[nodiscard]] LineMesh build_line_mesh(const TriangleMesh& mesh, float crease_angle_deg);

@@ -208,33 +208,56 @@ void ridge_face(const LineMesh& lm, uint32_t f, const float* ndotv, bool ridge, 
     crossed_face(lm, f, z01, z12, z20, e, k, thresh, fade, true, nullptr, ridge ? LineType::Ridge : LineType::Valley, out);
 }
 
-void principal_highlight_face(const LineMesh& lm, uint32_t f, const glm::vec3& eye, const float* ndotv, float thresh,
-                              bool fade, std::vector<LineSegment>& out) {
+namespace {
+
+// Not below the threshold (NaN included, which rtsc does not pass over either), with the
+// margin of principal_highlight_candidate.
+bool strong(float strength, float thresh) { return !(std::fabs(strength) < thresh * 0.999999f); }
+
+}  // namespace
+
+void highlight_vertices(const LineMesh& lm, const glm::vec3& eye, const float* ndotv, float thresh, size_t begin,
+                        size_t end, float* along, float* strength, uint8_t* flags) {
+    const SurfaceCurvature& c = lm.curvature;
+    for (size_t i = begin; i < end; ++i) {
+        const glm::vec3 view = unit(eye - lm.mesh.positions[i]);
+        along[i] = dot3(view, c.pdir1[i]);  // v·e1: zero where the view looks down e2
+        strength[i] = dot3((c.k1[i] * c.k1[i] - c.k2[i] * c.k2[i]) * view, c.normals[i]);
+        flags[i] = uint8_t(unsigned(!(ndotv[i] <= 0.0f)) | unsigned(strong(strength[i], thresh)) << 1);
+    }
+}
+
+void principal_highlight_face(const LineMesh& lm, uint32_t f, const float* ndotv, const float* along_e1,
+                              const float* strength_at, float thresh, bool fade, std::vector<LineSegment>& out) {
     const glm::uvec3 corner = lm.mesh.faces[f];
     if (back_facing(ndotv, corner)) return;
+    // A face whose corners are all below the threshold draws nothing (ridge_lines.h).
+    if (!strong(strength_at[corner.x], thresh) && !strong(strength_at[corner.y], thresh) &&
+        !strong(strength_at[corner.z], thresh))
+        return;
     const SurfaceCurvature& c = lm.curvature;
     const float k[3] = {c.k1[corner.x], c.k1[corner.y], c.k1[corner.z]};
     // rtsc's two flavours, its "ridge" then its "valley" pass.
     for (const bool convex : {true, false}) {
         if (convex ? std::min({k[0], k[1], k[2]}) < 0.0f : std::max({k[0], k[1], k[2]}) > 0.0f) continue;
         // The e1 turned to agree with the first corner's; none may turn by more than 45°.
-        glm::vec3 d[3] = {c.pdir1[corner.x], c.pdir1[corner.y], c.pdir1[corner.z]};
-        const glm::vec3 reference = d[0];
+        // (v·(−e1) is −(v·e1) to the bit: turning e1 turns the vertex's value.)
+        const glm::vec3 reference = c.pdir1[corner.x];
         bool agree = true;
-        for (glm::vec3& di : d) {
-            if (dot3(di, reference) < 0.0f) di = -di;
-            // rtsc: give up where the dot product is below √½ (a double): for a float that
-            // is ≤ the float just below √½ (shaders/lines_ridges.glsl compares the same).
-            agree = agree && !(dot3(di, reference) <= 0.70710677f);
-        }
-        if (!agree) continue;
         float along[3], strength[3];
         for (int i = 0; i < 3; ++i) {
-            const glm::vec3 view = unit(eye - lm.mesh.positions[corner[i]]);
-            along[i] = dot3(view, d[i]);  // v·e1: zero where the view looks down e2
-            const float k1 = c.k1[corner[i]], k2 = c.k2[corner[i]];
-            strength[i] = dot3((k1 * k1 - k2 * k2) * view, c.normals[corner[i]]);
+            glm::vec3 d = c.pdir1[corner[i]];
+            along[i] = along_e1[corner[i]];
+            strength[i] = strength_at[corner[i]];
+            if (dot3(d, reference) < 0.0f) {
+                d = -d;
+                along[i] = -along[i];
+            }
+            // rtsc: give up where the dot product is below √½ (a double): for a float that
+            // is ≤ the float just below √½ (shaders/lines_ridges.glsl compares the same).
+            agree = agree && !(dot3(d, reference) <= 0.70710677f);
         }
+        if (!agree) continue;
         const bool z01 = along[0] * along[1] <= 0.0f, z12 = along[1] * along[2] <= 0.0f, z20 = along[2] * along[0] <= 0.0f;
         if (int(z01) + int(z12) + int(z20) < 2) continue;
         crossed_face(lm, f, z01, z12, z20, along, strength, thresh, fade, false, nullptr, LineType::PrincipalHighlight, out);

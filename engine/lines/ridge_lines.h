@@ -54,8 +54,17 @@ void apparent_derivative(const LineMesh& mesh, const float* ndotv, size_t begin,
 // One face's lines of each type; `fade`: rtsc's draw_faded.
 void ridge_face(const LineMesh& mesh, uint32_t face, const float* ndotv, bool ridge, float rv_thresh, bool fade,
                 std::vector<LineSegment>& out);
-void principal_highlight_face(const LineMesh& mesh, uint32_t face, const glm::vec3& eye, const float* ndotv,
-                              float ph_thresh, bool fade, std::vector<LineSegment>& out);
+// Principal highlights read two values per vertex, computed once per view: v·e1 and the
+// strength (k1² − k2²)·n·v, v the unit direction to the eye; and a byte per vertex that
+// lets most faces be passed over unread (`principal_highlight_candidate`).
+void highlight_vertices(const LineMesh& mesh, const glm::vec3& eye, const float* ndotv, float ph_thresh, size_t begin,
+                        size_t end, float* along, float* strength, uint8_t* flags);
+// Whether a face with these corners' bytes can have a principal highlight: one corner not
+// back-facing and one whose strength is not below the threshold (an interpolated strength
+// is at most the larger of its ends', to 3 ulp, and below the threshold nothing is drawn).
+inline bool principal_highlight_candidate(uint8_t a, uint8_t b, uint8_t c) { return (a | b | c) == 3u; }
+void principal_highlight_face(const LineMesh& mesh, uint32_t face, const float* ndotv, const float* along,
+                              const float* strength, float ph_thresh, bool fade, std::vector<LineSegment>& out);
 void apparent_ridge_face(const LineMesh& mesh, uint32_t face, const ApparentVertex* apparent, float ar_thresh,
                          bool fade, std::vector<LineSegment>& out);
 

@@ -29,6 +29,7 @@ struct VertexView {
     float kr;
     float test_num;  // suggestive-contour test numerator (threshold subtracted)
     float test_den;  // = ndotv
+    float num1;      // the numerator before the threshold (suggestive highlights' test negates it)
 };
 
 inline VertexView vertex_view(const glm::vec3& p, const glm::vec3& n, const glm::vec3& e1, const glm::vec3& e2,
@@ -45,7 +46,7 @@ inline VertexView vertex_view(const glm::vec3& p, const glm::vec3& n, const glm:
     const float num0 = (u2 * (u * C.x + 3.0f * w * C.y) + w2 * (3.0f * u * C.z + w * C.w)) * csc2;
     const float tr = (k2 - k1) * u * w * csc2;
     const float num1 = num0 - 2.0f * ndotv * (tr * tr);
-    return VertexView{ndotv, kr, num1 - scaled_thresh * ndotv, ndotv};
+    return VertexView{ndotv, kr, num1 - scaled_thresh * ndotv, ndotv, num1};
 }
 
 }  // namespace lw

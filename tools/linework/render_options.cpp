@@ -38,6 +38,7 @@ void apply_frame_overrides(const RenderOptions& o, SceneDesc& desc) {
         desc.style.shading = o.shading == "flat" ? Shading::Flat : o.shading == "unlit" ? Shading::Unlit : Shading::Toon;
     }
     if (o.lines_only && o.no_lines) throw usage_error("--lines-only and --no-lines leave nothing to draw");
+    if (!o.scene.lines.empty() && o.no_lines) throw usage_error("--lines chooses line types, --no-lines draws none: give one");
     if (o.lines_only) desc.style.draw_surface = false;
     if (o.no_lines) desc.lines.enabled = false;
     if (o.no_materials) desc.style.materials = false;

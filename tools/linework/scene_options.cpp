@@ -23,6 +23,10 @@ void add_scene_options(CLI::App* cmd, SceneOptions& o, bool offline) {
                     "Samples per pixel of the shaded surface: 1, 4 or 8 (MSAA; lines and strokes are antialiased "
                     "by their own coverage whatever this is; default: the scene's \"samples\", else 4)")
         ->check(CLI::IsMember({1, 4, 8}));
+    cmd->add_option("--lines", o.lines,
+                    "Line types to draw, comma-separated, instead of the scene's: silhouette, suggestive, crease, border "
+                    "(the default four), and rtsc's ridge, valley, apparent_ridge, suggestive_highlight, "
+                    "principal_highlight (scene keys lines.TYPE; README \"Line types\")");
     cmd->add_option("--slam", o.slam, "Draw silhouettes and suggestive contours as strokes textured by this SLAM (.exr)");
     cmd->add_option("--stroke-width", o.stroke_width, "Width of SLAM strokes in pixels (default 6)")
         ->check(CLI::PositiveNumber);
@@ -51,6 +55,31 @@ void add_scene_options(CLI::App* cmd, SceneOptions& o, bool offline) {
         ->capture_default_str();
 }
 
+namespace {
+
+// --lines: exactly these types, as the shorthand's switches (a scene with explicit line sets
+// selects its types in them).
+void choose_line_types(const std::string& list, LinesDesc& lines) {
+    if (!lines.sets.empty())
+        throw usage_error("--lines chooses the types of a scene without \"line_sets\"; this scene selects them in its line "
+                          "sets (\"select\": {\"types\": [...]})");
+    LineParams chosen = lines.params;
+    for (int t = 0; t < kLineTypeCount; ++t) set_line_type_enabled(chosen, LineType(t), false);
+    size_t start = 0;
+    while (start <= list.size()) {
+        const size_t comma = std::min(list.find(',', start), list.size());
+        const std::string name = list.substr(start, comma - start);
+        const std::optional<LineType> type = line_type_from_name(name);
+        if (!type) throw usage_error("--lines: unknown line type \"" + name + "\" (" + line_type_names() + ")");
+        set_line_type_enabled(chosen, *type, true);
+        start = comma + 1;
+    }
+    lines.params = chosen;
+    lines.enabled = true;
+}
+
+}  // namespace
+
 SceneDesc scene_from_options(const SceneOptions& o) {
     const std::filesystem::path input(o.input);
     if (!std::filesystem::exists(input)) throw Error(o.input + ": no such file");
@@ -72,6 +101,7 @@ SceneDesc scene_from_options(const SceneOptions& o) {
         desc.style.transparent = false;
     }
     if (o.samples > 0) desc.style.samples = static_cast<uint32_t>(o.samples);
+    if (!o.lines.empty()) choose_line_types(o.lines, desc.lines);
     if (!o.slam.empty()) use_slam_strokes(desc.lines, o.slam, o.stroke_width);
     return desc;
 }
