@@ -15,7 +15,7 @@ layout(local_size_x = 64) in;
 
 layout(std430, binding = 0) readonly buffer Vertices { CurvVertex vertices[]; };
 layout(std430, binding = 1) readonly buffer Faces { uvec4 faces[]; };        // corners, w: feature-edge mask
-layout(std430, binding = 2) readonly buffer FaceEdges { uvec4 face_edges[]; };  // edge opposite each corner
+layout(std430, binding = 2) readonly buffer FaceEdges { uvec4 face_edges[]; };  // edge opposite each corner, w: strip corners
 layout(std430, binding = 3) buffer Output {
     uint count;      // segments wanted (may exceed capacity: the host then retries larger)
     uint capacity;
@@ -162,9 +162,9 @@ void main() {
     }
     bool fade = (pc.flags & FLAG_FADE) != 0u;
     bool back_facing = v0.ndotv <= 0.0 && v1.ndotv <= 0.0 && v2.ndotv <= 0.0;
-    if ((pc.flags & FLAG_RIDGES) != 0u && !back_facing) ridge_face(f, corners, true, pc.thresholds.x, fade);
-    if ((pc.flags & FLAG_VALLEYS) != 0u && !back_facing) ridge_face(f, corners, false, pc.thresholds.x, fade);
-    if ((pc.flags & FLAG_APPARENT_RIDGES) != 0u) apparent_ridge_face(f, corners, pc.thresholds.y, fade);
+    if ((pc.flags & FLAG_RIDGES) != 0u && !back_facing) ridge_face(f, true, pc.thresholds.x, fade);
+    if ((pc.flags & FLAG_VALLEYS) != 0u && !back_facing) ridge_face(f, false, pc.thresholds.x, fade);
+    if ((pc.flags & FLAG_APPARENT_RIDGES) != 0u) apparent_ridge_face(f, pc.thresholds.y, fade);
     if ((pc.flags & FLAG_PRINCIPAL_HIGHLIGHTS) != 0u && !back_facing)
-        principal_highlight_face(f, corners, pc.eye.xyz, pc.thresholds.w, fade);
+        principal_highlight_face(f, pc.eye.xyz, pc.thresholds.w, fade);
 }

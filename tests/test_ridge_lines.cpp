@@ -145,6 +145,33 @@ TEST(RidgeLines, SuggestiveHighlightsAreTheOtherInflections) {
     }
 }
 
+// rtsc sees each face's corners in trimesh2's strip order: on a quad of two faces, the
+// strip starts at the second face (the last one left with a single free neighbour) from
+// the corner that leads across the shared edge, strip 3, 0, 2, 1: faces (3, 0, 2) and
+// (0, 2, 1), the second wound backwards.
+TEST(RidgeLines, StripOrderIsTrimesh2s) {
+    TriangleMesh quad;
+    quad.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+    quad.normals.assign(4, glm::vec3(0, 0, 1));
+    quad.indices = {0, 1, 2, 0, 2, 3};
+    const LineMesh lm = build_line_mesh(quad, 45.0f);
+    ASSERT_EQ(lm.mesh.faces[0], glm::uvec3(0, 1, 2));
+    ASSERT_EQ(lm.mesh.faces[1], glm::uvec3(0, 2, 3));
+    const auto corners = [&](size_t f) {
+        return glm::ivec3(strip_corner(lm.strip_corners[f], 0), strip_corner(lm.strip_corners[f], 1),
+                          strip_corner(lm.strip_corners[f], 2));
+    };
+    EXPECT_EQ(corners(1), glm::ivec3(2, 0, 1));  // vertices 3, 0, 2
+    EXPECT_EQ(corners(0), glm::ivec3(0, 2, 1));  // vertices 0, 2, 1
+    // On a closed mesh every face gets a permutation of its corners.
+    const LineMesh sphere = build_line_mesh(make_icosphere(1.0f, 2), 45.0f);
+    for (size_t f = 0; f < sphere.mesh.faces.size(); ++f) {
+        const int a = strip_corner(sphere.strip_corners[f], 0), b = strip_corner(sphere.strip_corners[f], 1),
+                  c = strip_corner(sphere.strip_corners[f], 2);
+        EXPECT_EQ((1 << a) | (1 << b) | (1 << c), 7) << f;
+    }
+}
+
 // The GPU pass gives the reference's segments for every type at once (endpoints and alpha
 // within 1e-4, same faces and keys), and each of rtsc's other lines is found on a face scan.
 struct GpuCase {

@@ -71,7 +71,7 @@ void LineExtractor::set_mesh(const LineMesh& lm) {
     std::vector<glm::uvec4> faces(lm.mesh.faces.size()), face_edges(lm.mesh.faces.size());
     for (size_t f = 0; f < faces.size(); ++f) {
         faces[f] = glm::uvec4(lm.mesh.faces[f], lm.feature_edges[f]);
-        face_edges[f] = glm::uvec4(glm::uvec3(lm.mesh.face_edges[f]), 0u);
+        face_edges[f] = glm::uvec4(glm::uvec3(lm.mesh.face_edges[f]), lm.strip_corners[f]);
     }
     if (faces.empty()) throw Error("line extraction: the mesh has no faces");
     const auto usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;

@@ -47,6 +47,7 @@ LineMesh build_line_mesh(const TriangleMesh& mesh, float crease_angle_deg) {
     line_mesh.feature_edges = feature_edge_masks(line_mesh.mesh, crease_angle_deg);
     line_mesh.vertex_arrays = line_vertex_arrays(line_mesh.mesh, line_mesh.curvature);
     vertex_face_lists(line_mesh.mesh, line_mesh.vertex_face_offsets, line_mesh.vertex_faces);
+    line_mesh.strip_corners = strip_corner_order(line_mesh.mesh, line_mesh.vertex_face_offsets, line_mesh.vertex_faces);
     line_mesh.generation = next_generation();
     return line_mesh;
 }

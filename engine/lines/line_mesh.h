@@ -14,6 +14,7 @@
 #include "geometry/curvature.h"
 #include "geometry/welded_mesh.h"
 #include "lines/line_types.h"
+#include "lines/strip_order.h"
 #include "scene/triangle_mesh.h"
 
 namespace lw {
@@ -44,6 +45,7 @@ struct LineMesh {
     // The faces around each vertex, in face order (apparent ridges, ridge_lines.h): those of
     // vertex v are vertex_faces[vertex_face_offsets[v] .. vertex_face_offsets[v + 1]).
     std::vector<uint32_t> vertex_face_offsets, vertex_faces;
+    std::vector<StripCorners> strip_corners;  // per face, the corner order rtsc sees (strip_order.h)
     // A number no other build or pose of any line mesh has had: what per-view caches of
     // view-independent lines (ExtractWorkspace) are keyed on.
     uint64_t generation = 0;

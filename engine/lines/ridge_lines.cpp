@@ -20,24 +20,40 @@ glm::vec3 unit(glm::vec3 v) {
     return {v.x * inv, v.y * inv, v.z * inv};
 }
 
-// One ridge-like segment, rtsc's draw_segment_ridge / compute_segment_app_ridge: with the
-// face's corners a = r, b = r + 1, c = r + 2 (rtsc's v0, v1, v2), the line crosses edge a–b
-// where `e` changes sign (weights |e|) and goes on to edge b–c, or to the face's centre;
-// the strength `k` is interpolated with the same weights, less `thresh`, and a piece
-// below it at both ends is dropped. `tmax` (apparent ridges): the test of Judd et al.'s
-// Fig. 6, both sides' directions of increase point at the segment.
-void ridge_segment(const LineMesh& lm, uint32_t f, int r, const float* e, const float* k, float thresh, bool to_center,
-                   bool fade, const glm::vec3* tmax, LineType type, std::vector<LineSegment>& out) {
-    const glm::uvec3 corner = lm.mesh.faces[f];
+// A face as rtsc's loop sees it: its corners in strip order (strip_order.h), v0, v1, v2.
+struct StripFace {
+    uint32_t face;
+    int corner[3];      // face-local number of v0, v1, v2
+    uint32_t vertex[3];
+};
+
+StripFace strip_face(const LineMesh& lm, uint32_t f) {
+    StripFace s{f, {}, {}};
+    for (int i = 0; i < 3; ++i) {
+        s.corner[i] = strip_corner(lm.strip_corners[f], i);
+        s.vertex[i] = lm.mesh.faces[f][s.corner[i]];
+    }
+    return s;
+}
+
+// One ridge-like segment, rtsc's draw_segment_ridge / compute_segment_app_ridge: with
+// a = v_r, b = v_(r+1), c = v_(r+2), the line crosses edge a–b where `e` changes sign
+// (weights |e|) and goes on to edge b–c, or to the face's centre; the strength `k` is
+// interpolated with the same weights, less `thresh`, and a piece below it at both ends is
+// dropped. `tmax` (apparent ridges): the test of Judd et al.'s Fig. 6, both sides'
+// directions of increase point at the segment. e, k and tmax are per v0, v1, v2.
+void ridge_segment(const LineMesh& lm, const StripFace& sf, int r, const float* e, const float* k, float thresh,
+                   bool to_center, bool fade, const glm::vec3* tmax, LineType type, std::vector<LineSegment>& out) {
     const int a = r, b = (r + 1) % 3, c = (r + 2) % 3;
-    const glm::vec3 xa = lm.mesh.positions[corner[a]], xb = lm.mesh.positions[corner[b]], xc = lm.mesh.positions[corner[c]];
+    const glm::vec3 xa = lm.mesh.positions[sf.vertex[a]], xb = lm.mesh.positions[sf.vertex[b]],
+                    xc = lm.mesh.positions[sf.vertex[c]];
     const float w10 = std::fabs(e[a]) / (std::fabs(e[a]) + std::fabs(e[b]));
     const float w01 = 1.0f - w10;
     const glm::vec3 p01 = w01 * xa + w10 * xb;
     float k01 = std::fabs(w01 * k[a] + w10 * k[b]);
     glm::vec4 bary01(0.0f), bary12(0.0f);
-    bary01[a] = w01;
-    bary01[b] = w10;
+    bary01[sf.corner[a]] = w01;
+    bary01[sf.corner[b]] = w10;
     glm::vec3 p12;
     float k12;
     uint32_t key12;
@@ -51,9 +67,9 @@ void ridge_segment(const LineMesh& lm, uint32_t f, int r, const float* e, const 
         const float w12 = 1.0f - w21;
         p12 = w12 * xb + w21 * xc;
         k12 = std::fabs(w12 * k[b] + w21 * k[c]);
-        bary12[b] = w12;
-        bary12[c] = w21;
-        key12 = uint32_t(lm.mesh.face_edges[f][a]);
+        bary12[sf.corner[b]] = w12;
+        bary12[sf.corner[c]] = w21;
+        key12 = uint32_t(lm.mesh.face_edges[sf.face][sf.corner[a]]);  // edge b–c
     }
     // Where e is exactly 0 at both ends of an edge (a symmetric mesh seen symmetrically) the
     // weight is 0/0: rtsc hands GL a NaN vertex, which draws nothing; so do we.
@@ -64,7 +80,8 @@ void ridge_segment(const LineMesh& lm, uint32_t f, int r, const float* e, const 
     if (k12 < 0.0f) k12 = 0.0f;
     if (k01 == 0.0f && k12 == 0.0f) return;
     if (tmax) {
-        // perp points from the segment towards b, whichever way the face winds.
+        // perp points from the segment towards b when (v0, v1, v2) winds as the face, away
+        // from it when the strip reversed it: rtsc's test, winding and all.
         const glm::vec3 normal = 0.5f * glm::cross(xb - xa, xc - xa);
         const glm::vec3 perp = glm::cross(normal, p01 - p12);
         if (dot3(tmax[a], perp) <= 0.0f || dot3(tmax[b], perp) >= 0.0f || dot3(tmax[c], perp) <= 0.0f) return;
@@ -74,32 +91,28 @@ void ridge_segment(const LineMesh& lm, uint32_t f, int r, const float* e, const 
         alpha01 = k01 / (k01 + thresh);
         alpha12 = k12 / (k12 + thresh);
     }
-    out.push_back({glm::vec4(p01, alpha01), glm::vec4(p12, alpha12), bary01, bary12, f, uint32_t(type),
-                   uint32_t(lm.mesh.face_edges[f][c]), key12});
+    out.push_back({glm::vec4(p01, alpha01), glm::vec4(p12, alpha12), bary01, bary12, sf.face, uint32_t(type),
+                   uint32_t(lm.mesh.face_edges[sf.face][sf.corner[c]]), key12});  // p01 on edge a–b
 }
 
 // The crossings of a ridge-like face: an edge "crosses" where the directions of increase
 // at its ends point against each other (rtsc: z01, z12, z20); then the segments rtsc draws
 // for them — from the two crossed edges, or (all three crossed, `three_to_center`) three
 // pieces to the centre.
-void crossed_face(const LineMesh& lm, uint32_t f, bool z01, bool z12, bool z20, const float* e, const float* k,
+void crossed_face(const LineMesh& lm, const StripFace& sf, bool z01, bool z12, bool z20, const float* e, const float* k,
                   float thresh, bool fade, bool three_to_center, const glm::vec3* tmax, LineType type,
                   std::vector<LineSegment>& out) {
     if (!z01) {
-        ridge_segment(lm, f, 1, e, k, thresh, false, fade, tmax, type, out);
+        ridge_segment(lm, sf, 1, e, k, thresh, false, fade, tmax, type, out);
     } else if (!z12) {
-        ridge_segment(lm, f, 2, e, k, thresh, false, fade, tmax, type, out);
+        ridge_segment(lm, sf, 2, e, k, thresh, false, fade, tmax, type, out);
     } else if (!z20) {
-        ridge_segment(lm, f, 0, e, k, thresh, false, fade, tmax, type, out);
+        ridge_segment(lm, sf, 0, e, k, thresh, false, fade, tmax, type, out);
     } else if (three_to_center) {
-        ridge_segment(lm, f, 1, e, k, thresh, true, fade, tmax, type, out);
-        ridge_segment(lm, f, 2, e, k, thresh, true, fade, tmax, type, out);
-        ridge_segment(lm, f, 0, e, k, thresh, true, fade, tmax, type, out);
+        ridge_segment(lm, sf, 1, e, k, thresh, true, fade, tmax, type, out);
+        ridge_segment(lm, sf, 2, e, k, thresh, true, fade, tmax, type, out);
+        ridge_segment(lm, sf, 0, e, k, thresh, true, fade, tmax, type, out);
     }
-}
-
-bool back_facing(const float* ndotv, const glm::uvec3& c) {
-    return ndotv[c.x] <= 0.0f && ndotv[c.y] <= 0.0f && ndotv[c.z] <= 0.0f;
 }
 
 // The eigenvalue of larger magnitude of the symmetric 2×2 matrix [m1 m12; m12 m2] and its
@@ -183,10 +196,10 @@ void apparent_derivative(const LineMesh& lm, const float* ndotv, size_t begin, s
 
 void ridge_face(const LineMesh& lm, uint32_t f, const float* ndotv, bool ridge, float thresh, bool fade,
                 std::vector<LineSegment>& out) {
-    const glm::uvec3 corner = lm.mesh.faces[f];
-    if (back_facing(ndotv, corner)) return;
+    const StripFace sf = strip_face(lm, f);
+    if (ndotv[sf.vertex[0]] <= 0.0f && ndotv[sf.vertex[1]] <= 0.0f && ndotv[sf.vertex[2]] <= 0.0f) return;
     const float* k1 = lm.curvature.k1.data();
-    const float k[3] = {k1[corner.x], k1[corner.y], k1[corner.z]};
+    const float k[3] = {k1[sf.vertex[0]], k1[sf.vertex[1]], k1[sf.vertex[2]]};
     if (ridge ? (k[0] <= 0.0f || k[1] <= 0.0f || k[2] <= 0.0f) : (k[0] >= 0.0f || k[1] >= 0.0f || k[2] >= 0.0f)) return;
     // e1 turned towards increasing k1 (decreasing for valleys): an edge crosses the line
     // where its ends' turned directions oppose (Ohtake et al. 2004).
@@ -194,9 +207,9 @@ void ridge_face(const LineMesh& lm, uint32_t f, const float* ndotv, bool ridge, 
     float e[3];
     glm::vec3 tmax[3], x[3];
     for (int i = 0; i < 3; ++i) {
-        e[i] = lm.curvature.dcurv[corner[i]].x;
-        tmax[i] = (sign * e[i]) * lm.curvature.pdir1[corner[i]];
-        x[i] = lm.mesh.positions[corner[i]];
+        e[i] = lm.curvature.dcurv[sf.vertex[i]].x;
+        tmax[i] = (sign * e[i]) * lm.curvature.pdir1[sf.vertex[i]];
+        x[i] = lm.mesh.positions[sf.vertex[i]];
     }
     bool z01 = dot3(tmax[0], tmax[1]) <= 0.0f, z12 = dot3(tmax[1], tmax[2]) <= 0.0f, z20 = dot3(tmax[2], tmax[0]) <= 0.0f;
     if (int(z01) + int(z12) + int(z20) < 2) return;
@@ -205,7 +218,7 @@ void ridge_face(const LineMesh& lm, uint32_t f, const float* ndotv, bool ridge, 
     z12 = z12 && (dot3(tmax[1], x[2] - x[1]) >= 0.0f || dot3(tmax[2], x[2] - x[1]) <= 0.0f);
     z20 = z20 && (dot3(tmax[2], x[0] - x[2]) >= 0.0f || dot3(tmax[0], x[0] - x[2]) <= 0.0f);
     if (int(z01) + int(z12) + int(z20) < 2) return;
-    crossed_face(lm, f, z01, z12, z20, e, k, thresh, fade, true, nullptr, ridge ? LineType::Ridge : LineType::Valley, out);
+    crossed_face(lm, sf, z01, z12, z20, e, k, thresh, fade, true, nullptr, ridge ? LineType::Ridge : LineType::Valley, out);
 }
 
 namespace {
@@ -229,38 +242,39 @@ void highlight_vertices(const LineMesh& lm, const glm::vec3& eye, const float* n
 
 void principal_highlight_face(const LineMesh& lm, uint32_t f, const float* ndotv, const float* along_e1,
                               const float* strength_at, float thresh, bool fade, std::vector<LineSegment>& out) {
-    const glm::uvec3 corner = lm.mesh.faces[f];
-    if (back_facing(ndotv, corner)) return;
+    const StripFace sf = strip_face(lm, f);
+    const uint32_t* v = sf.vertex;
+    if (ndotv[v[0]] <= 0.0f && ndotv[v[1]] <= 0.0f && ndotv[v[2]] <= 0.0f) return;
     // A face whose corners are all below the threshold draws nothing (ridge_lines.h).
-    if (!strong(strength_at[corner.x], thresh) && !strong(strength_at[corner.y], thresh) &&
-        !strong(strength_at[corner.z], thresh))
+    if (!strong(strength_at[v[0]], thresh) && !strong(strength_at[v[1]], thresh) && !strong(strength_at[v[2]], thresh))
         return;
     const SurfaceCurvature& c = lm.curvature;
-    const float k[3] = {c.k1[corner.x], c.k1[corner.y], c.k1[corner.z]};
+    const float k[3] = {c.k1[v[0]], c.k1[v[1]], c.k1[v[2]]};
     // rtsc's two flavours, its "ridge" then its "valley" pass.
     for (const bool convex : {true, false}) {
         if (convex ? std::min({k[0], k[1], k[2]}) < 0.0f : std::max({k[0], k[1], k[2]}) > 0.0f) continue;
-        // The e1 turned to agree with the first corner's; none may turn by more than 45°.
-        // (v·(−e1) is −(v·e1) to the bit: turning e1 turns the vertex's value.)
-        const glm::vec3 reference = c.pdir1[corner.x];
+        // Each e1 turned to agree with v0's (strip order: rtsc's "largest |k1|" comment
+        // notwithstanding, it takes v0's); none may turn by more than 45°. v·(−e1) is
+        // −(v·e1) to the bit, so turning e1 turns the vertex's value.
+        const glm::vec3 reference = c.pdir1[v[0]];
         bool agree = true;
         float along[3], strength[3];
         for (int i = 0; i < 3; ++i) {
-            glm::vec3 d = c.pdir1[corner[i]];
-            along[i] = along_e1[corner[i]];
-            strength[i] = strength_at[corner[i]];
-            if (dot3(d, reference) < 0.0f) {
-                d = -d;
+            float agreement = dot3(c.pdir1[v[i]], reference);
+            along[i] = along_e1[v[i]];
+            strength[i] = strength_at[v[i]];
+            if (agreement < 0.0f) {
+                agreement = -agreement;
                 along[i] = -along[i];
             }
             // rtsc: give up where the dot product is below √½ (a double): for a float that
             // is ≤ the float just below √½ (shaders/lines_ridges.glsl compares the same).
-            agree = agree && !(dot3(d, reference) <= 0.70710677f);
+            agree = agree && !(agreement <= 0.70710677f);
         }
         if (!agree) continue;
         const bool z01 = along[0] * along[1] <= 0.0f, z12 = along[1] * along[2] <= 0.0f, z20 = along[2] * along[0] <= 0.0f;
         if (int(z01) + int(z12) + int(z20) < 2) continue;
-        crossed_face(lm, f, z01, z12, z20, along, strength, thresh, fade, false, nullptr, LineType::PrincipalHighlight, out);
+        crossed_face(lm, sf, z01, z12, z20, along, strength, thresh, fade, false, nullptr, LineType::PrincipalHighlight, out);
     }
 }
 
@@ -268,20 +282,20 @@ void apparent_ridge_face(const LineMesh& lm, uint32_t f, const ApparentVertex* a
                          std::vector<LineSegment>& out) {
     // No back-face culling: rtsc keeps faces that are just back-facing, so that apparent
     // ridges reach the contours they end at.
-    const glm::uvec3 corner = lm.mesh.faces[f];
-    const ApparentVertex q[3] = {apparent[corner.x], apparent[corner.y], apparent[corner.z]};
+    const StripFace sf = strip_face(lm, f);
+    const ApparentVertex q[3] = {apparent[sf.vertex[0]], apparent[sf.vertex[1]], apparent[sf.vertex[2]]};
     if (q[0].q1 <= thresh && q[1].q1 <= thresh && q[2].q1 <= thresh) return;
     const float k[3] = {q[0].q1, q[1].q1, q[2].q1};
     const float e[3] = {q[0].dt1q1, q[1].dt1q1, q[2].dt1q1};
     glm::vec3 tmax[3];
     for (int i = 0; i < 3; ++i) {
-        const glm::vec3 t1 = q[i].t1x * lm.curvature.pdir1[corner[i]] + q[i].t1y * lm.curvature.pdir2[corner[i]];
+        const glm::vec3 t1 = q[i].t1x * lm.curvature.pdir1[sf.vertex[i]] + q[i].t1y * lm.curvature.pdir2[sf.vertex[i]];
         tmax[i] = q[i].dt1q1 * t1;
     }
     const bool z01 = dot3(tmax[0], tmax[1]) <= 0.0f, z12 = dot3(tmax[1], tmax[2]) <= 0.0f,
                z20 = dot3(tmax[2], tmax[0]) <= 0.0f;
     if (int(z01) + int(z12) + int(z20) < 2) return;
-    crossed_face(lm, f, z01, z12, z20, e, k, thresh, fade, true, tmax, LineType::ApparentRidge, out);
+    crossed_face(lm, sf, z01, z12, z20, e, k, thresh, fade, true, tmax, LineType::ApparentRidge, out);
 }
 
 }  // namespace lw
