@@ -251,8 +251,12 @@ TEST_F(CoherenceGpu, ScaleFollowsTheViewsZoomAndTheTextureStaysOnTheSurface) {
             if (frame == 0) t_middle = t;
             // Within a pixel's worth of T at the starting scale (the votes' rounding).
             EXPECT_NEAR(t, t_middle, rho_start) << line_type_name(type) << ", frame " << frame;
-            if (frame < 4) EXPECT_EQ(std::abs(out[0].rho), rho_start) << frame;  // a still view: exactly
-            if (frame > 0 && frame < 4) EXPECT_TRUE(out[0].fitted) << frame;
+            if (frame < 4) {
+                EXPECT_EQ(std::abs(out[0].rho), rho_start) << frame;  // a still view: exactly
+            }
+            if (frame > 0 && frame < 4) {
+                EXPECT_TRUE(out[0].fitted) << frame;
+            }
         }
         EXPECT_NEAR(zoom, 1.79f, 0.01f);  // past √2: T's octave folds once
     }

@@ -286,10 +286,12 @@ void face_pass(const LineMesh& lm, const ExtractWorkspace& ws, const LineParams&
         for (uint32_t f = begin; f < end; ++f) apparent_ridge_face(lm, f, ws.apparent.data(), t.ar_thresh, params.fade, out);
     if (params.principal_highlights)
         for (uint32_t f = begin; f < end; ++f) {
+            const uint8_t shape = ws.principal_shapes[f];
+            if (!(shape & (kPrincipalConvex | kPrincipalConcave))) continue;
             const glm::uvec3 c = faces[f];
             const uint8_t* flags = ws.principal_flags.data();
             if (principal_highlight_candidate(flags[c.x], flags[c.y], flags[c.z]))
-                principal_highlight_face(lm, f, ndotv, ws.principal_along.data(), ws.principal_strength.data(),
+                principal_highlight_face(lm, f, shape, ws.principal_along.data(), ws.principal_strength.data(),
                                          t.ph_thresh, params.fade, out);
         }
 }
@@ -311,6 +313,10 @@ void extract_lines_reference(const LineMesh& lm, const glm::vec3& eye, const Lin
         ws.principal_along.resize(nv);
         ws.principal_strength.resize(nv);
         ws.principal_flags.resize(nv);
+        if (ws.principal_generation != lm.generation) {
+            ws.principal_shapes = principal_highlight_shapes(lm);
+            ws.principal_generation = lm.generation;
+        }
     }
     if (params.ridges || params.valleys) fill_ridge_cache(lm, params, thresholds.rv_thresh, kBlockFaces, ws.ridge_cache);
     const size_t faces = lm.mesh.faces.size();

@@ -33,6 +33,8 @@ struct ExtractWorkspace {
     std::vector<ApparentVertex> apparent;    // apparent ridges' view-dependent curvature (when drawn)
     std::vector<float> principal_along, principal_strength;  // principal highlights' (when drawn)
     std::vector<uint8_t> principal_flags;
+    uint64_t principal_generation = 0;  // LineMesh::generation of principal_shapes
+    std::vector<uint8_t> principal_shapes;  // per face, view-independent (principal_highlight_shapes)
     // Ridges and valleys do not depend on the view but for back-face culling: found once per
     // mesh pose and threshold (all faces, culling aside), each view keeps those on faces
     // not back-facing. Per type, the segments in face order and where each face block starts.

@@ -44,41 +44,42 @@ StripFace strip_face(const LineMesh& lm, uint32_t f) {
 // directions of increase point at the segment. e, k and tmax are per v0, v1, v2.
 void ridge_segment(const LineMesh& lm, const StripFace& sf, int r, const float* e, const float* k, float thresh,
                    bool to_center, bool fade, const glm::vec3* tmax, LineType type, std::vector<LineSegment>& out) {
+    // The strengths first (most pieces end there), then the points: the same values as
+    // rtsc's order gives.
     const int a = r, b = (r + 1) % 3, c = (r + 2) % 3;
-    const glm::vec3 xa = lm.mesh.positions[sf.vertex[a]], xb = lm.mesh.positions[sf.vertex[b]],
-                    xc = lm.mesh.positions[sf.vertex[c]];
     const float w10 = std::fabs(e[a]) / (std::fabs(e[a]) + std::fabs(e[b]));
     const float w01 = 1.0f - w10;
-    const glm::vec3 p01 = w01 * xa + w10 * xb;
     float k01 = std::fabs(w01 * k[a] + w10 * k[b]);
-    glm::vec4 bary01(0.0f), bary12(0.0f);
-    bary01[sf.corner[a]] = w01;
-    bary01[sf.corner[b]] = w10;
-    glm::vec3 p12;
-    float k12;
-    uint32_t key12;
+    float w21 = 0.0f, w12 = 0.0f, k12;
     if (to_center) {
-        p12 = (xa + xb + xc) / 3.0f;
         k12 = std::fabs(k[a] + k[b] + k[c]) / 3.0f;
-        bary12 = glm::vec4(1.0f / 3.0f, 1.0f / 3.0f, 1.0f / 3.0f, 0.0f);
-        key12 = kNoKey;
     } else {
-        const float w21 = std::fabs(e[b]) / (std::fabs(e[b]) + std::fabs(e[c]));
-        const float w12 = 1.0f - w21;
-        p12 = w12 * xb + w21 * xc;
+        w21 = std::fabs(e[b]) / (std::fabs(e[b]) + std::fabs(e[c]));
+        w12 = 1.0f - w21;
         k12 = std::fabs(w12 * k[b] + w21 * k[c]);
-        bary12[sf.corner[b]] = w12;
-        bary12[sf.corner[c]] = w21;
-        key12 = uint32_t(lm.mesh.face_edges[sf.face][sf.corner[a]]);  // edge b–c
     }
-    // Where e is exactly 0 at both ends of an edge (a symmetric mesh seen symmetrically) the
-    // weight is 0/0: rtsc hands GL a NaN vertex, which draws nothing; so do we.
-    if (!std::isfinite(p01.x + p01.y + p01.z + p12.x + p12.y + p12.z)) return;
     k01 -= thresh;
     if (k01 < 0.0f) k01 = 0.0f;
     k12 -= thresh;
     if (k12 < 0.0f) k12 = 0.0f;
     if (k01 == 0.0f && k12 == 0.0f) return;
+    const glm::vec3 xa = lm.mesh.positions[sf.vertex[a]], xb = lm.mesh.positions[sf.vertex[b]],
+                    xc = lm.mesh.positions[sf.vertex[c]];
+    const glm::vec3 p01 = w01 * xa + w10 * xb;
+    const glm::vec3 p12 = to_center ? (xa + xb + xc) / 3.0f : w12 * xb + w21 * xc;
+    // Where e is exactly 0 at both ends of an edge (a symmetric mesh seen symmetrically) the
+    // weight is 0/0: rtsc hands GL a NaN vertex, which draws nothing; so do we.
+    if (!std::isfinite(p01.x + p01.y + p01.z + p12.x + p12.y + p12.z)) return;
+    glm::vec4 bary01(0.0f), bary12(1.0f / 3.0f, 1.0f / 3.0f, 1.0f / 3.0f, 0.0f);
+    bary01[sf.corner[a]] = w01;
+    bary01[sf.corner[b]] = w10;
+    uint32_t key12 = kNoKey;  // the centre
+    if (!to_center) {
+        bary12 = glm::vec4(0.0f);
+        bary12[sf.corner[b]] = w12;
+        bary12[sf.corner[c]] = w21;
+        key12 = uint32_t(lm.mesh.face_edges[sf.face][sf.corner[a]]);  // edge b–c
+    }
     if (tmax) {
         // perp points from the segment towards b when (v0, v1, v2) winds as the face, away
         // from it when the strip reversed it: rtsc's test, winding and all.
@@ -240,42 +241,51 @@ void highlight_vertices(const LineMesh& lm, const glm::vec3& eye, const float* n
     }
 }
 
-void principal_highlight_face(const LineMesh& lm, uint32_t f, const float* ndotv, const float* along_e1,
-                              const float* strength_at, float thresh, bool fade, std::vector<LineSegment>& out) {
-    const StripFace sf = strip_face(lm, f);
-    const uint32_t* v = sf.vertex;
-    if (ndotv[v[0]] <= 0.0f && ndotv[v[1]] <= 0.0f && ndotv[v[2]] <= 0.0f) return;
-    // A face whose corners are all below the threshold draws nothing (ridge_lines.h).
-    if (!strong(strength_at[v[0]], thresh) && !strong(strength_at[v[1]], thresh) && !strong(strength_at[v[2]], thresh))
-        return;
+std::vector<uint8_t> principal_highlight_shapes(const LineMesh& lm) {
     const SurfaceCurvature& c = lm.curvature;
-    const float k[3] = {c.k1[v[0]], c.k1[v[1]], c.k1[v[2]]};
-    // rtsc's two flavours, its "ridge" then its "valley" pass.
-    for (const bool convex : {true, false}) {
-        if (convex ? std::min({k[0], k[1], k[2]}) < 0.0f : std::max({k[0], k[1], k[2]}) > 0.0f) continue;
+    std::vector<uint8_t> shapes(lm.mesh.faces.size());
+    for (uint32_t f = 0; f < shapes.size(); ++f) {
+        const StripFace sf = strip_face(lm, f);
+        const uint32_t* v = sf.vertex;
         // Each e1 turned to agree with v0's (strip order: rtsc's "largest |k1|" comment
-        // notwithstanding, it takes v0's); none may turn by more than 45°. v·(−e1) is
-        // −(v·e1) to the bit, so turning e1 turns the vertex's value.
+        // notwithstanding, it takes v0's); none may turn by more than 45°.
         const glm::vec3 reference = c.pdir1[v[0]];
         bool agree = true;
-        float along[3], strength[3];
+        uint8_t shape = 0;
         for (int i = 0; i < 3; ++i) {
             float agreement = dot3(c.pdir1[v[i]], reference);
-            along[i] = along_e1[v[i]];
-            strength[i] = strength_at[v[i]];
             if (agreement < 0.0f) {
                 agreement = -agreement;
-                along[i] = -along[i];
+                shape |= uint8_t(kPrincipalFlip << i);
             }
             // rtsc: give up where the dot product is below √½ (a double): for a float that
             // is ≤ the float just below √½ (shaders/lines_ridges.glsl compares the same).
             agree = agree && !(agreement <= 0.70710677f);
         }
-        if (!agree) continue;
-        const bool z01 = along[0] * along[1] <= 0.0f, z12 = along[1] * along[2] <= 0.0f, z20 = along[2] * along[0] <= 0.0f;
-        if (int(z01) + int(z12) + int(z20) < 2) continue;
-        crossed_face(lm, sf, z01, z12, z20, along, strength, thresh, fade, false, nullptr, LineType::PrincipalHighlight, out);
+        const float k[3] = {c.k1[v[0]], c.k1[v[1]], c.k1[v[2]]};
+        // rtsc's two flavours, its "ridge" and its "valley" pass.
+        if (agree && !(std::min({k[0], k[1], k[2]}) < 0.0f)) shape |= kPrincipalConvex;
+        if (agree && !(std::max({k[0], k[1], k[2]}) > 0.0f)) shape |= kPrincipalConcave;
+        shapes[f] = shape;
     }
+    return shapes;
+}
+
+void principal_highlight_face(const LineMesh& lm, uint32_t f, uint8_t shape, const float* along_e1,
+                              const float* strength_at, float thresh, bool fade, std::vector<LineSegment>& out) {
+    const StripFace sf = strip_face(lm, f);
+    // v·(−e1) is −(v·e1) to the bit, so turning e1 turns the vertex's value.
+    float along[3], strength[3];
+    for (int i = 0; i < 3; ++i) {
+        along[i] = shape & (kPrincipalFlip << i) ? -along_e1[sf.vertex[i]] : along_e1[sf.vertex[i]];
+        strength[i] = strength_at[sf.vertex[i]];
+    }
+    const bool z01 = along[0] * along[1] <= 0.0f, z12 = along[1] * along[2] <= 0.0f, z20 = along[2] * along[0] <= 0.0f;
+    if (int(z01) + int(z12) + int(z20) < 2) return;
+    for (const uint8_t flavour : {kPrincipalConvex, kPrincipalConcave})  // both where every k1 is 0, as in rtsc
+        if (shape & flavour)
+            crossed_face(lm, sf, z01, z12, z20, along, strength, thresh, fade, false, nullptr, LineType::PrincipalHighlight,
+                         out);
 }
 
 void apparent_ridge_face(const LineMesh& lm, uint32_t f, const ApparentVertex* apparent, float thresh, bool fade,

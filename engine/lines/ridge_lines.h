@@ -63,7 +63,14 @@ void highlight_vertices(const LineMesh& mesh, const glm::vec3& eye, const float*
 // back-facing and one whose strength is not below the threshold (an interpolated strength
 // is at most the larger of its ends', to 3 ulp, and below the threshold nothing is drawn).
 inline bool principal_highlight_candidate(uint8_t a, uint8_t b, uint8_t c) { return (a | b | c) == 3u; }
-void principal_highlight_face(const LineMesh& mesh, uint32_t face, const float* ndotv, const float* along,
+// What of a face's principal highlight does not depend on the view, a byte per face:
+// kPrincipalConvex / kPrincipalConcave where that flavour may draw (its k1 signs, and e1
+// turning by at most 45° from v0's), kPrincipalFlip << i where v_i's e1 is turned.
+constexpr uint8_t kPrincipalConvex = 1, kPrincipalConcave = 2, kPrincipalFlip = 4;
+[[nodiscard]] std::vector<uint8_t> principal_highlight_shapes(const LineMesh& mesh);
+// One face's principal highlights, for a face whose shape has a flavour and whose corners'
+// bytes make it a candidate (the caller's tests: rtsc's back-face culling among them).
+void principal_highlight_face(const LineMesh& mesh, uint32_t face, uint8_t shape, const float* along,
                               const float* strength, float ph_thresh, bool fade, std::vector<LineSegment>& out);
 void apparent_ridge_face(const LineMesh& mesh, uint32_t face, const ApparentVertex* apparent, float ar_thresh,
                          bool fade, std::vector<LineSegment>& out);
