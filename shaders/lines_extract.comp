@@ -36,6 +36,23 @@ void append(LineSegment s) {
 
 #include "lines_ridges.glsl"
 
+// A mesh edge as a segment: the edge opposite corner i, keyed by its vertices.
+void feature_edge(uint f, uvec3 corners, int i, uint type) {
+    int j = (i + 1) % 3, k = (i + 2) % 3;
+    LineSegment s;
+    s.p0 = vec4(vertices[corners[j]].position.xyz, 1.0);
+    s.p1 = vec4(vertices[corners[k]].position.xyz, 1.0);
+    s.bary0 = vec4(0.0);
+    s.bary1 = vec4(0.0);
+    s.bary0[j] = 1.0;
+    s.bary1[k] = 1.0;
+    s.face = f;
+    s.type = type;
+    s.key0 = corners[j];
+    s.key1 = corners[k];
+    append(s);
+}
+
 // rtsc's draw_face_isoline2 from the lone vertex, with the test trimming and fade alpha.
 void face_isoline(uint f, uvec3 corners, vec3 val, vec3 num, vec3 den, bool has_den, float fade, uint type) {
     int a;
@@ -132,20 +149,9 @@ void main() {
     for (int i = 0; i < 3; ++i) {
         bool crease = (pc.flags & FLAG_CREASES) != 0u && (mask & (1u << i)) != 0u;
         bool border = (pc.flags & FLAG_BORDERS) != 0u && (mask & (8u << i)) != 0u;
-        if (!crease && !border) continue;
-        int j = (i + 1) % 3, k = (i + 2) % 3;
-        LineSegment s;
-        s.p0 = vec4(vertices[corners[j]].position.xyz, 1.0);
-        s.p1 = vec4(vertices[corners[k]].position.xyz, 1.0);
-        s.bary0 = vec4(0.0);
-        s.bary1 = vec4(0.0);
-        s.bary0[j] = 1.0;
-        s.bary1[k] = 1.0;
-        s.face = f;
-        s.type = border ? LINE_BORDER : LINE_CREASE;
-        s.key0 = corners[j];
-        s.key1 = corners[k];
-        append(s);
+        bool boundary = (pc.flags & FLAG_MATERIAL_BOUNDARIES) != 0u && (mask & (64u << i)) != 0u;
+        if (crease || border) feature_edge(f, corners, i, border ? LINE_BORDER : LINE_CREASE);
+        if (boundary) feature_edge(f, corners, i, LINE_MATERIAL_BOUNDARY);  // also: either nature may be selected
     }
 
     // rtsc's other lines (off by default).

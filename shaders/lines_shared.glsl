@@ -12,6 +12,7 @@
 #define LINE_APPARENT_RIDGE 6u
 #define LINE_SUGGESTIVE_HIGHLIGHT 7u
 #define LINE_PRINCIPAL_HIGHLIGHT 8u
+#define LINE_MATERIAL_BOUNDARY 9u
 #define NO_KEY 0xffffffffu
 
 // Bits of LinesPush.flags: bit t draws LineType t; FLAG_FADE fades rtsc's other lines.
@@ -24,7 +25,8 @@
 #define FLAG_APPARENT_RIDGES 64u
 #define FLAG_SUGGESTIVE_HIGHLIGHTS 128u
 #define FLAG_PRINCIPAL_HIGHLIGHTS 256u
-#define FLAG_FADE 512u
+#define FLAG_MATERIAL_BOUNDARIES 512u
+#define FLAG_FADE 1024u
 
 // The push constants of every line extraction pass (LinesPush in extract_gpu.cpp).
 #define LINES_PUSH_CONSTANTS                                                           \

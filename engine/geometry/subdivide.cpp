@@ -11,6 +11,7 @@ TriangleMesh subdivide_once(const TriangleMesh& in) {
     out.positions = in.positions;
     out.normals = in.normals;
     out.texcoords = in.texcoords;
+    out.part_count = in.part_count;
     const bool textured = in.texcoords.size() == in.positions.size();
     out.indices.reserve(in.indices.size() * 4);
     std::unordered_map<uint64_t, uint32_t> midpoints;
@@ -33,6 +34,7 @@ TriangleMesh subdivide_once(const TriangleMesh& in) {
         // Four triangles with the parent's winding.
         for (uint32_t i : {a, ab, ca, ab, b, bc, ca, bc, c, ab, bc, ca}) out.indices.push_back(i);
         if (t / 3 < in.face_material.size()) out.face_material.insert(out.face_material.end(), 4, in.face_material[t / 3]);
+        if (t / 3 < in.face_part.size()) out.face_part.insert(out.face_part.end(), 4, in.face_part[t / 3]);
     }
     return out;
 }

@@ -31,7 +31,7 @@ struct VertexView {  // mirrors VertexView in shaders/lines_shared.glsl
     uint32_t signs;
 };
 static_assert(sizeof(LinesPush) == 48);
-constexpr uint32_t kFlagFade = 512u;  // FLAG_FADE
+constexpr uint32_t kFlagFade = 1024u;  // FLAG_FADE
 constexpr VkDeviceSize kHeaderBytes = 16;  // count, capacity, 2 × pad
 
 }  // namespace

@@ -219,10 +219,7 @@ void face_isoline(const LineMesh& lm, uint32_t f, const float* val, const float*
 
 void feature_edges(const LineMesh& lm, uint32_t f, uint32_t mask, const LineParams& params, std::vector<LineSegment>& out) {
     const glm::uvec3 corners = lm.mesh.faces[f];
-    for (int i = 0; i < 3; ++i) {
-        const bool crease = params.creases && (mask & (kCreaseBit << i));
-        const bool border = params.borders && (mask & (kBorderBit << i));
-        if (!crease && !border) continue;
+    const auto edge = [&](int i, LineType type) {
         const int j = (i + 1) % 3, k = (i + 2) % 3;
         LineSegment& s = out.emplace_back();  // value-initialized: zeros
         s.p0 = glm::vec4(lm.mesh.positions[corners[j]], 1.0f);
@@ -230,9 +227,16 @@ void feature_edges(const LineMesh& lm, uint32_t f, uint32_t mask, const LinePara
         s.bary0[j] = 1.0f;
         s.bary1[k] = 1.0f;
         s.face = f;
-        s.type = uint32_t(border ? LineType::Border : LineType::Crease);
+        s.type = uint32_t(type);
         s.key0 = corners[j];
         s.key1 = corners[k];
+    };
+    for (int i = 0; i < 3; ++i) {
+        const bool crease = params.creases && (mask & (kCreaseBit << i));
+        const bool border = params.borders && (mask & (kBorderBit << i));
+        if (crease || border) edge(i, border ? LineType::Border : LineType::Crease);
+        // An edge between parts is also a boundary (a set may select either nature).
+        if (params.material_boundaries && (mask & (kPartBoundaryBit << i))) edge(i, LineType::MaterialBoundary);
     }
 }
 
@@ -253,7 +257,7 @@ void face_pass(const LineMesh& lm, const ExtractWorkspace& ws, const LineParams&
     const float fade = t.fade;
     const glm::uvec3* faces = lm.mesh.faces.data();
     const uint32_t* feature_masks = lm.feature_edges.data();
-    const bool features = params.creases || params.borders;
+    const bool features = params.creases || params.borders || params.material_boundaries;
     std::array<uint32_t, kBlockFaces + 8> suggestive, contour;  // + 8: the scan writes past its counts
     const FaceCandidates n = scan_faces(faces, begin, end, ws.signs.data(), suggestive.data(), contour.data());
 

@@ -14,7 +14,8 @@ uint64_t next_generation() {
 
 }  // namespace
 
-std::vector<uint32_t> feature_edge_masks(const WeldedMesh& mesh, float crease_angle_deg) {
+std::vector<uint32_t> feature_edge_masks(const WeldedMesh& mesh, float crease_angle_deg,
+                                         const std::vector<uint32_t>& face_part) {
     std::vector<glm::vec3> face_normals(mesh.faces.size());
     for (size_t f = 0; f < mesh.faces.size(); ++f) {
         const glm::uvec3 c = mesh.faces[f];
@@ -34,6 +35,8 @@ std::vector<uint32_t> feature_edge_masks(const WeldedMesh& mesh, float crease_an
                 // Creases where the face normals turn by more than the angle (dihedral test).
                 const float d = glm::dot(face_normals[size_t(edge.f[0])], face_normals[size_t(edge.f[1])]);
                 if (d < cos_limit) masks[f] |= kCreaseBit << i;
+                if (!face_part.empty() && face_part[size_t(edge.f[0])] != face_part[size_t(edge.f[1])])
+                    masks[f] |= kPartBoundaryBit << i;
             }
         }
     return masks;
@@ -44,7 +47,9 @@ LineMesh build_line_mesh(const TriangleMesh& mesh, float crease_angle_deg) {
     line_mesh.mesh = weld(mesh);
     line_mesh.curvature = compute_curvature(line_mesh.mesh);
     line_mesh.feature_size = feature_size(line_mesh.mesh, line_mesh.curvature);
-    line_mesh.feature_edges = feature_edge_masks(line_mesh.mesh, crease_angle_deg);
+    if (mesh.face_part.size() == mesh.triangle_count())
+        for (uint32_t source : line_mesh.mesh.source_face) line_mesh.face_part.push_back(mesh.face_part[source]);
+    line_mesh.feature_edges = feature_edge_masks(line_mesh.mesh, crease_angle_deg, line_mesh.face_part);
     line_mesh.vertex_arrays = line_vertex_arrays(line_mesh.mesh, line_mesh.curvature);
     vertex_face_lists(line_mesh.mesh, line_mesh.vertex_face_offsets, line_mesh.vertex_faces);
     line_mesh.strip_corners = strip_corner_order(line_mesh.mesh, line_mesh.vertex_face_offsets, line_mesh.vertex_faces);

@@ -20,10 +20,12 @@
 namespace lw {
 
 // Bits of `LineMesh::feature_edges[f]`: bit i = edge i of face f (opposite corner i) is a
-// crease, bit 3 + i = it is a border. A shared edge is owned by its first face only, so
-// each feature edge is emitted once.
+// crease, bit 3 + i = it is a border, bit 6 + i = its two faces come from different parts
+// (primitives of the scene's nodes: a material or object boundary). A shared edge is owned
+// by its first face only, so each feature edge is emitted once per kind.
 constexpr uint32_t kCreaseBit = 1u;
 constexpr uint32_t kBorderBit = 8u;
+constexpr uint32_t kPartBoundaryBit = 64u;
 
 // What the host's per-vertex pass reads, one array per component (structure of arrays), so
 // that its loop over vertices is one the compiler vectorizes and reads nothing else: the
@@ -41,6 +43,7 @@ struct LineMesh {
     SurfaceCurvature curvature;
     float feature_size = 0.0f;
     std::vector<uint32_t> feature_edges;
+    std::vector<uint32_t> face_part;  // per face, TriangleMesh::face_part of its source triangle (empty: one part)
     LineVertexArrays vertex_arrays;  // of mesh.positions and curvature, kept in step with them
     // The faces around each vertex, in face order (apparent ridges, ridge_lines.h): those of
     // vertex v are vertex_faces[vertex_face_offsets[v] .. vertex_face_offsets[v + 1]).
@@ -63,7 +66,9 @@ void pose_line_mesh(LineMesh& line_mesh, const TriangleMesh& posed);
 // The faces around each vertex, in face order, as `LineMesh::vertex_faces` holds them.
 void vertex_face_lists(const WeldedMesh& mesh, std::vector<uint32_t>& offsets, std::vector<uint32_t>& faces);
 
-// Recomputes the feature-edge masks for another crease angle.
-[[nodiscard]] std::vector<uint32_t> feature_edge_masks(const WeldedMesh& mesh, float crease_angle_deg);
+// The feature-edge masks for a crease angle; `face_part` (per face, or empty) marks the
+// boundaries between parts.
+[[nodiscard]] std::vector<uint32_t> feature_edge_masks(const WeldedMesh& mesh, float crease_angle_deg,
+                                                       const std::vector<uint32_t>& face_part);
 
 }  // namespace lw

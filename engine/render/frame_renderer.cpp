@@ -60,6 +60,11 @@ std::vector<SvgGroup> line_set_svg_groups(const LinesDesc& lines, const Frame& f
         groups[out.set].paths = &out.paths;
         if (with_shapes) add_svg_shapes(lines, sets[out.set], out, groups[out.set]);
     }
+    // The shorthand has a set per type (its index); the default four always have a group,
+    // the types off by default only when they are drawn.
+    if (lines.sets.empty())
+        for (size_t t = groups.size(); t-- > 0;)
+            if (!sets[t].enabled && !(kDefaultLineTypes & (1u << t))) groups.erase(groups.begin() + std::ptrdiff_t(t));
     return groups;
 }
 

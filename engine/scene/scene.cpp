@@ -23,6 +23,8 @@ void append_mesh(TriangleMesh& mesh, const TriangleMesh& part) {
     mesh.indices.reserve(mesh.indices.size() + part.indices.size());
     for (uint32_t i : part.indices) mesh.indices.push_back(i + offset);
     mesh.face_material.insert(mesh.face_material.end(), part.face_material.begin(), part.face_material.end());
+    for (uint32_t p : part.face_part) mesh.face_part.push_back(mesh.part_count + p);
+    mesh.part_count += part.part_count;
 }
 
 LoadedScene load_scene(const SceneDesc& desc) {

@@ -117,6 +117,7 @@ void append_instance(TriangleMesh& out, const Model& model, const Primitive& pri
     out.indices.reserve(out.indices.size() + local.size());
     for (uint32_t index : local) out.indices.push_back(static_cast<uint32_t>(base + index));
     out.face_material.insert(out.face_material.end(), local.size() / 3, primitive.material);
+    out.face_part.insert(out.face_part.end(), local.size() / 3, out.part_count++);
 }
 
 }  // namespace

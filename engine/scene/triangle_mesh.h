@@ -28,6 +28,11 @@ struct TriangleMesh {
     std::vector<glm::vec2> texcoords;
     std::vector<uint32_t> indices;    // 3 per triangle
     std::vector<int32_t> face_material;  // per triangle: its primitive's glTF material, -1 for none
+    // Per triangle: which primitive instance (a node's primitive; numbered over the scene's
+    // models in mesh order) it comes from. Material and object boundaries are drawn
+    // between faces of different parts (lines/line_mesh.h).
+    std::vector<uint32_t> face_part;
+    uint32_t part_count = 0;
 
     size_t triangle_count() const { return indices.size() / 3; }
 };

@@ -24,8 +24,9 @@ enum class LineType : uint32_t {
     ApparentRidge = 6,
     SuggestiveHighlight = 7,
     PrincipalHighlight = 8,
+    MaterialBoundary = 9,  // between faces of different primitives (materials, objects)
 };
-constexpr int kLineTypeCount = 9;
+constexpr int kLineTypeCount = 10;
 
 // The types a line set selects when it does not say: those drawn by default.
 constexpr uint32_t kDefaultLineTypes = 0xfu;
@@ -34,7 +35,8 @@ constexpr uint32_t kDefaultLineTypes = 0xfu;
 inline const char* line_type_name(LineType type) {
     constexpr const char* names[kLineTypeCount] = {"silhouette",     "suggestive",           "crease",
                                                    "border",         "ridge",                "valley",
-                                                   "apparent_ridge", "suggestive_highlight", "principal_highlight"};
+                                                   "apparent_ridge", "suggestive_highlight", "principal_highlight",
+                                                   "material_boundary"};
     return names[static_cast<uint32_t>(type) % kLineTypeCount];
 }
 
@@ -64,6 +66,7 @@ struct LineParams {
     bool apparent_ridges = false;
     bool suggestive_highlights = false;
     bool principal_highlights = false;
+    bool material_boundaries = false;
     float sug_thresh = 0.01f;        // tanθ·DwKr threshold, scaled by 1 / feature_size²
     bool fade = true;                // fade lines in as their test grows (rtsc's draw_faded)
     float fade_thresh = 0.03f;       // alpha = t / (t + fade_thresh / fs²) (suggestive contours and highlights)
@@ -87,6 +90,7 @@ auto line_type_switch(Params& p, LineType type) -> decltype(&p.silhouettes) {
         case LineType::ApparentRidge: return &p.apparent_ridges;
         case LineType::SuggestiveHighlight: return &p.suggestive_highlights;
         case LineType::PrincipalHighlight: return &p.principal_highlights;
+        case LineType::MaterialBoundary: return &p.material_boundaries;
     }
     return &p.silhouettes;  // unreachable: every enumerator is listed
 }
