@@ -168,7 +168,7 @@ TEST(LineSets, BadKeysNameThemselves) {
         {R"([{"select": {}}])", "line_sets[0].name: required"},
         {R"([{"name": "a b"}])", "line_sets[0].name: letters, digits"},
         {R"([{"name": "a"}, {"name": "a"}])", "line_sets[1].name: \"a\" is used by an earlier set"},
-        {R"([{"name": "a", "select": {"types": ["ridge"]}}])", "line_sets[0].select.types: unknown line type \"ridge\""},
+        {R"([{"name": "a", "select": {"types": ["outline"]}}])", "line_sets[0].select.types: unknown line type \"outline\""},
         {R"([{"name": "a", "style": {"dashes": [0, 0]}}])", "line_sets[0].style.dashes: the pattern has no length"},
         {R"([{"name": "a", "style": {"cap": "pointy"}}])", "line_sets[0].style.cap: must be one of"},
         {R"([{"name": "a", "style": {"width_modifiers": [{"input": "along"}]}}])",

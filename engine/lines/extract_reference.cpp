@@ -93,27 +93,27 @@ void optional_vertex_pass(const LineMesh& lm, const glm::vec3& eye, const LinePa
                            ws.principal_strength.data(), ws.principal_flags.data());
 }
 
-// Finds every face's ridges and valleys (culling aside) when the mesh pose, the threshold
-// or fading changed since the cache was filled.
-void fill_ridge_cache(const LineMesh& lm, const LineParams& params, float thresh, size_t block_faces,
-                      ExtractWorkspace::RidgeCache& cache) {
-    if (cache.generation == lm.generation && cache.thresh == thresh && cache.fade == params.fade) return;
-    const size_t faces = lm.mesh.faces.size();
-    const std::vector<float> front(lm.mesh.positions.size(), 1.0f);  // every n·v > 0: nothing culled
-    for (int kind = 0; kind < 2; ++kind) {
-        std::vector<LineSegment>& segments = cache.segments[kind];
-        std::vector<uint32_t>& starts = cache.block_start[kind];
-        segments.clear();
-        starts.clear();
-        for (size_t f = 0; f < faces; ++f) {
-            if (f % block_faces == 0) starts.push_back(uint32_t(segments.size()));
-            ridge_face(lm, uint32_t(f), front.data(), kind == 0, thresh, params.fade, segments);
-        }
-        starts.push_back(uint32_t(segments.size()));
+// Whether this view reads the ridges (kind 0) or valleys (1) from the cache, filling it on
+// the second view of a pose (and threshold): the first finds them face by face.
+void prepare_ridge_cache(const LineMesh& lm, const LineParams& params, int kind, float thresh, size_t block_faces,
+                         ExtractWorkspace::RidgeCache& cache) {
+    const ExtractWorkspace::RidgeCache::Key key{lm.generation, thresh, params.fade};
+    cache.use = key == cache.filled;
+    if (cache.use) return;
+    if (!(key == cache.seen)) {
+        cache.seen = key;
+        return;
     }
-    cache.generation = lm.generation;
-    cache.thresh = thresh;
-    cache.fade = params.fade;
+    const std::vector<float> front(lm.mesh.positions.size(), 1.0f);  // every n·v > 0: nothing culled
+    cache.segments.clear();
+    cache.block_start.clear();
+    for (size_t f = 0; f < lm.mesh.faces.size(); ++f) {
+        if (f % block_faces == 0) cache.block_start.push_back(uint32_t(cache.segments.size()));
+        ridge_face(lm, uint32_t(f), front.data(), kind == 0, thresh, params.fade, cache.segments);
+    }
+    cache.block_start.push_back(uint32_t(cache.segments.size()));
+    cache.filled = key;
+    cache.use = true;
 }
 
 // rtsc's face tests for the suggestive highlight, as for the suggestive contour
@@ -276,12 +276,16 @@ void face_pass(const LineMesh& lm, const ExtractWorkspace& ws, const LineParams&
         for (uint32_t f = begin; f < end; ++f)
             if (highlight_candidate(faces[f], ws))
                 face_isoline<true>(lm, f, kr, ws.highlight_num.data(), ndotv, fade, LineType::SuggestiveHighlight, out);
-    for (int kind = 0; kind < 2; ++kind) {  // ridges, valleys: the view's share of the cache
+    for (int kind = 0; kind < 2; ++kind) {  // ridges, valleys: the view's share of the cache, or face by face
         if (!(kind == 0 ? params.ridges : params.valleys)) continue;
-        const ExtractWorkspace::RidgeCache& cache = ws.ridge_cache;
+        const ExtractWorkspace::RidgeCache& cache = ws.ridge_cache[kind];
+        if (!cache.use) {
+            for (uint32_t f = begin; f < end; ++f) ridge_face(lm, f, ndotv, kind == 0, t.rv_thresh, params.fade, out);
+            continue;
+        }
         const size_t block = begin / kBlockFaces;
-        for (uint32_t i = cache.block_start[kind][block]; i < cache.block_start[kind][block + 1]; ++i) {
-            const LineSegment& s = cache.segments[kind][i];
+        for (uint32_t i = cache.block_start[block]; i < cache.block_start[block + 1]; ++i) {
+            const LineSegment& s = cache.segments[i];
             const glm::uvec3 c = faces[s.face];
             if (!(ndotv[c.x] <= 0.0f && ndotv[c.y] <= 0.0f && ndotv[c.z] <= 0.0f)) out.push_back(s);
         }
@@ -322,7 +326,9 @@ void extract_lines_reference(const LineMesh& lm, const glm::vec3& eye, const Lin
             ws.principal_generation = lm.generation;
         }
     }
-    if (params.ridges || params.valleys) fill_ridge_cache(lm, params, thresholds.rv_thresh, kBlockFaces, ws.ridge_cache);
+    for (int kind = 0; kind < 2; ++kind)
+        if (kind == 0 ? params.ridges : params.valleys)
+            prepare_ridge_cache(lm, params, kind, thresholds.rv_thresh, kBlockFaces, ws.ridge_cache[kind]);
     const size_t faces = lm.mesh.faces.size();
     const size_t blocks = (faces + kBlockFaces - 1) / kBlockFaces;
     threads = std::min(threads, std::max<size_t>(1, faces / kMinFacesPerThread));

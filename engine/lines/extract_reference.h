@@ -35,16 +35,23 @@ struct ExtractWorkspace {
     std::vector<uint8_t> principal_flags;
     uint64_t principal_generation = 0;  // LineMesh::generation of principal_shapes
     std::vector<uint8_t> principal_shapes;  // per face, view-independent (principal_highlight_shapes)
-    // Ridges and valleys do not depend on the view but for back-face culling: found once per
-    // mesh pose and threshold (all faces, culling aside), each view keeps those on faces
-    // not back-facing. Per type, the segments in face order and where each face block starts.
+    // Ridges and valleys do not depend on the view but for back-face culling: a mesh pose
+    // seen a second time (a still model) has them found once (all faces, culling aside), and
+    // each view keeps those on faces not back-facing; a pose seen once (an animation frame)
+    // finds them per face with culling, as rtsc does. Per type (ridges, valleys): the
+    // segments in face order and where each face block starts.
     struct RidgeCache {
-        uint64_t generation = 0;  // LineMesh::generation they were found on (0: none)
-        float thresh = 0.0f;
-        bool fade = false;
-        std::vector<LineSegment> segments[2];  // ridges, valleys
-        std::vector<uint32_t> block_start[2];
-    } ridge_cache;
+        struct Key {
+            uint64_t generation = 0;  // LineMesh::generation (0: none)
+            float thresh = 0.0f;
+            bool fade = false;
+            bool operator==(const Key&) const = default;
+        };
+        Key filled, seen;  // what `segments` holds; the last pose asked for
+        bool use = false;  // this view reads `segments`
+        std::vector<LineSegment> segments;
+        std::vector<uint32_t> block_start;
+    } ridge_cache[2];
     std::vector<std::vector<LineSegment>> blocks;
     std::vector<size_t> offsets;
 };
