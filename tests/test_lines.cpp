@@ -62,11 +62,19 @@ TEST_F(LinesTest, SphereSilhouetteIsTheAnalyticCircle) {
 }
 
 // GPU extraction equals the CPU reference: same segments (after sorting), endpoints within
-// 1e-4, same keys, faces and alphas.
+// 1e-4, same keys, faces and alphas; with the default types, then with all ten (rtsc's other
+// lines and material boundaries), of which those in `present` must be found.
 struct GpuCase {
     std::string model;
     glm::vec3 direction;  // from the centre towards the eye
+    uint32_t present = 0;  // bits (1 << LineType) that all-types extraction must find here
 };
+
+constexpr uint32_t kRtscOthers = (1u << uint32_t(LineType::Ridge)) | (1u << uint32_t(LineType::Valley)) |
+                                 (1u << uint32_t(LineType::ApparentRidge)) |
+                                 (1u << uint32_t(LineType::SuggestiveHighlight)) |
+                                 (1u << uint32_t(LineType::PrincipalHighlight));
+constexpr uint32_t kBoundaries = 1u << uint32_t(LineType::MaterialBoundary);
 
 class LinesGpuMatchesCpu : public test::GpuTest, public ::testing::WithParamInterface<GpuCase> {};
 
@@ -75,43 +83,48 @@ TEST_P(LinesGpuMatchesCpu, SameSegments) {
     const LoadedScene scene = load_scene(scene_for_model(test::data_dir() / "models" / c.model));
     const LineMesh line_mesh = build_line_mesh(scene.mesh, 45.0f);
     const glm::vec3 eye = scene.bounds.center() + 3.0f * scene.bounds.radius() * glm::normalize(c.direction);
-    LineParams params;
-
-    std::vector<LineSegment> cpu = extract_lines_reference(line_mesh, eye, params);
+    LineParams every;
+    for (int t = 0; t < kLineTypeCount; ++t) set_line_type_enabled(every, LineType(t), true);
     LineExtractor extractor(ctx());
     extractor.set_mesh(line_mesh);
-    std::vector<LineSegment> gpu = extractor.extract(eye, params);
-    sort_segments(cpu);
-    sort_segments(gpu);
-    ASSERT_GT(cpu.size(), 10u);
-    ASSERT_EQ(gpu.size(), cpu.size());
-    size_t by_type[kLineTypeCount] = {};
-    for (size_t i = 0; i < cpu.size(); ++i) {
-        const LineSegment &a = cpu[i], &b = gpu[i];
-        ASSERT_EQ(a.type, b.type) << i;
-        ASSERT_EQ(a.face, b.face) << i;
-        EXPECT_EQ(a.key0, b.key0) << i;
-        EXPECT_EQ(a.key1, b.key1) << i;
-        EXPECT_LE(glm::length(glm::vec3(a.p0) - glm::vec3(b.p0)), 1e-4f) << i;
-        EXPECT_LE(glm::length(glm::vec3(a.p1) - glm::vec3(b.p1)), 1e-4f) << i;
-        EXPECT_NEAR(a.p0.w, b.p0.w, 1e-4f) << i;
-        EXPECT_NEAR(a.p1.w, b.p1.w, 1e-4f) << i;
-        ++by_type[a.type];
+    for (const LineParams& params : {LineParams{}, every}) {
+        const bool all = params.ridges;
+        std::vector<LineSegment> cpu = extract_lines_reference(line_mesh, eye, params);
+        std::vector<LineSegment> gpu = extractor.extract(eye, params);
+        sort_segments(cpu);
+        sort_segments(gpu);
+        ASSERT_GT(cpu.size(), 10u);
+        ASSERT_EQ(gpu.size(), cpu.size()) << (all ? "all types" : "default types");
+        std::array<size_t, kLineTypeCount> by_type{};
+        for (size_t i = 0; i < cpu.size(); ++i) {
+            const LineSegment &a = cpu[i], &b = gpu[i];
+            ASSERT_EQ(a.type, b.type) << i;
+            ASSERT_EQ(a.face, b.face) << i;
+            EXPECT_EQ(a.key0, b.key0) << i;
+            EXPECT_EQ(a.key1, b.key1) << i;
+            EXPECT_LE(glm::length(glm::vec3(a.p0) - glm::vec3(b.p0)), 1e-4f) << i << " " << line_type_name(LineType(a.type));
+            EXPECT_LE(glm::length(glm::vec3(a.p1) - glm::vec3(b.p1)), 1e-4f) << i << " " << line_type_name(LineType(a.type));
+            EXPECT_NEAR(a.p0.w, b.p0.w, 1e-4f) << i;
+            EXPECT_NEAR(a.p1.w, b.p1.w, 1e-4f) << i;
+            ++by_type[a.type];
+        }
+        for (int t = 0; t < kLineTypeCount && all; ++t) {
+            RecordProperty(line_type_name(LineType(t)), int(by_type[size_t(t)]));
+            if (c.present & (1u << t)) EXPECT_GT(by_type[size_t(t)], 0u) << line_type_name(LineType(t)) << ": none to compare";
+        }
     }
-    RecordProperty("silhouette", int(by_type[0]));
-    RecordProperty("suggestive", int(by_type[1]));
 }
 
 INSTANTIATE_TEST_SUITE_P(
     Models, LinesGpuMatchesCpu,
-    ::testing::Values(GpuCase{"spot/spot.glb", {0.8f, 0.3f, -0.7f}}, GpuCase{"spot/spot.glb", {-1.0f, 0.1f, 0.2f}},
-                      GpuCase{"LeePerrySmith/LeePerrySmith.glb", {0.0f, 0.1f, 1.0f}},
-                      GpuCase{"LeePerrySmith/LeePerrySmith.glb", {0.7f, -0.2f, 0.5f}},
-                      GpuCase{"Suzanne/Monkey.glb", {0.3f, 0.2f, 1.0f}},
+    ::testing::Values(GpuCase{"spot/spot.glb", {0.8f, 0.3f, -0.7f}, kRtscOthers}, GpuCase{"spot/spot.glb", {-1.0f, 0.1f, 0.2f}},
+                      GpuCase{"LeePerrySmith/LeePerrySmith.glb", {0.0f, 0.1f, 1.0f}, kRtscOthers},
+                      GpuCase{"LeePerrySmith/LeePerrySmith.glb", {0.7f, -0.2f, 0.5f}, kRtscOthers},
+                      GpuCase{"Suzanne/Monkey.glb", {0.3f, 0.2f, 1.0f}, kRtscOthers},
                       GpuCase{"craft_speederD/craft_speederD.gltf", {1.0f, 0.6f, 0.4f}},
-                      GpuCase{"FlightHelmet/FlightHelmet.gltf", {0.2f, 0.1f, 1.0f}}),
+                      GpuCase{"FlightHelmet/FlightHelmet.gltf", {0.2f, 0.1f, 1.0f}, kRtscOthers},
+                      GpuCase{"CesiumMilkTruck/CesiumMilkTruck.glb", {0.6f, 0.4f, 1.0f}, kBoundaries}),
     [](const auto& param_info) { return "Case" + std::to_string(param_info.index); });
-
 
 TEST_F(LinesTest, SvgIsValidAndLinesUpWithThePng) {
     const int width = 320, height = 240;

@@ -8,7 +8,6 @@
 
 #include "geometry/test_meshes.h"
 #include "lines/chaining.h"
-#include "lines/extract_gpu.h"
 #include "lines/extract_reference.h"
 #include "scene/scene.h"
 #include "test_support.h"
@@ -227,56 +226,7 @@ TEST(RidgeLines, StripOrderIsTrimesh2s) {
     }
 }
 
-// The GPU pass gives the reference's segments for every type at once (endpoints and alpha
-// within 1e-4, same faces and keys), and each of rtsc's other lines is found on a face scan.
-struct GpuCase {
-    std::string model;
-    glm::vec3 direction;  // from the centre towards the eye
-    bool several_parts = false;  // the model has material boundaries
-};
-
-class RidgeLinesGpu : public test::GpuTest, public ::testing::WithParamInterface<GpuCase> {};
-
-TEST_P(RidgeLinesGpu, SameSegmentsAsTheReference) {
-    const GpuCase& c = GetParam();
-    const LoadedScene scene = load_scene(scene_for_model(test::data_dir() / "models" / c.model));
-    const LineMesh lm = build_line_mesh(scene.mesh, 45.0f);
-    const glm::vec3 eye = scene.bounds.center() + 3.0f * scene.bounds.radius() * glm::normalize(c.direction);
-    const LineParams params = every_type();
-    std::vector<LineSegment> cpu = extract_lines_reference(lm, eye, params);
-    LineExtractor extractor(ctx());
-    extractor.set_mesh(lm);
-    std::vector<LineSegment> gpu = extractor.extract(eye, params);
-    sort_segments(cpu);
-    sort_segments(gpu);
-    ASSERT_EQ(gpu.size(), cpu.size());
-    std::array<size_t, kLineTypeCount> by_type{};
-    for (size_t i = 0; i < cpu.size(); ++i) {
-        const LineSegment &a = cpu[i], &b = gpu[i];
-        ASSERT_EQ(a.type, b.type) << i;
-        ASSERT_EQ(a.face, b.face) << i;
-        EXPECT_EQ(a.key0, b.key0) << i;
-        EXPECT_EQ(a.key1, b.key1) << i;
-        EXPECT_LE(glm::length(glm::vec3(a.p0) - glm::vec3(b.p0)), 1e-4f) << i << " " << line_type_name(LineType(a.type));
-        EXPECT_LE(glm::length(glm::vec3(a.p1) - glm::vec3(b.p1)), 1e-4f) << i << " " << line_type_name(LineType(a.type));
-        EXPECT_NEAR(a.p0.w, b.p0.w, 1e-4f) << i;
-        EXPECT_NEAR(a.p1.w, b.p1.w, 1e-4f) << i;
-        ++by_type[a.type];
-    }
-    for (int t = int(LineType::Ridge); t < kLineTypeCount; ++t) {
-        RecordProperty(line_type_name(LineType(t)), int(by_type[size_t(t)]));
-        if (LineType(t) != LineType::MaterialBoundary || c.several_parts)
-            EXPECT_GT(by_type[size_t(t)], 0u) << line_type_name(LineType(t)) << ": the comparison must see some";
-    }
-}
-
-INSTANTIATE_TEST_SUITE_P(Models, RidgeLinesGpu,
-                         ::testing::Values(GpuCase{"spot/spot.glb", {0.8f, 0.3f, -0.7f}},
-                                           GpuCase{"LeePerrySmith/LeePerrySmith.glb", {0.0f, 0.1f, 1.0f}},
-                                           GpuCase{"LeePerrySmith/LeePerrySmith.glb", {0.7f, -0.2f, 0.5f}},
-                                           GpuCase{"Suzanne/Monkey.glb", {0.3f, 0.2f, 1.0f}},
-                                           GpuCase{"CesiumMilkTruck/CesiumMilkTruck.glb", {0.6f, 0.4f, 1.0f}, true}),
-                         [](const auto& param_info) { return "Case" + std::to_string(param_info.index); });
+// (The GPU pass against this reference for every type: tests/test_lines.cpp, LinesGpuMatchesCpu.)
 
 // Apparent ridges' derivative pass reads every vertex's curvature: threads meet at a barrier
 // before it, and the output stays the same bytes at any thread count. A workspace kept from
