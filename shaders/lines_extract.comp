@@ -26,6 +26,7 @@ layout(std430, binding = 4) readonly buffer Views { VertexView views[]; };
 // Read only for the optional lines that need them (flags).
 layout(std430, binding = 5) readonly buffer HighlightNum { float highlight_num[]; };
 layout(std430, binding = 6) readonly buffer Apparent { ApparentVertex apparent[]; };
+layout(std430, binding = 7) readonly buffer FaceNeighbors { ivec4 face_neighbors[]; };  // across each edge, -1: none
 
 LINES_PUSH_CONSTANTS
 
@@ -36,8 +37,24 @@ void append(LineSegment s) {
 
 #include "lines_ridges.glsl"
 
-// A mesh edge as a segment: the edge opposite corner i, keyed by its vertices.
-void feature_edge(uint f, uvec3 corners, int i, uint type) {
+// Whether face g faces the eye, as extract_reference.cpp's facing_pass.
+bool front_facing(uint g) {
+    uvec3 c = faces[g].xyz;
+    vec3 x0 = vertices[c.x].position.xyz, x1 = vertices[c.y].position.xyz, x2 = vertices[c.z].position.xyz;
+    precise vec3 a = x1 - x0, b = x2 - x0, v = pc.eye.xyz - x0;
+    precise vec3 n = vec3(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
+    precise float d = n.x * v.x + n.y * v.y + n.z * v.z;
+    return d > 0.0;
+}
+
+bool mesh_contours_at(uint f) {
+    return (pc.flags & FLAG_MESH_CONTOURS) != 0u ||
+           ((pc.flags & FLAG_AUTO_CONTOURS) != 0u && (faces[f].w & FACE_COARSE) != 0u);
+}
+
+// A mesh edge as a segment: the edge opposite corner i, keyed by its vertices (plus
+// `key_base`: mesh contours key past the edge numbers).
+void feature_edge_keyed(uint f, uvec3 corners, int i, uint type, uint key_base) {
     int j = (i + 1) % 3, k = (i + 2) % 3;
     LineSegment s;
     s.p0 = vec4(vertices[corners[j]].position.xyz, 1.0);
@@ -48,10 +65,12 @@ void feature_edge(uint f, uvec3 corners, int i, uint type) {
     s.bary1[k] = 1.0;
     s.face = f;
     s.type = type;
-    s.key0 = corners[j];
-    s.key1 = corners[k];
+    s.key0 = key_base + corners[j];
+    s.key1 = key_base + corners[k];
     append(s);
 }
+
+void feature_edge(uint f, uvec3 corners, int i, uint type) { feature_edge_keyed(f, corners, i, type, 0u); }
 
 // rtsc's draw_face_isoline2 from the lone vertex, with the test trimming and fade alpha.
 void face_isoline(uint f, uvec3 corners, vec3 val, vec3 num, vec3 den, bool has_den, float fade, uint type) {
@@ -142,7 +161,13 @@ void main() {
         (all_signs & SUGGESTIVE_REJECTED) == 0u)
         face_isoline(f, corners, vec3(v0.kr, v1.kr, v2.kr), vec3(v0.test_num, v1.test_num, v2.test_num),
                      vec3(v0.ndotv, v1.ndotv, v2.ndotv), true, pc.fade, LINE_SUGGESTIVE);
-    if ((pc.flags & FLAG_SILHOUETTES) != 0u && (any_sign & CONTOUR_ANY) == CONTOUR_ANY)
+    bool mesh_contours = (pc.flags & FLAG_SILHOUETTES) != 0u && mesh_contours_at(f);
+    if (mesh_contours && front_facing(f))
+        for (int i = 0; i < 3; ++i) {
+            int g = face_neighbors[f][i];
+            if (g >= 0 && !front_facing(uint(g))) feature_edge_keyed(f, corners, i, LINE_SILHOUETTE, pc.edge_count);
+        }
+    if ((pc.flags & FLAG_SILHOUETTES) != 0u && !mesh_contours && (any_sign & CONTOUR_ANY) == CONTOUR_ANY)
         face_isoline(f, corners, vec3(v0.ndotv, v1.ndotv, v2.ndotv), vec3(v0.kr, v1.kr, v2.kr), vec3(1.0), false, 0.0,
                      LINE_SILHOUETTE);
     uint mask = face.w;

@@ -27,6 +27,9 @@
 #define FLAG_PRINCIPAL_HIGHLIGHTS 256u
 #define FLAG_MATERIAL_BOUNDARIES 512u
 #define FLAG_FADE 1024u
+#define FLAG_MESH_CONTOURS 2048u  // silhouettes from mesh edges on every face ...
+#define FLAG_AUTO_CONTOURS 4096u  // ... or on faces with FACE_COARSE
+#define FACE_COARSE 512u          // in a face's feature mask (faces[f].w): its model is coarse
 
 // The push constants of every line extraction pass (LinesPush in extract_gpu.cpp).
 #define LINES_PUSH_CONSTANTS                                                           \
@@ -36,7 +39,7 @@
         float fade;       /* 0.03 / fs², or 0 without fading */                        \
         uint flags;                                                                    \
         uint count;       /* vertices or faces */                                      \
-        uint pad;                                                                      \
+        uint edge_count;  /* lines_extract.comp: mesh contours key vertices past it */ \
     } pc;
 
 struct CurvVertex {

@@ -62,8 +62,9 @@ TEST_F(LinesTest, SphereSilhouetteIsTheAnalyticCircle) {
 }
 
 // GPU extraction equals the CPU reference: same segments (after sorting), endpoints within
-// 1e-4, same keys, faces and alphas; with the default types, then with all ten (rtsc's other
-// lines and material boundaries), of which those in `present` must be found.
+// 1e-4, same keys, faces and alphas; with the default types, with all ten (rtsc's other
+// lines and material boundaries; contours `auto`), of which those in `present` must be
+// found, and with the default types and mesh contours.
 struct GpuCase {
     std::string model;
     glm::vec3 direction;  // from the centre towards the eye
@@ -83,18 +84,21 @@ TEST_P(LinesGpuMatchesCpu, SameSegments) {
     const LoadedScene scene = load_scene(scene_for_model(test::data_dir() / "models" / c.model));
     const LineMesh line_mesh = build_line_mesh(scene.mesh, 45.0f);
     const glm::vec3 eye = scene.bounds.center() + 3.0f * scene.bounds.radius() * glm::normalize(c.direction);
-    LineParams every;
+    LineParams every, mesh_contours;
     for (int t = 0; t < kLineTypeCount; ++t) set_line_type_enabled(every, LineType(t), true);
+    every.contours = ContourMode::Auto;
+    mesh_contours.contours = ContourMode::Mesh;
     LineExtractor extractor(ctx());
     extractor.set_mesh(line_mesh);
-    for (const LineParams& params : {LineParams{}, every}) {
+    for (const LineParams& params : {LineParams{}, every, mesh_contours}) {
         const bool all = params.ridges;
         std::vector<LineSegment> cpu = extract_lines_reference(line_mesh, eye, params);
         std::vector<LineSegment> gpu = extractor.extract(eye, params);
         sort_segments(cpu);
         sort_segments(gpu);
         ASSERT_GT(cpu.size(), 10u);
-        ASSERT_EQ(gpu.size(), cpu.size()) << (all ? "all types" : "default types");
+        ASSERT_EQ(gpu.size(), cpu.size()) << (all ? "all types" : "default types") << ", contours "
+                                          << contour_mode_name(params.contours);
         std::array<size_t, kLineTypeCount> by_type{};
         for (size_t i = 0; i < cpu.size(); ++i) {
             const LineSegment &a = cpu[i], &b = gpu[i];

@@ -35,6 +35,7 @@ TriangleMesh subdivide_once(const TriangleMesh& in) {
         for (uint32_t i : {a, ab, ca, ab, b, bc, ca, bc, c, ab, bc, ca}) out.indices.push_back(i);
         if (t / 3 < in.face_material.size()) out.face_material.insert(out.face_material.end(), 4, in.face_material[t / 3]);
         if (t / 3 < in.face_part.size()) out.face_part.insert(out.face_part.end(), 4, in.face_part[t / 3]);
+        if (t / 3 < in.face_model.size()) out.face_model.insert(out.face_model.end(), 4, in.face_model[t / 3]);
     }
     return out;
 }

@@ -24,7 +24,7 @@ struct LinesPush {  // LINES_PUSH_CONSTANTS
     float fade;
     uint32_t flags;
     uint32_t count;  // vertices (lines_vertex.comp, lines_apparent.comp) or faces (lines_extract.comp)
-    uint32_t pad;
+    uint32_t pad;  // lines_extract.comp: the mesh's edge count (mesh contours key vertices past it)
 };
 struct VertexView {  // mirrors VertexView in shaders/lines_shared.glsl
     float ndotv, kr, test_num;
@@ -32,6 +32,7 @@ struct VertexView {  // mirrors VertexView in shaders/lines_shared.glsl
 };
 static_assert(sizeof(LinesPush) == 48);
 constexpr uint32_t kFlagFade = 1024u;  // FLAG_FADE
+constexpr uint32_t kFlagMeshContours = 2048u, kFlagAutoContours = 4096u, kFaceCoarse = 512u;
 constexpr VkDeviceSize kHeaderBytes = 16;  // count, capacity, 2 × pad
 
 }  // namespace
@@ -47,7 +48,7 @@ LineExtractor::LineExtractor(const Context& ctx)
                                .push_constant_size = sizeof(LinesPush),
                                .name = "lines extract, apparent ridges per vertex"}),
       pipeline_(ctx, {.spirv = LW_SPIRV(lines_extract_comp_spv),
-                      .storage_buffers = 7,
+                      .storage_buffers = 8,
                       .push_constant_size = sizeof(LinesPush),
                       .name = "lines extract"}) {}
 
@@ -70,7 +71,7 @@ void LineExtractor::set_mesh(const LineMesh& lm) {
                        glm::vec4(c.pdir1[i], c.k1[i]), glm::vec4(c.pdir2[i], c.k2[i]), c.dcurv[i]};
     std::vector<glm::uvec4> faces(lm.mesh.faces.size()), face_edges(lm.mesh.faces.size());
     for (size_t f = 0; f < faces.size(); ++f) {
-        faces[f] = glm::uvec4(lm.mesh.faces[f], lm.feature_edges[f]);
+        faces[f] = glm::uvec4(lm.mesh.faces[f], lm.feature_edges[f] | (lm.face_coarse[f] ? kFaceCoarse : 0u));
         face_edges[f] = glm::uvec4(glm::uvec3(lm.mesh.face_edges[f]), lm.strip_corners[f]);
     }
     if (faces.empty()) throw Error("line extraction: the mesh has no faces");
@@ -84,6 +85,10 @@ void LineExtractor::set_mesh(const LineMesh& lm) {
     apparent_ = Buffer(*ctx_, {.size = nv * sizeof(ApparentVertex), .usage = usage, .name = "apparent ridge curvature"});
     vertex_face_offsets_ = upload_buffer(*ctx_, lm.vertex_face_offsets, usage, "line mesh vertex face offsets");
     vertex_faces_ = upload_buffer(*ctx_, lm.vertex_faces, usage, "line mesh vertex faces");
+    std::vector<glm::ivec4> neighbors(lm.mesh.faces.size());
+    for (size_t f = 0; f < neighbors.size(); ++f) neighbors[f] = glm::ivec4(lm.mesh.face_neighbors[f], 0);
+    face_neighbors_ = upload_buffer(*ctx_, neighbors, usage, "line mesh face neighbours");
+    edge_count_ = uint32_t(lm.mesh.edges.size());
     vertex_count_ = static_cast<uint32_t>(vertices.size());
     face_count_ = static_cast<uint32_t>(faces.size());
     feature_size_ = lm.feature_size;
@@ -94,11 +99,13 @@ void LineExtractor::record(VkCommandBuffer cmd, const glm::vec3& eye, const Line
     if (face_count_ == 0) throw Error("line extraction: no mesh set");
     const ScaledThresholds t = scaled_thresholds(params, feature_size_);
     uint32_t flags = params.fade ? kFlagFade : 0u;  // FLAG_* of shaders/lines_shared.glsl: bit t for LineType t
+    if (params.contours == ContourMode::Mesh) flags |= kFlagMeshContours;
+    if (params.contours == ContourMode::Auto) flags |= kFlagAutoContours;
     for (int type = 0; type < kLineTypeCount; ++type)
         if (line_type_enabled(params, LineType(type))) flags |= 1u << type;
     const glm::vec4 thresholds(t.rv_thresh, t.ar_thresh, t.sh_thresh, t.ph_thresh);
     const LinesPush vertex_push{glm::vec4(eye, t.sug_thresh), thresholds, t.fade, flags, vertex_count_, 0u};
-    const LinesPush face_push{glm::vec4(eye, t.sug_thresh), thresholds, t.fade, flags, face_count_, 0u};
+    const LinesPush face_push{glm::vec4(eye, t.sug_thresh), thresholds, t.fade, flags, face_count_, edge_count_};
     const uint32_t header[4] = {0u, capacity_, 0u, 0u};
     vkCmdUpdateBuffer(cmd, output_.get(), 0, sizeof(header), header);
     record_memory_barrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
@@ -119,7 +126,8 @@ void LineExtractor::record(VkCommandBuffer cmd, const glm::vec3& eye, const Line
                                     &vertex_push, (vertex_count_ + 63) / 64);
         compute_to_compute();
     }
-    pipeline_.dispatch(*ctx_, cmd, {&vertices_, &faces_, &face_edges_, &output_, &views_, &highlight_num_, &apparent_},
+    pipeline_.dispatch(*ctx_, cmd,
+                       {&vertices_, &faces_, &face_edges_, &output_, &views_, &highlight_num_, &apparent_, &face_neighbors_},
                        &face_push, (face_count_ + 63) / 64);
     if (timer) timer->end(cmd);
     record_memory_barrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,

@@ -49,6 +49,8 @@ private:
     Buffer vertices_, faces_, face_edges_, views_;
     Buffer highlight_num_, apparent_;                 // per vertex, for rtsc's optional lines
     Buffer vertex_face_offsets_, vertex_faces_;      // LineMesh's, for apparent ridges
+    Buffer face_neighbors_;                          // WeldedMesh's, for mesh contours
+    uint32_t edge_count_ = 0;
     uint32_t vertex_count_ = 0;
     Buffer output_;           // header (count, capacity) + segments, Device memory
     Buffer readback_;         // same size, Readback memory

@@ -82,12 +82,27 @@ void vertex_passes(const LineVertexArrays& va, const glm::vec3& eye, const LineP
         vertex_pass(va, eye, t.sug_thresh, begin, end, ws);
 }
 
-// The per-vertex values only rtsc's optional lines read, over vertices [begin, end):
+// Whether faces [begin, end) face the eye, for mesh contours.
+void facing_pass(const LineMesh& lm, const glm::vec3& eye, size_t begin, size_t end, uint8_t* front) {
+    const auto& x = lm.mesh.positions;
+    for (size_t f = begin; f < end; ++f) {
+        const glm::uvec3 c = lm.mesh.faces[f];
+        const glm::vec3 a = x[c.y] - x[c.x], b = x[c.z] - x[c.x], v = eye - x[c.x];
+        const glm::vec3 n(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
+        front[f] = n.x * v.x + n.y * v.y + n.z * v.z > 0.0f;
+    }
+}
+
+// The per-vertex values only rtsc's optional lines read, over vertices [begin, end) (and
+// the facing of the faces in the same share of the face list, for mesh contours):
 // apparent ridges' q1 and t1 (their derivative needs every vertex's: a second pass) and
 // principal highlights' v·e1 and strength. (Suggestive highlights': in vertex_pass.)
 void optional_vertex_pass(const LineMesh& lm, const glm::vec3& eye, const LineParams& params,
                           const ScaledThresholds& thresholds, size_t begin, size_t end, ExtractWorkspace& ws) {
     if (params.apparent_ridges) apparent_curvature(lm, eye, ws.ndotv.data(), begin, end, ws.apparent.data());
+    if (params.silhouettes && params.contours != ContourMode::Smooth)
+        facing_pass(lm, eye, lm.mesh.faces.size() * begin / std::max<size_t>(1, lm.vertex_arrays.count),
+                    lm.mesh.faces.size() * end / std::max<size_t>(1, lm.vertex_arrays.count), ws.front.data());
     if (params.principal_highlights)
         highlight_vertices(lm, eye, ws.ndotv.data(), thresholds.ph_thresh, begin, end, ws.principal_along.data(),
                            ws.principal_strength.data(), ws.principal_flags.data());
@@ -114,6 +129,25 @@ void prepare_ridge_cache(const LineMesh& lm, const LineParams& params, int kind,
     cache.block_start.push_back(uint32_t(cache.segments.size()));
     cache.filled = key;
     cache.use = true;
+}
+
+// A face's mesh contours: its edges to neighbours that do not face the eye.
+void mesh_contour_face(const LineMesh& lm, uint32_t f, const uint8_t* front, std::vector<LineSegment>& out) {
+    const glm::uvec3 corners = lm.mesh.faces[f];
+    for (int i = 0; i < 3; ++i) {
+        const int g = lm.mesh.face_neighbors[f][i];
+        if (g < 0 || front[g]) continue;
+        const int j = (i + 1) % 3, k = (i + 2) % 3;
+        LineSegment& s = out.emplace_back();  // value-initialized: zeros
+        s.p0 = glm::vec4(lm.mesh.positions[corners[j]], 1.0f);
+        s.p1 = glm::vec4(lm.mesh.positions[corners[k]], 1.0f);
+        s.bary0[j] = 1.0f;
+        s.bary1[k] = 1.0f;
+        s.face = f;
+        s.type = uint32_t(LineType::Silhouette);
+        s.key0 = mesh_contour_key(lm, corners[j]);
+        s.key1 = mesh_contour_key(lm, corners[k]);
+    }
 }
 
 // rtsc's face tests for the suggestive highlight, as for the suggestive contour
@@ -265,9 +299,15 @@ void face_pass(const LineMesh& lm, const ExtractWorkspace& ws, const LineParams&
     if (params.suggestive)
         for (size_t i = 0; i < n.suggestive; ++i)
             face_isoline<true>(lm, suggestive[i], kr, test_num, ndotv, fade, LineType::Suggestive, out);
-    if (params.silhouettes)
+    if (params.silhouettes) {
+        const bool smooth_only = params.contours == ContourMode::Smooth;
         for (size_t i = 0; i < n.contour; ++i)
-            face_isoline<false>(lm, contour[i], ndotv, kr, nullptr, 0.0f, LineType::Silhouette, out);
+            if (smooth_only || !mesh_contours_at(lm, params, contour[i]))
+                face_isoline<false>(lm, contour[i], ndotv, kr, nullptr, 0.0f, LineType::Silhouette, out);
+        if (!smooth_only)
+            for (uint32_t f = begin; f < end; ++f)
+                if (ws.front[f] && mesh_contours_at(lm, params, f)) mesh_contour_face(lm, f, ws.front.data(), out);
+    }
     if (features)
         for (uint32_t f = begin; f < end; ++f)
             if (feature_masks[f]) feature_edges(lm, f, feature_masks[f], params, out);
@@ -317,6 +357,7 @@ void extract_lines_reference(const LineMesh& lm, const glm::vec3& eye, const Lin
     ws.signs.resize(nv + kSignPadding);
     if (params.suggestive_highlights) ws.highlight_num.resize(nv);
     if (params.apparent_ridges) ws.apparent.resize(nv);
+    if (params.silhouettes && params.contours != ContourMode::Smooth) ws.front.resize(lm.mesh.faces.size());
     if (params.principal_highlights) {
         ws.principal_along.resize(nv);
         ws.principal_strength.resize(nv);

@@ -33,6 +33,7 @@ struct ExtractWorkspace {
     std::vector<ApparentVertex> apparent;    // apparent ridges' view-dependent curvature (when drawn)
     std::vector<float> principal_along, principal_strength;  // principal highlights' (when drawn)
     std::vector<uint8_t> principal_flags;
+    std::vector<uint8_t> front;  // per face, 1 where it faces the eye (mesh contours)
     uint64_t principal_generation = 0;  // LineMesh::generation of principal_shapes
     std::vector<uint8_t> principal_shapes;  // per face, view-independent (principal_highlight_shapes)
     // Ridges and valleys do not depend on the view but for back-face culling: a mesh pose
@@ -67,6 +68,17 @@ void extract_lines_reference(const LineMesh& mesh, const glm::vec3& eye, const L
                              std::vector<LineSegment>& out, ExtractWorkspace& workspace, size_t threads = 1);
 [[nodiscard]] std::vector<LineSegment> extract_lines_reference(const LineMesh& mesh, const glm::vec3& eye,
                                                                const LineParams& params, size_t threads = 1);
+
+// Mesh contours (ContourMode::Mesh, or Auto on a coarse model's faces): the edges between a
+// face that faces the eye and one that does not, emitted by the front face as silhouettes,
+// keyed by vertex as `mesh_contour_key` numbers them (past the edge numbers that key smooth
+// contours, so that the two kinds never link). Facing: (x1 − x0) × (x2 − x0) · (eye − x0) > 0.
+[[nodiscard]] inline uint32_t mesh_contour_key(const LineMesh& mesh, uint32_t vertex) {
+    return uint32_t(mesh.mesh.edges.size()) + vertex;
+}
+[[nodiscard]] inline bool mesh_contours_at(const LineMesh& mesh, const LineParams& params, uint32_t face) {
+    return params.contours == ContourMode::Mesh || (params.contours == ContourMode::Auto && mesh.face_coarse[face]);
+}
 
 // The scaled thresholds both implementations use, as rtsc scales them: sug_thresh/fs²,
 // (fade on) 0.03/fs², rv_thresh/fs, ar_thresh/fs², sh_thresh/fs², ph_thresh/fs².

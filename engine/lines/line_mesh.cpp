@@ -1,5 +1,6 @@
 #include "lines/line_mesh.h"
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 
@@ -49,6 +50,10 @@ LineMesh build_line_mesh(const TriangleMesh& mesh, float crease_angle_deg) {
     line_mesh.feature_size = feature_size(line_mesh.mesh, line_mesh.curvature);
     if (mesh.face_part.size() == mesh.triangle_count())
         for (uint32_t source : line_mesh.mesh.source_face) line_mesh.face_part.push_back(mesh.face_part[source]);
+    std::vector<uint32_t> face_model;
+    if (mesh.face_model.size() == mesh.triangle_count())
+        for (uint32_t source : line_mesh.mesh.source_face) face_model.push_back(mesh.face_model[source]);
+    line_mesh.face_coarse = coarse_faces(line_mesh.mesh, face_model);
     line_mesh.feature_edges = feature_edge_masks(line_mesh.mesh, crease_angle_deg, line_mesh.face_part);
     line_mesh.vertex_arrays = line_vertex_arrays(line_mesh.mesh, line_mesh.curvature);
     vertex_face_lists(line_mesh.mesh, line_mesh.vertex_face_offsets, line_mesh.vertex_faces);
@@ -62,6 +67,36 @@ void pose_line_mesh(LineMesh& line_mesh, const TriangleMesh& posed) {
     line_mesh.curvature = compute_curvature(line_mesh.mesh);
     line_mesh.vertex_arrays = line_vertex_arrays(line_mesh.mesh, line_mesh.curvature);
     line_mesh.generation = next_generation();
+}
+
+std::vector<uint8_t> coarse_faces(const WeldedMesh& mesh, const std::vector<uint32_t>& face_model) {
+    const auto model_of = [&](size_t f) { return face_model.empty() ? 0u : face_model[f]; };
+    uint32_t models = 1;
+    for (uint32_t m : face_model) models = std::max(models, m + 1);
+    std::vector<glm::vec3> normals(mesh.faces.size());
+    for (size_t f = 0; f < mesh.faces.size(); ++f) {
+        const glm::uvec3 c = mesh.faces[f];
+        const glm::vec3 n = glm::cross(mesh.positions[c[1]] - mesh.positions[c[0]], mesh.positions[c[2]] - mesh.positions[c[0]]);
+        const float length = glm::length(n);
+        normals[f] = length > 0.0f ? n / length : glm::vec3(0.0f);
+    }
+    // Per model, the angles across its interior edges; coarse where their median is large.
+    std::vector<std::vector<float>> angles(models);
+    for (const MeshEdge& e : mesh.edges) {
+        if (e.face_count != 2 || model_of(size_t(e.f[0])) != model_of(size_t(e.f[1]))) continue;
+        const float d = glm::dot(normals[size_t(e.f[0])], normals[size_t(e.f[1])]);
+        angles[model_of(size_t(e.f[0]))].push_back(glm::degrees(std::acos(std::clamp(d, -1.0f, 1.0f))));
+    }
+    std::vector<uint8_t> coarse_model(models, 0);
+    for (uint32_t m = 0; m < models; ++m) {
+        std::vector<float>& a = angles[m];
+        if (a.empty()) continue;
+        std::nth_element(a.begin(), a.begin() + std::ptrdiff_t(a.size() / 2), a.end());
+        coarse_model[m] = a[a.size() / 2] > kCoarseDihedralDeg;
+    }
+    std::vector<uint8_t> coarse(mesh.faces.size());
+    for (size_t f = 0; f < coarse.size(); ++f) coarse[f] = coarse_model[model_of(f)];
+    return coarse;
 }
 
 void vertex_face_lists(const WeldedMesh& mesh, std::vector<uint32_t>& offsets, std::vector<uint32_t>& faces) {

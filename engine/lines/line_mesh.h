@@ -38,12 +38,24 @@ struct LineVertexArrays {
     const float* field(Field f) const { return values.data() + size_t(f) * count; }
 };
 
+// Low-poly models (the glTF Fox 16°, RobotExpressive 22°, craft_speederD 24°) against smooth
+// ones and scans (CesiumMan 0.6°, spot 5°, FlightHelmet 7°, LeePerrySmith 7°, Suzanne 8°).
+constexpr float kCoarseDihedralDeg = 12.0f;
+
+// Per face, whether its model is coarse (`face_model`: per face, or empty for one model).
+[[nodiscard]] std::vector<uint8_t> coarse_faces(const WeldedMesh& mesh, const std::vector<uint32_t>& face_model);
+
 struct LineMesh {
     WeldedMesh mesh;
     SurfaceCurvature curvature;
     float feature_size = 0.0f;
     std::vector<uint32_t> feature_edges;
     std::vector<uint32_t> face_part;  // per face, TriangleMesh::face_part of its source triangle (empty: one part)
+    // Per face, 1 where its model is coarse: the median angle between the normals of
+    // neighbouring faces over the model's edges is above kCoarseDihedralDeg. There the
+    // smooth contour (interpolated n·v) strays from the polygon's outline and `auto`
+    // contours take the mesh's own edges (types/line_type.h, ContourMode).
+    std::vector<uint8_t> face_coarse;
     LineVertexArrays vertex_arrays;  // of mesh.positions and curvature, kept in step with them
     // The faces around each vertex, in face order (apparent ridges, ridge_lines.h): those of
     // vertex v are vertex_faces[vertex_face_offsets[v] .. vertex_face_offsets[v + 1]).

@@ -27,6 +27,13 @@ void append_mesh(TriangleMesh& mesh, const TriangleMesh& part) {
     mesh.part_count += part.part_count;
 }
 
+// The same, the part being the scene's model number `model`.
+void append_model_mesh(TriangleMesh& mesh, const TriangleMesh& part, uint32_t model) {
+    mesh.face_model.resize(mesh.triangle_count(), 0u);
+    append_mesh(mesh, part);
+    mesh.face_model.resize(mesh.triangle_count(), model);
+}
+
 LoadedScene load_scene(const SceneDesc& desc) {
     std::vector<Model> models;
     for (const auto& path : desc.models) models.push_back(load_model(path));
@@ -42,7 +49,7 @@ LoadedScene load_scene(const SceneDesc& desc, std::vector<Model> models) {
         // The rest pose, skinned: a skinned mesh's node transform does not place it (glTF 2.0
         // §3.7.3), its joints do — RobotExpressive's hands sit at its wrists only so.
         const size_t before = scene.mesh.triangle_count();
-        append_mesh(scene.mesh, flatten_posed(model, rest_pose(model)));
+        append_model_mesh(scene.mesh, flatten_posed(model, rest_pose(model)), uint32_t(scene.models.size() - 1));
         scene.model_triangles.push_back(scene.mesh.triangle_count() - before);
     }
     if (scene.mesh.indices.empty()) throw Error(scene.models.front().path.string() + ": no triangles to draw");
@@ -54,10 +61,12 @@ LoadedScene load_scene(const SceneDesc& desc, std::vector<Model> models) {
 
 TriangleMesh pose_scene(const LoadedScene& scene, float seconds) {
     TriangleMesh mesh;
-    for (const Model& model : scene.models) {
+    for (size_t m = 0; m < scene.models.size(); ++m) {
+        const Model& model = scene.models[m];
         const std::vector<int> clips =
             scene.desc.animation.play ? select_clips(model, scene.desc.animation.clip) : std::vector<int>{};
-        append_mesh(mesh, flatten_posed(model, clips.empty() ? rest_pose(model) : evaluate_pose(model, clips, seconds)));
+        append_model_mesh(mesh, flatten_posed(model, clips.empty() ? rest_pose(model) : evaluate_pose(model, clips, seconds)),
+                          uint32_t(m));
     }
     return mesh;
 }

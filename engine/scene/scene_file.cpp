@@ -183,6 +183,7 @@ LinesDesc read_lines(ObjectReader& parent, const std::filesystem::path& file) {
         desc.hidden = h == "dashed" ? HiddenLines::Dashed : h == "faint" ? HiddenLines::Faint : HiddenLines::None;
     }
     if (r.has("sample_spacing")) desc.sample_spacing_px = static_cast<float>(r.number("sample_spacing", 0.25, 64.0));
+    if (r.has("contours")) desc.params.contours = contour_mode(r.string_of("contours", {"smooth", "mesh", "auto"}));
     r.reject_unknown();
     return desc;
 }

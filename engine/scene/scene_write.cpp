@@ -169,6 +169,7 @@ std::string scene_json(const SceneDesc& desc, const ViewCamera& camera, const st
         }
         l["hidden"] = lines.hidden == HiddenLines::Dashed ? "dashed" : lines.hidden == HiddenLines::Faint ? "faint" : "none";
         l["sample_spacing"] = round6(lines.sample_spacing_px);
+        if (lines.params.contours != ContourMode::Smooth) l["contours"] = contour_mode_name(lines.params.contours);
         root["lines"] = l;
         if (!lines.sets.empty()) root["line_sets"] = line_sets(lines.sets, dest_dir);
     }

@@ -33,6 +33,7 @@ struct TriangleMesh {
     // between faces of different parts (lines/line_mesh.h).
     std::vector<uint32_t> face_part;
     uint32_t part_count = 0;
+    std::vector<uint32_t> face_model;  // per triangle: the scene's model it comes from (empty: one)
 
     size_t triangle_count() const { return indices.size() / 3; }
 };

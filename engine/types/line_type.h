@@ -53,6 +53,19 @@ inline std::string line_type_names() {
     return list;
 }
 
+// Which contours silhouettes are: the smooth zero set of interpolated n·v (rtsc's), the
+// mesh's own edges between a front- and a back-facing face (the polygon's outline, closed
+// on any mesh), or per model, mesh where its faces are coarse (LineMesh::face_coarse).
+enum class ContourMode : uint32_t { Smooth, Mesh, Auto };
+
+// "smooth", "mesh", "auto" (scene key lines.contours, --contours); the name of a mode.
+inline ContourMode contour_mode(std::string_view name) {
+    return name == "mesh" ? ContourMode::Mesh : name == "auto" ? ContourMode::Auto : ContourMode::Smooth;
+}
+inline const char* contour_mode_name(ContourMode mode) {
+    return mode == ContourMode::Mesh ? "mesh" : mode == ContourMode::Auto ? "auto" : "smooth";
+}
+
 // Thresholds and switches of the feature-line extraction, as rtsc defines them
 // (DESIGN.md "Line extraction as rtsc does it"; docs/research/rtsc-lines.md). Every
 // threshold is rtsc's, scaled by its feature size fs as rtsc scales it.
@@ -75,6 +88,7 @@ struct LineParams {
     float ar_thresh = 0.1f;          // apparent ridges: view-dependent q1 above ar_thresh / fs²
     float sh_thresh = 0.02f;         // suggestive highlights: −tanθ·DwKr above sh_thresh / fs²
     float ph_thresh = 0.04f;         // principal highlights: (k1² − k2²)·n·v above ph_thresh / fs²
+    ContourMode contours = ContourMode::Smooth;
 };
 
 // The switch of one type in `p` (const or not).

@@ -27,6 +27,11 @@ void add_scene_options(CLI::App* cmd, SceneOptions& o, bool offline) {
                     "Line types to draw, comma-separated, instead of the scene's: silhouette, suggestive, crease, border "
                     "(the default four), and rtsc's ridge, valley, apparent_ridge, suggestive_highlight, "
                     "principal_highlight (scene keys lines.TYPE; README \"Line types\")");
+    cmd->add_option("--contours", o.contours,
+                    "Silhouettes as the smooth zero set of n·v (rtsc's; the default), the mesh's own edges between front- "
+                    "and back-facing faces (a closed outline of a low-poly model), or auto: mesh on models whose faces are "
+                    "coarse (median angle between neighbouring faces over 12°), smooth elsewhere (scene key lines.contours)")
+        ->check(CLI::IsMember({"smooth", "mesh", "auto"}));
     cmd->add_option("--slam", o.slam, "Draw silhouettes and suggestive contours as strokes textured by this SLAM (.exr)");
     cmd->add_option("--stroke-width", o.stroke_width, "Width of SLAM strokes in pixels (default 6)")
         ->check(CLI::PositiveNumber);
@@ -102,6 +107,7 @@ SceneDesc scene_from_options(const SceneOptions& o) {
     }
     if (o.samples > 0) desc.style.samples = static_cast<uint32_t>(o.samples);
     if (!o.lines.empty()) choose_line_types(o.lines, desc.lines);
+    if (!o.contours.empty()) desc.lines.params.contours = contour_mode(o.contours);
     if (!o.slam.empty()) use_slam_strokes(desc.lines, o.slam, o.stroke_width);
     return desc;
 }
