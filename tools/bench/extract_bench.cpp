@@ -56,7 +56,8 @@ int run_extract_bench(const ExtractBenchOptions& o) {
     if (o.threads.empty() || *std::min_element(o.threads.begin(), o.threads.end()) < 1)
         throw usage_error("--threads: each count must be 1 or more");
     if (o.repeat < 1) throw usage_error("--repeat: must be 1 or more");
-    const LineParams params = types_flag(o.types);
+    LineParams params = types_flag(o.types);
+    params.contours = contour_mode(o.contours);
     LoadedScene scene = load_scene(scene_for_model(o.model));
     scene.mesh = subdivide_midpoint(scene.mesh, o.subdivide);
     ViewCamera camera = scene.camera;

@@ -24,6 +24,7 @@ struct ExtractBenchOptions {
     int subdivide = 0;
     CameraFlags camera;     // only the eye matters to the extraction
     std::string types;      // "silhouette,suggestive,crease,border"; empty: the defaults
+    std::string contours = "smooth";  // smooth, mesh or auto (LineParams::contours)
     std::vector<int> threads{1};  // several: timed in turn, run by run (noisy machines)
     int repeat = 50;
 };

@@ -56,6 +56,7 @@ struct BenchOptions {
     lw::bench::CameraFlags camera;  // over the framing camera
     bool extract_only = false;      // lines: the host extraction alone (extract_bench.h)
     std::string types;
+    std::string contours = "smooth";
     std::vector<int> threads{1};
     int repeat = 50;
     int samples = 1;  // samples per pixel of the surface pass (MSAA)
@@ -269,6 +270,9 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     lines_cmd->add_option("--types", lines.types,
                           "--extract-only: line types, e.g. silhouette,suggestive (default: the four default types)");
+    lines_cmd->add_option("--contours", lines.contours, "--extract-only: silhouettes smooth, mesh or auto")
+        ->check(CLI::IsMember({"smooth", "mesh", "auto"}))
+        ->capture_default_str();
     lines_cmd->add_option("--repeat", lines.repeat, "--extract-only: timed runs (after one warm-up)")
         ->capture_default_str();
     lw::bench::RibbonBenchOptions ribbon;
@@ -296,7 +300,7 @@ int main(int argc, char** argv) {
         if (surface_cmd->parsed()) return run_surface(surface);
         if (lines_cmd->parsed() && lines.extract_only)
             return lw::bench::run_extract_bench({.model = lines.model, .subdivide = lines.subdivide,
-                                                 .camera = lines.camera, .types = lines.types,
+                                                 .camera = lines.camera, .types = lines.types, .contours = lines.contours,
                                                  .threads = lines.threads, .repeat = lines.repeat});
         if (lines_cmd->parsed()) return run_lines(lines);
         if (ribbon_cmd->parsed()) return lw::bench::run_ribbon_bench(ribbon);
