@@ -73,8 +73,8 @@ void ridge_segment(StripFace sf, int r, vec3 e, vec3 k, float thresh, bool to_ce
     }
     precise float alpha01 = 1.0, alpha12 = 1.0;
     if (fade) {
-        alpha01 = k01 / (k01 + thresh);
-        alpha12 = k12 / (k12 + thresh);
+        alpha01 = k01 > 0.0 ? k01 / (k01 + thresh) : 0.0;
+        alpha12 = k12 > 0.0 ? k12 / (k12 + thresh) : 0.0;
     }
     LineSegment s;
     s.p0 = vec4(p01, alpha01);
@@ -136,7 +136,11 @@ void principal_highlight_face(uint f, vec3 eye, float thresh, bool fade) {
     vec3 none[3] = vec3[3](vec3(0.0), vec3(0.0), vec3(0.0));
     for (int flavour = 0; flavour < 2; ++flavour) {
         bool convex = flavour == 0;
-        if (convex ? min(min(k[0], k[1]), k[2]) < 0.0 : max(max(k[0], k[1]), k[2]) > 0.0) continue;
+        // std::min / std::max's ternaries (a NaN first stays, as in rtsc), not GLSL's min/max.
+        float lo = k[1] < k[0] ? k[1] : k[0], hi = k[0] < k[1] ? k[1] : k[0];
+        lo = k[2] < lo ? k[2] : lo;
+        hi = hi < k[2] ? k[2] : hi;
+        if (convex ? lo < 0.0 : hi > 0.0) continue;
         vec3 reference = vertices[sf.vertex[0]].pdir1_k1.xyz;
         bool agree = true;
         vec3 along, strength;

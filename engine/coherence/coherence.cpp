@@ -306,11 +306,14 @@ VoteSet CoherenceTracker::gather_votes(const std::vector<ScreenPath>& paths, con
             const glm::vec2 tangent = path_tangent(path, c.sample);
             const glm::vec2 moved = glm::vec2(pixel) - sample.pixel;
             pixel = glm::vec3(sample.pixel + moved + glm::dot(zoomed - moved, tangent) * tangent, pixel.z);
-        } else if (path.type == LineType::Suggestive) {
+        } else if (path.type == LineType::Suggestive || path.type == LineType::SuggestiveHighlight ||
+                   path.type == LineType::ApparentRidge || path.type == LineType::PrincipalHighlight) {
             // A suggestive contour (the zero set of κr) moves over the surface at a speed of
             // its own, across itself too, so its surface point's motion is not the line's:
             // it looks up its closest correspondent where it is now (§4.1), moved only by the
-            // view's zoom. Measured against the across motion (120-frame orbits, 640×480, p90
+            // view's zoom. So do rtsc's other view-dependent lines (suggestive highlights are
+            // the other half of the same zero set; apparent ridges and principal highlights
+            // slide as the view turns). Measured against the across motion (120-frame orbits, 640×480, p90
             // |Δt| against the tiling policy's): a statue scan 0.93 → 0.36, LeePerrySmith
             // 0.22 → 0.14, Suzanne 0.15 → 0.12, FlightHelmet 0.34 → 0.27.
             pixel = glm::vec3(sample.pixel + zoomed, pixel.z);

@@ -88,9 +88,9 @@ void ridge_segment(const LineMesh& lm, const StripFace& sf, int r, const float* 
         if (dot3(tmax[a], perp) <= 0.0f || dot3(tmax[b], perp) >= 0.0f || dot3(tmax[c], perp) <= 0.0f) return;
     }
     float alpha01 = 1.0f, alpha12 = 1.0f;
-    if (fade) {
-        alpha01 = k01 / (k01 + thresh);
-        alpha12 = k12 / (k12 + thresh);
+    if (fade) {  // (an end at 0 with a zero threshold: 0, not rtsc's 0/0)
+        alpha01 = k01 > 0.0f ? k01 / (k01 + thresh) : 0.0f;
+        alpha12 = k12 > 0.0f ? k12 / (k12 + thresh) : 0.0f;
     }
     out.push_back({glm::vec4(p01, alpha01), glm::vec4(p12, alpha12), bary01, bary12, sf.face, uint32_t(type),
                    uint32_t(lm.mesh.face_edges[sf.face][sf.corner[c]]), key12});  // p01 on edge a–b

@@ -54,8 +54,9 @@ inline std::string line_type_names() {
 }
 
 // Which contours silhouettes are: the smooth zero set of interpolated n·v (rtsc's), the
-// mesh's own edges between a front- and a back-facing face (the polygon's outline, closed
-// on any mesh), or per model, mesh where its faces are coarse (LineMesh::face_coarse).
+// mesh's own edges between a front- and a back-facing face (the polygon's outline: closed
+// on a closed, consistently wound, manifold mesh; it stops at borders and at edges of more
+// than two faces), or per model, mesh where its faces are coarse (LineMesh::face_coarse).
 enum class ContourMode : uint32_t { Smooth, Mesh, Auto };
 
 // "smooth", "mesh", "auto" (scene key lines.contours, --contours); the name of a mode.
