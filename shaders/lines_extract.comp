@@ -52,9 +52,31 @@ bool mesh_contours_at(uint f) {
            ((pc.flags & FLAG_AUTO_CONTOURS) != 0u && (faces[f].w & FACE_COARSE) != 0u);
 }
 
-// A mesh edge as a segment: the edge opposite corner i, keyed by its vertices (plus
-// `key_base`: mesh contours key past the edge numbers).
-void feature_edge_keyed(uint f, uvec3 corners, int i, uint type, uint key_base) {
+// The key of a mesh contour's end at corner `corner` of front face `face`: the fan of
+// front faces round the vertex, named by its smallest face (extract_reference.h,
+// mesh_contour_key).
+uint mesh_contour_key(uint face, int corner) {
+    uint v = faces[face][corner];
+    uint smallest = face;
+    for (int way = 1; way <= 2; ++way) {
+        uint at = face;
+        int c = corner;
+        for (int step = 0; step < 64; ++step) {
+            int next = face_neighbors[at][(c + way) % 3];
+            if (next < 0 || uint(next) == face || !front_facing(uint(next))) break;
+            at = uint(next);
+            uvec3 g = faces[at].xyz;
+            c = g.x == v ? 0 : g.y == v ? 1 : 2;
+            smallest = min(smallest, at);
+        }
+    }
+    uvec3 g = faces[smallest].xyz;
+    uint c = g.x == v ? 0u : g.y == v ? 1u : 2u;
+    return pc.edge_count + 3u * smallest + c;
+}
+
+// The edge opposite corner i of face f as a segment with the given end keys.
+void edge_segment(uint f, uvec3 corners, int i, uint type, uint key0, uint key1) {
     int j = (i + 1) % 3, k = (i + 2) % 3;
     LineSegment s;
     s.p0 = vec4(vertices[corners[j]].position.xyz, 1.0);
@@ -65,12 +87,20 @@ void feature_edge_keyed(uint f, uvec3 corners, int i, uint type, uint key_base) 
     s.bary1[k] = 1.0;
     s.face = f;
     s.type = type;
-    s.key0 = key_base + corners[j];
-    s.key1 = key_base + corners[k];
+    s.key0 = key0;
+    s.key1 = key1;
     append(s);
 }
 
-void feature_edge(uint f, uvec3 corners, int i, uint type) { feature_edge_keyed(f, corners, i, type, 0u); }
+// Creases, borders and boundaries are keyed by their vertices.
+void feature_edge(uint f, uvec3 corners, int i, uint type) {
+    edge_segment(f, corners, i, type, corners[(i + 1) % 3], corners[(i + 2) % 3]);
+}
+
+// A mesh contour edge: the edge opposite corner i of front face f, keyed by its fans.
+void mesh_contour_edge(uint f, uvec3 corners, int i) {
+    edge_segment(f, corners, i, LINE_SILHOUETTE, mesh_contour_key(f, (i + 1) % 3), mesh_contour_key(f, (i + 2) % 3));
+}
 
 // rtsc's draw_face_isoline2 from the lone vertex, with the test trimming and fade alpha.
 void face_isoline(uint f, uvec3 corners, vec3 val, vec3 num, vec3 den, bool has_den, float fade, uint type) {
@@ -165,7 +195,7 @@ void main() {
     if (mesh_contours && front_facing(f))
         for (int i = 0; i < 3; ++i) {
             int g = face_neighbors[f][i];
-            if (g >= 0 && !front_facing(uint(g))) feature_edge_keyed(f, corners, i, LINE_SILHOUETTE, pc.edge_count);
+            if (g >= 0 && !front_facing(uint(g))) mesh_contour_edge(f, corners, i);
         }
     if ((pc.flags & FLAG_SILHOUETTES) != 0u && !mesh_contours && (any_sign & CONTOUR_ANY) == CONTOUR_ANY)
         face_isoline(f, corners, vec3(v0.ndotv, v1.ndotv, v2.ndotv), vec3(v0.kr, v1.kr, v2.kr), vec3(1.0), false, 0.0,

@@ -101,8 +101,11 @@ TEST_F(MeshContours, LowPolyOutlinesCloseOnTheRasterizedOutline) {
     };
     for (const Case& c : {Case{"Fox", &fox.mesh, side, centre}, Case{"icosphere", &ico, {0.4f, 0.9f, 3.2f}, {0, 0, 0}}}) {
         for (const ContourMode mode : {ContourMode::Mesh, ContourMode::Auto}) {
-            const Closure closure = outline_closure(render_silhouettes(ctx(), *c.mesh, c.eye, c.target, mode, width, height),
-                                                    width, height);
+            const Frame frame = render_silhouettes(ctx(), *c.mesh, c.eye, c.target, mode, width, height);
+            const Closure closure = outline_closure(frame, width, height);
+            size_t runs = 0;  // (the outline is pieces of several contours, met at T-junctions on screen)
+            for (const ScreenPath& p : frame.screen_paths) runs += p.type == LineType::Silhouette && p.visible;
+            RecordProperty(std::string(c.name) + "_" + contour_mode_name(mode) + "_visible_runs", int(runs));
             RecordProperty(std::string(c.name) + "_" + contour_mode_name(mode) + "_iou", std::to_string(closure.iou));
             EXPECT_GE(closure.iou, 0.99) << c.name << ", " << contour_mode_name(mode) << ": inside " << closure.inside
                                          << " px, covered " << closure.covered << " px";
@@ -117,7 +120,8 @@ TEST_F(MeshContours, LowPolyOutlinesCloseOnTheRasterizedOutline) {
 }
 
 // Mesh contours are the edges between a front- and a back-facing face, each once, emitted by
-// the front face and keyed by vertex; on a closed mesh they chain into closed loops.
+// the front face and keyed by their fans of front faces; on a closed mesh they chain into
+// closed loops, also where two of them touch at a vertex.
 TEST(MeshContoursReference, EdgesBetweenFrontAndBackFacesChainIntoLoops) {
     const LineMesh lm = build_line_mesh(make_icosphere(1.0f, 2), 45.0f);
     LineParams params;
@@ -138,6 +142,17 @@ TEST(MeshContoursReference, EdgesBetweenFrontAndBackFacesChainIntoLoops) {
     const std::vector<LinePath> paths = chain_segments(segments);
     ASSERT_EQ(paths.size(), 1u) << "a convex mesh has one contour loop";
     EXPECT_TRUE(paths[0].closed);
+
+    // On the Fox contours touch at vertices (four contour edges there): keyed by their fans of
+    // front faces, each goes on through its own fan and every contour chains into a loop.
+    const LoadedScene fox = load_scene(scene_for_model(test::data_dir() / "models/Fox/Fox.glb"));
+    const LineMesh fox_lines = build_line_mesh(fox.mesh, 45.0f);
+    const glm::vec3 side = fox.bounds.center() + 2.4f * fox.bounds.radius() * glm::normalize(glm::vec3(1.0f, 0.15f, 0.05f));
+    size_t loops = 0, open = 0;
+    for (const LinePath& p : chain_segments(extract_lines_reference(fox_lines, side, params))) (p.closed ? loops : open)++;
+    EXPECT_EQ(open, 0u);
+    EXPECT_GE(loops, 2u);
+    RecordProperty("fox_contour_loops", int(loops));
 }
 
 }  // namespace

@@ -145,8 +145,9 @@ void mesh_contour_face(const LineMesh& lm, uint32_t f, const uint8_t* front, std
         s.bary1[k] = 1.0f;
         s.face = f;
         s.type = uint32_t(LineType::Silhouette);
-        s.key0 = mesh_contour_key(lm, corners[j]);
-        s.key1 = mesh_contour_key(lm, corners[k]);
+        const auto facing = [&](uint32_t g) { return front[g] != 0; };
+        s.key0 = mesh_contour_key(lm, f, j, facing);
+        s.key1 = mesh_contour_key(lm, f, k, facing);
     }
 }
 

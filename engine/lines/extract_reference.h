@@ -12,6 +12,7 @@
 // tests compare the two after `sort_segments`.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -70,11 +71,34 @@ void extract_lines_reference(const LineMesh& mesh, const glm::vec3& eye, const L
                                                                const LineParams& params, size_t threads = 1);
 
 // Mesh contours (ContourMode::Mesh, or Auto on a coarse model's faces): the edges between a
-// face that faces the eye and one that does not, emitted by the front face as silhouettes,
-// keyed by vertex as `mesh_contour_key` numbers them (past the edge numbers that key smooth
-// contours, so that the two kinds never link). Facing: (x1 − x0) × (x2 − x0) · (eye − x0) > 0.
-[[nodiscard]] inline uint32_t mesh_contour_key(const LineMesh& mesh, uint32_t vertex) {
-    return uint32_t(mesh.mesh.edges.size()) + vertex;
+// face that faces the eye and one that does not, emitted by the front face as silhouettes.
+// Facing: (x1 − x0) × (x2 − x0) · (eye − x0) > 0. An endpoint's key names the fan of front
+// faces around its vertex that the segment's face belongs to (`mesh_contour_key`): each
+// fan is bounded by two contour edges, so the key joins exactly those two, and where two
+// contours touch at a vertex (four contour edges) each goes on through its own fan instead
+// of ending at a junction. Keys lie past the edge numbers that key smooth contours.
+template <class Facing>
+[[nodiscard]] uint32_t mesh_contour_key(const LineMesh& lm, uint32_t face, int corner, Facing front) {
+    // Walk round the vertex both ways across front faces; the fan's smallest face and the
+    // vertex's corner in it name the fan.
+    const uint32_t v = lm.mesh.faces[face][corner];
+    uint32_t smallest = face;
+    for (int way = 1; way <= 2; ++way) {
+        uint32_t at = face;
+        int c = corner;
+        for (int step = 0; step < 64; ++step) {  // (a bound for non-manifold fans)
+            const int next = lm.mesh.face_neighbors[at][(c + way) % 3];  // across an edge at v
+            if (next < 0 || uint32_t(next) == face || !front(uint32_t(next))) break;
+            at = uint32_t(next);
+            const glm::uvec3 f = lm.mesh.faces[at];
+            c = f.x == v ? 0 : f.y == v ? 1 : 2;
+            // On a consistently wound mesh the same corner step keeps turning the same way.
+            smallest = std::min(smallest, at);
+        }
+    }
+    const glm::uvec3 f = lm.mesh.faces[smallest];
+    const uint32_t c = f.x == v ? 0u : f.y == v ? 1u : 2u;
+    return uint32_t(lm.mesh.edges.size()) + 3u * smallest + c;
 }
 [[nodiscard]] inline bool mesh_contours_at(const LineMesh& mesh, const LineParams& params, uint32_t face) {
     return params.contours == ContourMode::Mesh || (params.contours == ContourMode::Auto && mesh.face_coarse[face]);
