@@ -4,6 +4,7 @@
 #include <cstring>
 #include <sstream>
 
+#include "core/error.h"
 #include "core/random.h"
 #include "io/image_io.h"
 #include "lines/chaining.h"
@@ -129,6 +130,33 @@ INSTANTIATE_TEST_SUITE_P(
                       GpuCase{"FlightHelmet/FlightHelmet.gltf", {0.2f, 0.1f, 1.0f}, kRtscOthers},
                       GpuCase{"CesiumMilkTruck/CesiumMilkTruck.glb", {0.6f, 0.4f, 1.0f}, kBoundaries}),
     [](const auto& param_info) { return "Case" + std::to_string(param_info.index); });
+
+// An animation pose uploads only the vertices (set_pose): the GPU then extracts the posed
+// mesh's lines, all types, as the reference does; a mesh of other counts is refused.
+TEST_F(LinesTest, APoseUploadsOnlyTheVerticesAndExtractsThePosedLines) {
+    const LoadedScene scene = load_scene(scene_for_model(test::data_dir() / "models/spot/spot.glb"));
+    LineMesh lm = build_line_mesh(scene.mesh, 45.0f);
+    LineExtractor extractor(ctx());
+    extractor.set_mesh(lm);
+    TriangleMesh moved = scene.mesh;
+    for (glm::vec3& p : moved.positions) p += glm::vec3(0.0f, 0.08f * std::sin(4.0f * p.x), 0.05f * p.y);
+    pose_line_mesh(lm, moved);
+    extractor.set_pose(lm);
+    LineParams params;
+    for (int t = 0; t < kLineTypeCount; ++t) set_line_type_enabled(params, LineType(t), true);
+    const glm::vec3 eye = scene.bounds.center() + 3.0f * scene.bounds.radius() * glm::vec3(0.6f, 0.3f, 0.74f);
+    std::vector<LineSegment> cpu = extract_lines_reference(lm, eye, params), gpu = extractor.extract(eye, params);
+    sort_segments(cpu);
+    sort_segments(gpu);
+    ASSERT_GT(cpu.size(), 100u);
+    ASSERT_EQ(gpu.size(), cpu.size());
+    for (size_t i = 0; i < cpu.size(); ++i) {
+        ASSERT_EQ(cpu[i].face, gpu[i].face) << i;
+        EXPECT_LE(glm::length(glm::vec3(cpu[i].p0) - glm::vec3(gpu[i].p0)), 1e-4f) << i;
+    }
+    const LineMesh other = build_line_mesh(make_icosphere(1.0f, 2), 45.0f);
+    EXPECT_THROW(extractor.set_pose(other), Error);
+}
 
 TEST_F(LinesTest, SvgIsValidAndLinesUpWithThePng) {
     const int width = 320, height = 240;

@@ -63,12 +63,23 @@ void LineExtractor::allocate_output(uint32_t capacity) {
                                .purpose = MemoryPurpose::Readback, .name = "line segments readback"});
 }
 
-void LineExtractor::set_mesh(const LineMesh& lm) {
+void LineExtractor::upload_vertices(const LineMesh& lm) {
     const auto& c = lm.curvature;
     std::vector<CurvVertex> vertices(lm.mesh.positions.size());
     for (size_t i = 0; i < vertices.size(); ++i)
         vertices[i] = {glm::vec4(lm.mesh.positions[i], 1.0f), glm::vec4(c.normals[i], 0.0f),
                        glm::vec4(c.pdir1[i], c.k1[i]), glm::vec4(c.pdir2[i], c.k2[i]), c.dcurv[i]};
+    vertices_ = upload_buffer(*ctx_, vertices, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "line mesh vertices");
+}
+
+void LineExtractor::set_pose(const LineMesh& lm) {
+    if (lm.mesh.positions.size() != vertex_count_ || lm.mesh.faces.size() != face_count_)
+        throw Error("line extraction: a pose with other vertex or face counts than the mesh set");
+    upload_vertices(lm);
+}
+
+void LineExtractor::set_mesh(const LineMesh& lm) {
+    upload_vertices(lm);
     std::vector<glm::uvec4> faces(lm.mesh.faces.size()), face_edges(lm.mesh.faces.size());
     for (size_t f = 0; f < faces.size(); ++f) {
         faces[f] = glm::uvec4(lm.mesh.faces[f], lm.feature_edges[f] | (lm.face_coarse[f] ? kFaceCoarse : 0u));
@@ -76,10 +87,9 @@ void LineExtractor::set_mesh(const LineMesh& lm) {
     }
     if (faces.empty()) throw Error("line extraction: the mesh has no faces");
     const auto usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
-    vertices_ = upload_buffer(*ctx_, vertices, usage, "line mesh vertices");
     faces_ = upload_buffer(*ctx_, faces, usage, "line mesh faces");
     face_edges_ = upload_buffer(*ctx_, face_edges, usage, "line mesh face edges");
-    const VkDeviceSize nv = std::max<VkDeviceSize>(1, vertices.size());
+    const VkDeviceSize nv = std::max<VkDeviceSize>(1, lm.mesh.positions.size());
     views_ = Buffer(*ctx_, {.size = nv * sizeof(VertexView), .usage = usage, .name = "line mesh view quantities"});
     highlight_num_ = Buffer(*ctx_, {.size = nv * sizeof(float), .usage = usage, .name = "suggestive highlight test"});
     apparent_ = Buffer(*ctx_, {.size = nv * sizeof(ApparentVertex), .usage = usage, .name = "apparent ridge curvature"});
@@ -89,7 +99,7 @@ void LineExtractor::set_mesh(const LineMesh& lm) {
     for (size_t f = 0; f < neighbors.size(); ++f) neighbors[f] = glm::ivec4(lm.mesh.face_neighbors[f], 0);
     face_neighbors_ = upload_buffer(*ctx_, neighbors, usage, "line mesh face neighbours");
     edge_count_ = uint32_t(lm.mesh.edges.size());
-    vertex_count_ = static_cast<uint32_t>(vertices.size());
+    vertex_count_ = static_cast<uint32_t>(lm.mesh.positions.size());
     face_count_ = static_cast<uint32_t>(faces.size());
     feature_size_ = lm.feature_size;
     if (capacity_ == 0) allocate_output(std::max<uint32_t>(4096, face_count_ / 32));

@@ -27,6 +27,9 @@ public:
     explicit LineExtractor(const Context& ctx);
 
     void set_mesh(const LineMesh& mesh);
+    // Another pose of the mesh last given to set_mesh (pose_line_mesh: same vertices and
+    // faces): only the per-vertex positions and curvature are uploaded again.
+    void set_pose(const LineMesh& mesh);
 
     // Records the pass into `cmd`: clears the counter, dispatches (timed as "lines extract"
     // when `timer` is given) and copies the result to host memory. Read it with
@@ -43,6 +46,7 @@ public:
 
 private:
     void allocate_output(uint32_t capacity);
+    void upload_vertices(const LineMesh& mesh);
 
     const Context* ctx_;
     ComputePipeline vertex_pipeline_, apparent_pipeline_, pipeline_;

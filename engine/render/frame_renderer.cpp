@@ -116,7 +116,7 @@ void FrameRenderer::deform(const TriangleMesh& posed) {
     mesh_ = upload_mesh(*ctx_, posed, &materials_);
     if (!line_mesh_) return;
     pose_line_mesh(*line_mesh_, posed);
-    if (!extraction_on_host_) extractor_.set_mesh(*line_mesh_);
+    if (!extraction_on_host_) extractor_.set_pose(*line_mesh_);
 }
 
 FrameRenderer::SetState& FrameRenderer::set_state(size_t set) {
