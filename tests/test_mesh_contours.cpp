@@ -4,6 +4,7 @@
 #include <cmath>
 #include <deque>
 
+#include "geometry/subdivide.h"
 #include "geometry/test_meshes.h"
 #include "lines/chaining.h"
 #include "lines/extract_reference.h"
@@ -153,6 +154,27 @@ TEST(MeshContoursReference, EdgesBetweenFrontAndBackFacesChainIntoLoops) {
     EXPECT_EQ(open, 0u);
     EXPECT_GE(loops, 2u);
     RecordProperty("fox_contour_loops", int(loops));
+}
+
+// `auto` judges a model on its own edges: the Fox is coarse, also once subdivided (its new
+// edges are flat); LeePerrySmith is not; in a scene of both each keeps its own contours.
+TEST(MeshContoursReference, AutoJudgesEachModelOnItsOwnEdges) {
+    SceneDesc desc;
+    desc.models = {test::data_dir() / "models/Fox/Fox.glb", test::data_dir() / "models/LeePerrySmith/LeePerrySmith.glb"};
+    const LoadedScene scene = load_scene(desc);
+    ASSERT_EQ(scene.mesh.face_model.size(), scene.mesh.triangle_count());
+    for (const int levels : {0, 1}) {
+        const TriangleMesh mesh = subdivide_midpoint(scene.mesh, levels);
+        const LineMesh lm = build_line_mesh(mesh, 45.0f);
+        size_t coarse[2] = {0, 0}, faces[2] = {0, 0};
+        for (size_t f = 0; f < lm.mesh.faces.size(); ++f) {
+            const uint32_t model = mesh.face_model[lm.mesh.source_face[f]];
+            ++faces[model];
+            coarse[model] += lm.face_coarse[f];
+        }
+        EXPECT_EQ(coarse[0], faces[0]) << "the Fox, " << levels << " subdivisions";
+        EXPECT_EQ(coarse[1], 0u) << "LeePerrySmith, " << levels << " subdivisions";
+    }
 }
 
 }  // namespace

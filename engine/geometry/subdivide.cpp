@@ -12,6 +12,7 @@ TriangleMesh subdivide_once(const TriangleMesh& in) {
     out.normals = in.normals;
     out.texcoords = in.texcoords;
     out.part_count = in.part_count;
+    out.subdivisions = in.subdivisions + 1;
     const bool textured = in.texcoords.size() == in.positions.size();
     out.indices.reserve(in.indices.size() * 4);
     std::unordered_map<uint64_t, uint32_t> midpoints;

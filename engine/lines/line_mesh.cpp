@@ -53,7 +53,7 @@ LineMesh build_line_mesh(const TriangleMesh& mesh, float crease_angle_deg) {
     std::vector<uint32_t> face_model;
     if (mesh.face_model.size() == mesh.triangle_count())
         for (uint32_t source : line_mesh.mesh.source_face) face_model.push_back(mesh.face_model[source]);
-    line_mesh.face_coarse = coarse_faces(line_mesh.mesh, face_model);
+    line_mesh.face_coarse = coarse_faces(line_mesh.mesh, face_model, mesh.subdivisions);
     line_mesh.feature_edges = feature_edge_masks(line_mesh.mesh, crease_angle_deg, line_mesh.face_part);
     line_mesh.vertex_arrays = line_vertex_arrays(line_mesh.mesh, line_mesh.curvature);
     vertex_face_lists(line_mesh.mesh, line_mesh.vertex_face_offsets, line_mesh.vertex_faces);
@@ -69,7 +69,11 @@ void pose_line_mesh(LineMesh& line_mesh, const TriangleMesh& posed) {
     line_mesh.generation = next_generation();
 }
 
-std::vector<uint8_t> coarse_faces(const WeldedMesh& mesh, const std::vector<uint32_t>& face_model) {
+std::vector<uint8_t> coarse_faces(const WeldedMesh& mesh, const std::vector<uint32_t>& face_model,
+                                  uint32_t subdivisions) {
+    // Edges inside one triangle of the mesh before subdivision are flat by construction:
+    // the model is judged on its own edges only.
+    const auto original = [&](int32_t f) { return uint64_t(mesh.source_face[size_t(f)]) >> (2 * subdivisions); };
     const auto model_of = [&](size_t f) { return face_model.empty() ? 0u : face_model[f]; };
     uint32_t models = 1;
     for (uint32_t m : face_model) models = std::max(models, m + 1);
@@ -84,6 +88,7 @@ std::vector<uint8_t> coarse_faces(const WeldedMesh& mesh, const std::vector<uint
     std::vector<std::vector<float>> angles(models);
     for (const MeshEdge& e : mesh.edges) {
         if (e.face_count != 2 || model_of(size_t(e.f[0])) != model_of(size_t(e.f[1]))) continue;
+        if (subdivisions > 0 && original(e.f[0]) == original(e.f[1])) continue;
         const float d = glm::dot(normals[size_t(e.f[0])], normals[size_t(e.f[1])]);
         angles[model_of(size_t(e.f[0]))].push_back(glm::degrees(std::acos(std::clamp(d, -1.0f, 1.0f))));
     }

@@ -42,8 +42,10 @@ struct LineVertexArrays {
 // ones and scans (CesiumMan 0.6°, spot 5°, FlightHelmet 7°, LeePerrySmith 7°, Suzanne 8°).
 constexpr float kCoarseDihedralDeg = 12.0f;
 
-// Per face, whether its model is coarse (`face_model`: per face, or empty for one model).
-[[nodiscard]] std::vector<uint8_t> coarse_faces(const WeldedMesh& mesh, const std::vector<uint32_t>& face_model);
+// Per face, whether its model is coarse (`face_model`: per face, or empty for one model),
+// judged on the edges of the mesh before `subdivisions` midpoint subdivisions.
+[[nodiscard]] std::vector<uint8_t> coarse_faces(const WeldedMesh& mesh, const std::vector<uint32_t>& face_model,
+                                                uint32_t subdivisions);
 
 struct LineMesh {
     WeldedMesh mesh;

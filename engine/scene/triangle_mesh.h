@@ -34,6 +34,9 @@ struct TriangleMesh {
     std::vector<uint32_t> face_part;
     uint32_t part_count = 0;
     std::vector<uint32_t> face_model;  // per triangle: the scene's model it comes from (empty: one)
+    // Midpoint subdivisions made (geometry/subdivide.h): triangle t is then one of the 4^n
+    // pieces of the input's triangle t / 4^n.
+    uint32_t subdivisions = 0;
 
     size_t triangle_count() const { return indices.size() / 3; }
 };
