@@ -131,23 +131,30 @@ void prepare_ridge_cache(const LineMesh& lm, const LineParams& params, int kind,
     cache.use = true;
 }
 
+// The edge opposite corner i of face f as a segment, its ends keyed `key0`, `key1`.
+void edge_segment(const LineMesh& lm, uint32_t f, int i, LineType type, uint32_t key0, uint32_t key1,
+                  std::vector<LineSegment>& out) {
+    const glm::uvec3 corners = lm.mesh.faces[f];
+    const int j = (i + 1) % 3, k = (i + 2) % 3;
+    LineSegment& s = out.emplace_back();  // value-initialized: zeros
+    s.p0 = glm::vec4(lm.mesh.positions[corners[j]], 1.0f);
+    s.p1 = glm::vec4(lm.mesh.positions[corners[k]], 1.0f);
+    s.bary0[j] = 1.0f;
+    s.bary1[k] = 1.0f;
+    s.face = f;
+    s.type = uint32_t(type);
+    s.key0 = key0;
+    s.key1 = key1;
+}
+
 // A face's mesh contours: its edges to neighbours that do not face the eye.
 void mesh_contour_face(const LineMesh& lm, uint32_t f, const uint8_t* front, std::vector<LineSegment>& out) {
-    const glm::uvec3 corners = lm.mesh.faces[f];
+    const auto facing = [&](uint32_t g) { return front[g] != 0; };
     for (int i = 0; i < 3; ++i) {
         const int g = lm.mesh.face_neighbors[f][i];
         if (g < 0 || front[g]) continue;
-        const int j = (i + 1) % 3, k = (i + 2) % 3;
-        LineSegment& s = out.emplace_back();  // value-initialized: zeros
-        s.p0 = glm::vec4(lm.mesh.positions[corners[j]], 1.0f);
-        s.p1 = glm::vec4(lm.mesh.positions[corners[k]], 1.0f);
-        s.bary0[j] = 1.0f;
-        s.bary1[k] = 1.0f;
-        s.face = f;
-        s.type = uint32_t(LineType::Silhouette);
-        const auto facing = [&](uint32_t g) { return front[g] != 0; };
-        s.key0 = mesh_contour_key(lm, f, j, facing);
-        s.key1 = mesh_contour_key(lm, f, k, facing);
+        edge_segment(lm, f, i, LineType::Silhouette, mesh_contour_key(lm, f, (i + 1) % 3, facing),
+                     mesh_contour_key(lm, f, (i + 2) % 3, facing), out);
     }
 }
 
@@ -254,17 +261,8 @@ void face_isoline(const LineMesh& lm, uint32_t f, const float* val, const float*
 
 void feature_edges(const LineMesh& lm, uint32_t f, uint32_t mask, const LineParams& params, std::vector<LineSegment>& out) {
     const glm::uvec3 corners = lm.mesh.faces[f];
-    const auto edge = [&](int i, LineType type) {
-        const int j = (i + 1) % 3, k = (i + 2) % 3;
-        LineSegment& s = out.emplace_back();  // value-initialized: zeros
-        s.p0 = glm::vec4(lm.mesh.positions[corners[j]], 1.0f);
-        s.p1 = glm::vec4(lm.mesh.positions[corners[k]], 1.0f);
-        s.bary0[j] = 1.0f;
-        s.bary1[k] = 1.0f;
-        s.face = f;
-        s.type = uint32_t(type);
-        s.key0 = corners[j];
-        s.key1 = corners[k];
+    const auto edge = [&](int i, LineType type) {  // keyed by its vertices
+        edge_segment(lm, f, i, type, corners[(i + 1) % 3], corners[(i + 2) % 3], out);
     };
     for (int i = 0; i < 3; ++i) {
         const bool crease = params.creases && (mask & (kCreaseBit << i));

@@ -13,17 +13,23 @@ uint64_t next_generation() {
     return ++counter;
 }
 
-}  // namespace
-
-std::vector<uint32_t> feature_edge_masks(const WeldedMesh& mesh, float crease_angle_deg,
-                                         const std::vector<uint32_t>& face_part) {
-    std::vector<glm::vec3> face_normals(mesh.faces.size());
+// Unit face normals (zero for a zero-area face).
+std::vector<glm::vec3> unit_face_normals(const WeldedMesh& mesh) {
+    std::vector<glm::vec3> normals(mesh.faces.size());
     for (size_t f = 0; f < mesh.faces.size(); ++f) {
         const glm::uvec3 c = mesh.faces[f];
         const glm::vec3 n = glm::cross(mesh.positions[c[1]] - mesh.positions[c[0]], mesh.positions[c[2]] - mesh.positions[c[0]]);
         const float len = glm::length(n);
-        face_normals[f] = len > 0.0f ? n / len : glm::vec3(0.0f);
+        normals[f] = len > 0.0f ? n / len : glm::vec3(0.0f);
     }
+    return normals;
+}
+
+}  // namespace
+
+std::vector<uint32_t> feature_edge_masks(const WeldedMesh& mesh, float crease_angle_deg,
+                                         const std::vector<uint32_t>& face_part) {
+    const std::vector<glm::vec3> face_normals = unit_face_normals(mesh);
     const float cos_limit = std::cos(glm::radians(crease_angle_deg));
     std::vector<uint32_t> masks(mesh.faces.size(), 0u);
     for (size_t f = 0; f < mesh.faces.size(); ++f)
@@ -77,13 +83,7 @@ std::vector<uint8_t> coarse_faces(const WeldedMesh& mesh, const std::vector<uint
     const auto model_of = [&](size_t f) { return face_model.empty() ? 0u : face_model[f]; };
     uint32_t models = 1;
     for (uint32_t m : face_model) models = std::max(models, m + 1);
-    std::vector<glm::vec3> normals(mesh.faces.size());
-    for (size_t f = 0; f < mesh.faces.size(); ++f) {
-        const glm::uvec3 c = mesh.faces[f];
-        const glm::vec3 n = glm::cross(mesh.positions[c[1]] - mesh.positions[c[0]], mesh.positions[c[2]] - mesh.positions[c[0]]);
-        const float length = glm::length(n);
-        normals[f] = length > 0.0f ? n / length : glm::vec3(0.0f);
-    }
+    const std::vector<glm::vec3> normals = unit_face_normals(mesh);
     // Per model, the angles across its interior edges; coarse where their median is large.
     std::vector<std::vector<float>> angles(models);
     for (const MeshEdge& e : mesh.edges) {
