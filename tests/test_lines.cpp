@@ -86,7 +86,7 @@ TEST_P(LinesGpuMatchesCpu, SameSegments) {
     const LineMesh line_mesh = build_line_mesh(scene.mesh, 45.0f);
     const glm::vec3 eye = scene.bounds.center() + 3.0f * scene.bounds.radius() * glm::normalize(c.direction);
     LineParams every, mesh_contours;
-    for (int t = 0; t < kLineTypeCount; ++t) set_line_type_enabled(every, LineType(t), true);
+    set_line_types(every, kAllLineTypes);
     every.contours = ContourMode::Auto;
     mesh_contours.contours = ContourMode::Mesh;
     LineExtractor extractor(ctx());
@@ -143,7 +143,7 @@ TEST_F(LinesTest, APoseUploadsOnlyTheVerticesAndExtractsThePosedLines) {
     pose_line_mesh(lm, moved);
     extractor.set_pose(lm);
     LineParams params;
-    for (int t = 0; t < kLineTypeCount; ++t) set_line_type_enabled(params, LineType(t), true);
+    set_line_types(params, kAllLineTypes);
     const glm::vec3 eye = scene.bounds.center() + 3.0f * scene.bounds.radius() * glm::vec3(0.6f, 0.3f, 0.74f);
     std::vector<LineSegment> cpu = extract_lines_reference(lm, eye, params), gpu = extractor.extract(eye, params);
     sort_segments(cpu);

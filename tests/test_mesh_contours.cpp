@@ -80,7 +80,7 @@ Frame render_silhouettes(const Context& ctx, const TriangleMesh& mesh, const glm
     FrameRenderer renderer(ctx, uint32_t(width), uint32_t(height));
     renderer.set_mesh(mesh, true, 45.0f);
     LinesDesc lines;
-    for (int t = 0; t < kLineTypeCount; ++t) set_line_type_enabled(lines.params, LineType(t), LineType(t) == LineType::Silhouette);
+    set_line_types(lines.params, 1u << uint32_t(LineType::Silhouette));
     lines.params.contours = mode;
     return renderer.render(camera, eye, SurfaceStyle{}, lines, FrameOutputs{.color = false, .depth = true});
 }
@@ -126,7 +126,7 @@ TEST_F(MeshContours, LowPolyOutlinesCloseOnTheRasterizedOutline) {
 TEST(MeshContoursReference, EdgesBetweenFrontAndBackFacesChainIntoLoops) {
     const LineMesh lm = build_line_mesh(make_icosphere(1.0f, 2), 45.0f);
     LineParams params;
-    for (int t = 0; t < kLineTypeCount; ++t) set_line_type_enabled(params, LineType(t), LineType(t) == LineType::Silhouette);
+    set_line_types(params, 1u << uint32_t(LineType::Silhouette));
     params.contours = ContourMode::Mesh;
     const glm::vec3 eye(0.3f, 0.5f, 4.0f);
     const std::vector<LineSegment> segments = extract_lines_reference(lm, eye, params);

@@ -17,13 +17,13 @@ namespace {
 
 LineParams only(LineType type) {
     LineParams params;
-    for (int t = 0; t < kLineTypeCount; ++t) set_line_type_enabled(params, LineType(t), LineType(t) == type);
+    set_line_types(params, 1u << uint32_t(type));
     return params;
 }
 
 LineParams every_type() {
     LineParams params;
-    for (int t = 0; t < kLineTypeCount; ++t) set_line_type_enabled(params, LineType(t), true);
+    set_line_types(params, kAllLineTypes);
     return params;
 }
 

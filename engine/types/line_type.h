@@ -4,6 +4,7 @@
 // below all of them so that none includes upward.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -49,7 +50,10 @@ inline std::optional<LineType> line_type_from_name(std::string_view name) {
 // "silhouette, suggestive, ..., principal_highlight", for error messages.
 inline std::string line_type_names() {
     std::string list;
-    for (int t = 0; t < kLineTypeCount; ++t) list += std::string(t ? ", " : "") + line_type_name(LineType(t));
+    for (int t = 0; t < kLineTypeCount; ++t) {
+        if (t) list += ", ";
+        list += line_type_name(LineType(t));
+    }
     return list;
 }
 
@@ -132,5 +136,30 @@ inline bool line_type_enabled(const LineParams& p, LineType type) {
 inline void set_line_type_enabled(LineParams& p, LineType type, bool on) { *line_type_switch(p, type) = on; }
 
 inline void disable_line_type(LineParams& p, LineType type) { set_line_type_enabled(p, type, false); }
+
+constexpr uint32_t kAllLineTypes = (1u << kLineTypeCount) - 1;
+
+// Exactly the types of `mask` (bit 1 << LineType) on, the others off.
+inline void set_line_types(LineParams& p, uint32_t mask) {
+    for (int t = 0; t < kLineTypeCount; ++t) set_line_type_enabled(p, LineType(t), (mask >> t) & 1u);
+}
+
+// The types of a comma-separated list of names ("silhouette,ridge") as such a mask; an
+// unknown (or empty) name: none, and the name in `unknown`.
+inline std::optional<uint32_t> line_types_from_list(std::string_view list, std::string& unknown) {
+    uint32_t mask = 0;
+    for (size_t start = 0; start <= list.size();) {
+        const size_t comma = std::min(list.find(',', start), list.size());
+        const std::string_view name = list.substr(start, comma - start);
+        const std::optional<LineType> type = line_type_from_name(name);
+        if (!type) {
+            unknown = std::string(name);
+            return std::nullopt;
+        }
+        mask |= 1u << uint32_t(*type);
+        start = comma + 1;
+    }
+    return mask;
+}
 
 }  // namespace lw

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <sstream>
 #include <vector>
 
 #include "core/error.h"
@@ -30,13 +29,10 @@ glm::vec3 vec3_flag(const std::string& text, const char* flag) {
 LineParams types_flag(const std::string& types) {
     LineParams params;
     if (types.empty()) return params;
-    for (int t = 0; t < kLineTypeCount; ++t) set_line_type_enabled(params, LineType(t), false);
-    std::stringstream list(types);
-    for (std::string name; std::getline(list, name, ',');) {
-        const std::optional<LineType> type = line_type_from_name(name);
-        if (!type) throw usage_error("--types: unknown line type \"" + name + "\" (" + line_type_names() + ")");
-        set_line_type_enabled(params, *type, true);
-    }
+    std::string unknown;
+    const std::optional<uint32_t> mask = line_types_from_list(types, unknown);
+    if (!mask) throw usage_error("--types: unknown line type \"" + unknown + "\" (" + line_type_names() + ")");
+    set_line_types(params, *mask);
     return params;
 }
 
