@@ -325,8 +325,7 @@ void face_pass(const LineMesh& lm, const ExtractWorkspace& ws, const LineParams&
         const size_t block = begin / kBlockFaces;
         for (uint32_t i = cache.block_start[block]; i < cache.block_start[block + 1]; ++i) {
             const LineSegment& s = cache.segments[i];
-            const glm::uvec3 c = faces[s.face];
-            if (!(ndotv[c.x] <= 0.0f && ndotv[c.y] <= 0.0f && ndotv[c.z] <= 0.0f)) out.push_back(s);
+            if (!back_facing(ndotv, faces[s.face])) out.push_back(s);
         }
     }
     if (params.apparent_ridges)

@@ -198,7 +198,7 @@ void apparent_derivative(const LineMesh& lm, const float* ndotv, size_t begin, s
 void ridge_face(const LineMesh& lm, uint32_t f, const float* ndotv, bool ridge, float thresh, bool fade,
                 std::vector<LineSegment>& out) {
     const StripFace sf = strip_face(lm, f);
-    if (ndotv[sf.vertex[0]] <= 0.0f && ndotv[sf.vertex[1]] <= 0.0f && ndotv[sf.vertex[2]] <= 0.0f) return;
+    if (back_facing(ndotv, lm.mesh.faces[f])) return;
     const float* k1 = lm.curvature.k1.data();
     const float k[3] = {k1[sf.vertex[0]], k1[sf.vertex[1]], k1[sf.vertex[2]]};
     if (ridge ? (k[0] <= 0.0f || k[1] <= 0.0f || k[2] <= 0.0f) : (k[0] >= 0.0f || k[1] >= 0.0f || k[2] >= 0.0f)) return;

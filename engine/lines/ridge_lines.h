@@ -51,6 +51,11 @@ void apparent_curvature(const LineMesh& mesh, const glm::vec3& eye, const float*
                         ApparentVertex* out);
 void apparent_derivative(const LineMesh& mesh, const float* ndotv, size_t begin, size_t end, ApparentVertex* inout);
 
+// rtsc's back-face culling: all three corners have n·v ≤ 0.
+inline bool back_facing(const float* ndotv, const glm::uvec3& corners) {
+    return ndotv[corners.x] <= 0.0f && ndotv[corners.y] <= 0.0f && ndotv[corners.z] <= 0.0f;
+}
+
 // One face's lines of each type; `fade`: rtsc's draw_faded.
 void ridge_face(const LineMesh& mesh, uint32_t face, const float* ndotv, bool ridge, float rv_thresh, bool fade,
                 std::vector<LineSegment>& out);
