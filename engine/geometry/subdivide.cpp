@@ -34,9 +34,13 @@ TriangleMesh subdivide_once(const TriangleMesh& in) {
         const uint32_t ab = midpoint(a, b), bc = midpoint(b, c), ca = midpoint(c, a);
         // Four triangles with the parent's winding.
         for (uint32_t i : {a, ab, ca, ab, b, bc, ca, bc, c, ab, bc, ca}) out.indices.push_back(i);
-        if (t / 3 < in.face_material.size()) out.face_material.insert(out.face_material.end(), 4, in.face_material[t / 3]);
-        if (t / 3 < in.face_part.size()) out.face_part.insert(out.face_part.end(), 4, in.face_part[t / 3]);
-        if (t / 3 < in.face_model.size()) out.face_model.insert(out.face_model.end(), 4, in.face_model[t / 3]);
+        // The four children keep the parent's per-triangle values.
+        const auto children = [&](const auto& parent, auto& child) {
+            if (t / 3 < parent.size()) child.insert(child.end(), 4, parent[t / 3]);
+        };
+        children(in.face_material, out.face_material);
+        children(in.face_part, out.face_part);
+        children(in.face_model, out.face_model);
     }
     return out;
 }

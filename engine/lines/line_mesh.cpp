@@ -54,12 +54,15 @@ LineMesh build_line_mesh(const TriangleMesh& mesh, float crease_angle_deg) {
     line_mesh.mesh = weld(mesh);
     line_mesh.curvature = compute_curvature(line_mesh.mesh);
     line_mesh.feature_size = feature_size(line_mesh.mesh, line_mesh.curvature);
-    if (mesh.face_part.size() == mesh.triangle_count())
-        for (uint32_t source : line_mesh.mesh.source_face) line_mesh.face_part.push_back(mesh.face_part[source]);
-    std::vector<uint32_t> face_model;
-    if (mesh.face_model.size() == mesh.triangle_count())
-        for (uint32_t source : line_mesh.mesh.source_face) face_model.push_back(mesh.face_model[source]);
-    line_mesh.face_coarse = coarse_faces(line_mesh.mesh, face_model, mesh.subdivisions);
+    // A per-triangle array per welded face (empty where the mesh has none).
+    const auto per_face = [&](const std::vector<uint32_t>& per_triangle) {
+        std::vector<uint32_t> out;
+        if (per_triangle.size() == mesh.triangle_count())
+            for (uint32_t source : line_mesh.mesh.source_face) out.push_back(per_triangle[source]);
+        return out;
+    };
+    line_mesh.face_part = per_face(mesh.face_part);
+    line_mesh.face_coarse = coarse_faces(line_mesh.mesh, per_face(mesh.face_model), mesh.subdivisions);
     line_mesh.feature_edges = feature_edge_masks(line_mesh.mesh, crease_angle_deg, line_mesh.face_part);
     line_mesh.vertex_arrays = line_vertex_arrays(line_mesh.mesh, line_mesh.curvature);
     vertex_face_lists(line_mesh.mesh, line_mesh.vertex_face_offsets, line_mesh.vertex_faces);

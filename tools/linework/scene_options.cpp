@@ -68,18 +68,10 @@ void choose_line_types(const std::string& list, LinesDesc& lines) {
     if (!lines.sets.empty())
         throw usage_error("--lines chooses the types of a scene without \"line_sets\"; this scene selects them in its line "
                           "sets (\"select\": {\"types\": [...]})");
-    LineParams chosen = lines.params;
-    for (int t = 0; t < kLineTypeCount; ++t) set_line_type_enabled(chosen, LineType(t), false);
-    size_t start = 0;
-    while (start <= list.size()) {
-        const size_t comma = std::min(list.find(',', start), list.size());
-        const std::string name = list.substr(start, comma - start);
-        const std::optional<LineType> type = line_type_from_name(name);
-        if (!type) throw usage_error("--lines: unknown line type \"" + name + "\" (" + line_type_names() + ")");
-        set_line_type_enabled(chosen, *type, true);
-        start = comma + 1;
-    }
-    lines.params = chosen;
+    std::string unknown;
+    const std::optional<uint32_t> types = line_types_from_list(list, unknown);
+    if (!types) throw usage_error("--lines: unknown line type \"" + unknown + "\" (" + line_type_names() + ")");
+    set_line_types(lines.params, *types);
     lines.enabled = true;
 }
 
