@@ -45,21 +45,36 @@ submit() {
 
 echo "== --exact through Slurm, one chunk's process killed mid-chunk"
 "$linework" farm "${shot[@]}" --frames 0:23 --chunk 6 --exact -o "$work/exact"
+# Chunk 2 (frames 12-17) is made to stop itself (SIGSTOP) before its linework starts: the
+# test edits that task's command in the generated job script to go through stop_first.sh,
+# which on its first run writes its pid, stops, and when let go execs linework in the same
+# process. The test then lets it run in ~2 ms slices (bash builtins, no fork between CONT
+# and STOP: a loaded machine delays a forked `sleep` by tens of ms, and a frame here takes
+# ~10 ms) until its first frame is on disk, so that the SIGKILL lands mid-chunk whatever the
+# machine's speed; its job script then runs the task again (stop_first.sh then just execs).
+cat > "$work/stop_first.sh" <<EOS
+#!/usr/bin/env bash
+if mkdir "$work/stopped" 2>/dev/null; then echo \$\$ > "$work/stopped/pid"; kill -STOP \$\$; fi
+exec "\$@"
+EOS
+frames_script=$(ls "$work"/exact/slurm/phase_*_frames.sbatch)
+grep -q '^  2) id=.*; cmd=(' "$frames_script" || fail "no task 2 line in $frames_script"
+sed -i "s|^  2) \(id=[^;]*\); cmd=(|  2) \1; cmd=(bash $work/stop_first.sh |" "$frames_script"
 jobs=$(submit "$work/exact")
-# Chunk 2 (frames 12-17): its linework is stopped (SIGSTOP) as soon as it runs, then let go in
-# 10 ms slices until its first frame is on disk, so that the SIGKILL lands mid-chunk
-# whatever the machine's speed; its job script then runs the task again.
 chunk_frames() { ls "$work/exact/frames" 2>/dev/null | grep -c '^frame_001[2-7].png$' || true; }
-pid=
 for ((t = 0; t < 3000; t++)); do
-  pid=$(pgrep -f -- "--part 12:17" | head -n1 || true)
-  [[ -z $pid ]] || break
+  [[ -s $work/stopped/pid ]] && break
+  sleep 0.1
+done
+pid=$(cat "$work/stopped/pid" 2>/dev/null) || fail "never saw chunk 12-17 start"
+# Until the pid shows as stopped (T) it may not yet have reached its own SIGSTOP.
+for ((t = 0; t < 3000; t++)); do
+  [[ $(ps -o stat= -p "$pid") == T* ]] && break
   sleep 0.01
 done
-[[ -n $pid ]] || fail "never saw chunk 12-17 running"
-kill -STOP "$pid"
-for ((t = 0; t < 3000 && $(chunk_frames) == 0; t++)); do
-  kill -CONT "$pid"; sleep 0.01; kill -STOP "$pid"
+exec {never}<> <(:)  # an fd that never has data: `read -t` on it is a fork-free sleep
+for ((t = 0; t < 100000 && $(chunk_frames) == 0; t++)); do
+  kill -CONT "$pid"; read -r -t 0.002 -u "$never" || true; kill -STOP "$pid"
 done
 written=$(chunk_frames)
 kill -KILL "$pid"
