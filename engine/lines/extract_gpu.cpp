@@ -111,7 +111,7 @@ void LineExtractor::record(VkCommandBuffer cmd, const glm::vec3& eye, const Line
     uint32_t flags = params.fade ? kFlagFade : 0u;  // FLAG_* of shaders/lines_shared.glsl: bit t for LineType t
     if (params.contours == ContourMode::Mesh) flags |= kFlagMeshContours;
     if (params.contours == ContourMode::Auto) flags |= kFlagAutoContours;
-    for (int type = 0; type < kLineTypeCount; ++type)
+    for (int type = 0; type < kFaceLineTypeCount; ++type)
         if (line_type_enabled(params, LineType(type))) flags |= 1u << type;
     const glm::vec4 thresholds(t.rv_thresh, t.ar_thresh, t.sh_thresh, t.ph_thresh);
     const LinesPush vertex_push{glm::vec4(eye, t.sug_thresh), thresholds, t.fade, flags, vertex_count_, 0u};

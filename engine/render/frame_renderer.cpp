@@ -250,6 +250,12 @@ void FrameRenderer::begin(FrameInput input) {
         if (extractor_.read_segments(slot.frame.segments)) break;
         if (attempt == 2) throw Error("line extraction: the segment count kept growing past the buffer");
     }
+    if (slot.draw_lines && extraction.intersections) {  // found per pose, on the host (lines/intersections.h)
+        Timer intersect;
+        const std::vector<LineSegment>& crossing = intersection_lines(*line_mesh_, intersections_);
+        slot.frame.segments.insert(slot.frame.segments.end(), crossing.begin(), crossing.end());
+        slot.frame.timings.extract_ms += intersect.elapsed_ms();
+    }
     slot.input = std::move(input);
     slot.begin_ms = begin_timer.elapsed_ms();
     flight_.push_back(index);

@@ -30,6 +30,7 @@
 #include "gpu/timestamps.h"
 #include "lines/extract_gpu.h"
 #include "lines/extract_reference.h"
+#include "lines/intersections.h"
 #include "lines/line_mesh.h"
 #include "lines/svg_export.h"
 #include "lines/visibility.h"
@@ -212,6 +213,7 @@ private:
     LineExtractor extractor_;
     bool extraction_on_host_;  // CPU devices: extract_lines_reference, beside the surface pass
     ExtractWorkspace extract_workspace_;  // its per-vertex scratch, kept from frame to frame
+    IntersectionCache intersections_;     // per pose of the line mesh (either extraction)
     std::optional<GpuMesh> mesh_;
     SurfaceMaterials materials_;  // without textures: what set_mesh groups by
     std::optional<GpuMaterials> gpu_materials_;

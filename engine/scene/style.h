@@ -65,13 +65,14 @@ struct LinesDesc {
     LineParams params;
     // Per LineType. rtsc's widths for its lines (ridges, valleys and principal highlights 2,
     // apparent ridges and suggestive highlights 2.5; highlights grey as rtsc draws them on
-    // white); material boundaries as creases.
+    // white); material boundaries as creases; intersections as wide as ridges, black.
     std::array<LineStyle, kLineTypeCount> styles{
         LineStyle{2.5f, glm::vec3(0.0f), "", 0.0f},  LineStyle{2.5f, glm::vec3(0.0f), "", 0.0f},
         LineStyle{1.5f, glm::vec3(0.15f), "", 0.0f}, LineStyle{1.5f, glm::vec3(0.15f), "", 0.0f},
         LineStyle{2.0f, glm::vec3(0.0f), "", 0.0f},  LineStyle{2.0f, glm::vec3(0.0f), "", 0.0f},
         LineStyle{2.5f, glm::vec3(0.0f), "", 0.0f},  LineStyle{2.5f, glm::vec3(0.3f), "", 0.0f},
-        LineStyle{2.0f, glm::vec3(0.0f), "", 0.0f},  LineStyle{1.5f, glm::vec3(0.15f), "", 0.0f}};
+        LineStyle{2.0f, glm::vec3(0.0f), "", 0.0f},  LineStyle{1.5f, glm::vec3(0.15f), "", 0.0f},
+        LineStyle{2.0f, glm::vec3(0.0f), "", 0.0f}};
     HiddenLines hidden = HiddenLines::None;
     float sample_spacing_px = 2.0f;  // δ of the visibility stage
     // "line_sets" of the scene file, drawn in order. Empty: `styles` and `params` are the

@@ -26,8 +26,12 @@ enum class LineType : uint32_t {
     SuggestiveHighlight = 7,
     PrincipalHighlight = 8,
     MaterialBoundary = 9,  // between faces of different primitives (materials, objects)
+    Intersection = 10,     // where surfaces cut through each other (lines/intersections.h)
 };
-constexpr int kLineTypeCount = 10;
+constexpr int kLineTypeCount = 11;
+// Those the per-face extraction passes find (extract_reference.h, extract_gpu.h); the GPU
+// passes give type t flag bit t, so only these have one. Intersections are found apart.
+constexpr int kFaceLineTypeCount = 10;
 
 // The types a line set selects when it does not say: those drawn by default.
 constexpr uint32_t kDefaultLineTypes = 0xfu;
@@ -37,7 +41,7 @@ inline const char* line_type_name(LineType type) {
     constexpr const char* names[kLineTypeCount] = {"silhouette",     "suggestive",           "crease",
                                                    "border",         "ridge",                "valley",
                                                    "apparent_ridge", "suggestive_highlight", "principal_highlight",
-                                                   "material_boundary"};
+                                                   "material_boundary", "intersection"};
     return names[static_cast<uint32_t>(type) % kLineTypeCount];
 }
 
@@ -85,6 +89,7 @@ struct LineParams {
     bool suggestive_highlights = false;
     bool principal_highlights = false;
     bool material_boundaries = false;
+    bool intersections = false;
     float sug_thresh = 0.01f;        // tanθ·DwKr threshold, scaled by 1 / feature_size²
     bool fade = true;                // fade lines in as their test grows (rtsc's draw_faded)
     float fade_thresh = 0.03f;       // alpha = t / (t + fade_thresh / fs²) (suggestive contours and highlights)
@@ -110,6 +115,7 @@ auto line_type_switch(Params& p, LineType type) -> decltype(&p.silhouettes) {
         case LineType::SuggestiveHighlight: return &p.suggestive_highlights;
         case LineType::PrincipalHighlight: return &p.principal_highlights;
         case LineType::MaterialBoundary: return &p.material_boundaries;
+        case LineType::Intersection: return &p.intersections;
     }
     return &p.silhouettes;  // unreachable: every enumerator is listed
 }

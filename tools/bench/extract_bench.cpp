@@ -4,10 +4,13 @@
 #include <cstdio>
 #include <vector>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "core/error.h"
 #include "core/timer.h"
 #include "geometry/subdivide.h"
 #include "lines/extract_reference.h"
+#include "lines/intersections.h"
 #include "lines/line_mesh.h"
 #include "lines/line_types.h"
 #include "scene/scene.h"
@@ -56,6 +59,17 @@ int run_extract_bench(const ExtractBenchOptions& o) {
     params.contours = contour_mode(o.contours);
     LoadedScene scene = load_scene(scene_for_model(o.model));
     scene.mesh = subdivide_midpoint(scene.mesh, o.subdivide);
+    if (o.crossed_copy) {
+        // Turned about the vertical through the model's centre and moved along x by a third
+        // of its size: the copy cuts through the model along long curves.
+        TriangleMesh copy = scene.mesh;
+        const Bounds b = compute_bounds(scene.mesh.positions);
+        const glm::mat3 turn = glm::mat3(glm::rotate(glm::mat4(1.0f), glm::radians(30.0f), glm::vec3(0.0f, 1.0f, 0.0f)));
+        const glm::vec3 shift(glm::length(b.max - b.min) / 3.0f, 0.0f, 0.0f);
+        for (glm::vec3& x : copy.positions) x = b.center() + turn * (x - b.center()) + shift;
+        for (glm::vec3& n : copy.normals) n = turn * n;
+        append_mesh(scene.mesh, copy);
+    }
     ViewCamera camera = scene.camera;
     apply_camera_flags(camera, o.camera);
     Timer build;
@@ -70,10 +84,15 @@ int run_extract_bench(const ExtractBenchOptions& o) {
     std::vector<std::vector<double>> ms(counts);
     std::vector<LineSegment> segments;
     ExtractWorkspace workspace;
+    IntersectionCache intersections;
     for (int r = -1; r < o.repeat; ++r)  // one warm-up round
         for (size_t k = 0; k < counts; ++k) {
             Timer t;
             extract_lines_reference(lm, camera.eye, params, segments, workspace, size_t(o.threads[k]));
+            if (params.intersections) {  // as FrameRenderer::begin appends them
+                const std::vector<LineSegment>& crossing = intersection_lines(lm, intersections);
+                segments.insert(segments.end(), crossing.begin(), crossing.end());
+            }
             if (r >= 0) ms[k].push_back(t.elapsed_ms());
         }
     for (size_t k = 0; k < counts; ++k) {
@@ -81,6 +100,19 @@ int run_extract_bench(const ExtractBenchOptions& o) {
         const std::string label = counts == 1 ? "extract" : "extract (" + std::to_string(o.threads[k]) + " threads)";
         std::printf("%s: median %.3f ms (min %.3f, max %.3f) over %d runs, %zu segments\n", label.c_str(), s.median, s.min,
                     s.max, o.repeat, segments.size());
+    }
+    if (params.intersections) {  // each new pose finds them again
+        std::vector<double> pose_ms;
+        size_t found = 0, pairs = 0;
+        for (int r = -1; r < std::min(o.repeat, 10); ++r) {
+            Timer t;
+            found = find_intersection_lines(lm, &pairs).size();
+            if (r >= 0) pose_ms.push_back(t.elapsed_ms());
+        }
+        const Stats s = stats(pose_ms);
+        std::printf("intersections per new pose: median %.3f ms (min %.3f, max %.3f) over %zu runs, %zu face pairs "
+                    "with overlapping boxes, %zu segments\n",
+                    s.median, s.min, s.max, pose_ms.size(), pairs, found);
     }
     for (size_t k = 1; k < counts; ++k) {
         std::vector<double> ratios(ms[0].size());

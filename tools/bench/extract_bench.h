@@ -2,7 +2,10 @@
 // extraction alone (extract_lines_reference: per-vertex view quantities, then the per-face
 // isolines and feature edges), timed per view, so that it can be set beside rtsc's
 // per-view extraction on the same mesh and camera (docs/BENCHMARKS.md). Prints one line:
-// `extract: median X ms (min A, max B)`. Needs no Vulkan device.
+// `extract: median X ms (min A, max B)`. With intersection lines among the types, the
+// per-view time includes appending them as a frame does (found once for a still pose), and
+// a second line times finding them again, as each new pose of an animation does. Needs no
+// Vulkan device.
 #pragma once
 
 #include <optional>
@@ -27,6 +30,7 @@ struct ExtractBenchOptions {
     std::string contours = "smooth";  // smooth, mesh or auto (LineParams::contours)
     std::vector<int> threads{1};  // several: timed in turn, run by run (noisy machines)
     int repeat = 50;
+    bool crossed_copy = false;  // add a turned and moved copy of the model that cuts through it
 };
 
 // The camera flags over `camera` (the one framing the model): usage errors name the flag.

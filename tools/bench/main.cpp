@@ -55,6 +55,7 @@ struct BenchOptions {
     bool strokes = false;    // lines: draw silhouettes and suggestive contours as SLAM strokes (implies coherence)
     lw::bench::CameraFlags camera;  // over the framing camera
     bool extract_only = false;      // lines: the host extraction alone (extract_bench.h)
+    bool crossed_copy = false;      // lines --extract-only: the model and a copy crossing it
     std::string types;
     std::string contours = "smooth";
     std::vector<int> threads{1};
@@ -275,6 +276,9 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     lines_cmd->add_option("--repeat", lines.repeat, "--extract-only: timed runs (after one warm-up)")
         ->capture_default_str();
+    lines_cmd->add_flag("--crossed-copy", lines.crossed_copy,
+                        "--extract-only: add a copy of the model turned 30° about the vertical and moved by a third of "
+                        "its size, so that the two cut through each other (intersection lines)");
     lw::bench::RibbonBenchOptions ribbon;
     CLI::App* ribbon_cmd = lw::bench::add_ribbon_bench(app, ribbon);
     lw::bench::PatternBenchOptions pattern;
@@ -301,7 +305,8 @@ int main(int argc, char** argv) {
         if (lines_cmd->parsed() && lines.extract_only)
             return lw::bench::run_extract_bench({.model = lines.model, .subdivide = lines.subdivide,
                                                  .camera = lines.camera, .types = lines.types, .contours = lines.contours,
-                                                 .threads = lines.threads, .repeat = lines.repeat});
+                                                 .threads = lines.threads, .repeat = lines.repeat,
+                                                 .crossed_copy = lines.crossed_copy});
         if (lines_cmd->parsed()) return run_lines(lines);
         if (ribbon_cmd->parsed()) return lw::bench::run_ribbon_bench(ribbon);
         if (pattern_cmd->parsed()) return lw::bench::run_pattern_bench(pattern);

@@ -208,6 +208,8 @@ void draw_panel(ViewerState& s) {
             ImGui::SameLine(170);
             ImGui::Checkbox("princ. highlights", &lines.params.principal_highlights);
             ImGui::Checkbox("material boundaries", &lines.params.material_boundaries);
+            ImGui::SameLine(170);
+            ImGui::Checkbox("intersections", &lines.params.intersections);
         }
         ImGui::SliderFloat("suggestive thr.", &lines.params.sug_thresh, 0.0f, 0.2f, "%.3f");
         if (lines.params.ridges || lines.params.valleys)
