@@ -29,6 +29,7 @@ class Polyline:
     s: npt.NDArray[np.float32]         # N, screen arc length, pixels
     position: npt.NDArray[np.float32]  # N×3, world
     closed: bool
+    qi: int                            # occlusion level: 0 visible, else surfaces in front (1 unless counted)
     type: str
     line_set: str
     def __len__(self) -> int: ...

@@ -62,6 +62,7 @@ struct Polyline {
     std::shared_ptr<const LineStore> store;
     size_t first = 0, count = 0;  // its samples in the store
     bool closed = false;          // a whole loop: the SVG repeats the first point
+    uint32_t qi = 0;              // occlusion level (ScreenPath::qi)
     std::string type, line_set;
 };
 

@@ -112,7 +112,10 @@ void bind_session(pyb::module_& m) {
         .def_property_readonly("position", [](const Polyline& p) { return store_view<float>(p, &LineStore::position, 3); },
                                "N×3 float32: the world-space surface point")
         .def_readonly("closed", &Polyline::closed, "a whole loop, entirely visible")
-        .def_readonly("type", &Polyline::type, "line type: silhouette, suggestive, crease or border")
+        .def_readonly("qi", &Polyline::qi,
+                      "occlusion level: 0 visible; hidden, the surfaces in front where a line set selects \"qi\" "
+                      "(else 1)")
+        .def_readonly("type", &Polyline::type, "line type: silhouette, suggestive, ... (README \"Line types\")")
         .def_readonly("line_set", &Polyline::line_set, "the line set (SVG group) it belongs to")
         .def("__len__", [](const Polyline& p) { return p.count; })
         .def("__repr__", [](const Polyline& p) {

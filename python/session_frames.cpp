@@ -27,6 +27,7 @@ Polyline polyline(const ScreenPath& path, const std::string& line_set, const std
             .first = first,
             .count = path.samples.size(),
             .closed = path.closed,
+            .qi = path.qi,
             .type = line_type_name(path.type),
             .line_set = line_set};
 }

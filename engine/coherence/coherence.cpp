@@ -507,7 +507,7 @@ void CoherenceTracker::split_merged_paths(std::vector<ScreenPath>& paths, VoteSe
     std::vector<PathFit> out_fits;
     std::vector<size_t> refit;  // pieces fitted on their own below
     auto add_piece = [&](const ScreenPath& path, size_t p, size_t from, size_t to, const PathFit* keep) {
-        ScreenPath piece{.type = path.type, .closed = false, .visible = path.visible, .source = path.source};
+        ScreenPath piece{.type = path.type, .closed = false, .visible = path.visible, .qi = path.qi, .source = path.source};
         piece.samples.assign(path.samples.begin() + std::ptrdiff_t(from), path.samples.begin() + std::ptrdiff_t(to + 1));
         const float shift = path.samples[from].s - path.samples.front().s;  // new arclength origin
         for (uint32_t v = votes.offsets[p]; v < votes.offsets[p + 1]; ++v)

@@ -85,27 +85,32 @@ std::vector<ScreenSample> resample(const LinePath& path, const CameraMatrices& c
 
 namespace {
 
-// Resamples one path, tests every sample, and appends its runs of equal visibility to
-// `out`. Neighbouring runs share their boundary sample so that drawn runs meet without a
-// gap; a path of one run keeps its samples as they are.
+// Resamples one path, tests every sample, and appends its runs of equal visibility (and
+// occlusion level) to `out`. Neighbouring runs share their boundary sample so that drawn
+// runs meet without a gap; a path of one run keeps its samples as they are.
 void split_into_runs(const LinePath& path, size_t index, const CameraMatrices& camera, const DepthImage& depth,
-                     const DepthTester& tester, float spacing, std::vector<ScreenPath>& out) {
+                     const DepthTester& tester, float spacing, const OcclusionCounter* levels, const glm::vec3& eye,
+                     std::vector<ScreenPath>& out) {
     if (path.vertices.size() < 2) return;
     std::vector<ScreenSample> samples = resample(path, camera, depth, spacing);
     if (samples.empty()) return;
-    std::vector<uint8_t> visible(samples.size());
-    for (size_t i = 0; i < samples.size(); ++i) visible[i] = tester.visible(samples[i].pixel, samples[i].depth);
+    std::vector<uint32_t> level(samples.size());
+    for (size_t i = 0; i < samples.size(); ++i) {
+        if (tester.visible(samples[i].pixel, samples[i].depth)) continue;
+        const bool contour = path.type == LineType::Silhouette;
+        level[i] = levels ? std::max(1u, levels->surfaces_in_front(eye, samples[i].position, samples[i].face, contour)) : 1u;
+    }
 
-    if (std::all_of(visible.begin(), visible.end(), [&](uint8_t v) { return v == visible[0]; })) {
-        out.push_back(ScreenPath{.type = path.type, .closed = path.closed, .visible = visible[0] != 0,
+    if (std::all_of(level.begin(), level.end(), [&](uint32_t l) { return l == level[0]; })) {
+        out.push_back(ScreenPath{.type = path.type, .closed = path.closed, .visible = level[0] == 0, .qi = level[0],
                                  .source = index, .samples = std::move(samples)});
         return;
     }
     size_t begin = 0;
     while (begin < samples.size()) {
         size_t end = begin + 1;
-        while (end < samples.size() && visible[end] == visible[begin]) ++end;
-        ScreenPath run{.type = path.type, .visible = visible[begin] != 0, .source = index};
+        while (end < samples.size() && level[end] == level[begin]) ++end;
+        ScreenPath run{.type = path.type, .visible = level[begin] == 0, .qi = level[begin], .source = index};
         run.samples.assign(samples.begin() + std::ptrdiff_t(begin),
                            samples.begin() + std::ptrdiff_t(std::min(end + 1, samples.size())));
         if (run.samples.size() >= 2) out.push_back(std::move(run));
@@ -116,14 +121,16 @@ void split_into_runs(const LinePath& path, size_t index, const CameraMatrices& c
 }  // namespace
 
 std::vector<ScreenPath> compute_visibility(const std::vector<LinePath>& paths, const CameraMatrices& camera,
-                                           const DepthImage& depth, const VisibilityParams& params) {
+                                           const DepthImage& depth, const VisibilityParams& params,
+                                           const OcclusionCounter* levels) {
     const DepthTester tester{depth, params};
+    const glm::vec3 eye(glm::inverse(camera.view)[3]);
     // Paths are independent: test them on every core, each chunk into its own list, and
     // concatenate in order (the result does not depend on the thread count).
     std::vector<std::vector<ScreenPath>> chunk_out(worker_count());
     parallel_for(paths.size(), 64, [&](size_t first, size_t last, size_t chunk) {
         for (size_t p = first; p < last; ++p)
-            split_into_runs(paths[p], p, camera, depth, tester, params.sample_spacing_px, chunk_out[chunk]);
+            split_into_runs(paths[p], p, camera, depth, tester, params.sample_spacing_px, levels, eye, chunk_out[chunk]);
     });
     std::vector<ScreenPath> out;
     for (auto& list : chunk_out) std::move(list.begin(), list.end(), std::back_inserter(out));

@@ -11,12 +11,17 @@
 // keeps silhouettes (which lie exactly on the depth discontinuity) visible; the bias grows
 // with the local depth slope (slope-scaled, as polygon offset does) plus a small share of
 // the depth itself, so lines on steeply inclined surfaces are not lost to rasterization.
+//
+// Occlusion levels: given an `OcclusionCounter`, each hidden sample is also given the number
+// of surfaces in front of it (at least 1: the depth test decides hidden), and hidden runs
+// are split where that number changes (ScreenPath::qi). Without one, hidden runs have qi 1.
 #pragma once
 
 #include <span>
 #include <vector>
 
 #include "lines/line_types.h"
+#include "lines/occlusion.h"
 #include "scene/camera.h"
 #include "types/screen_path.h"
 
@@ -39,7 +44,8 @@ struct DepthImage {
 
 [[nodiscard]] std::vector<ScreenPath> compute_visibility(const std::vector<LinePath>& paths,
                                                          const CameraMatrices& camera, const DepthImage& depth,
-                                                         const VisibilityParams& params = {});
+                                                         const VisibilityParams& params = {},
+                                                         const OcclusionCounter* levels = nullptr);
 
 // Eye depth of a window depth value (infinity for the background).
 [[nodiscard]] float linear_depth(float window_depth, float znear, float zfar);

@@ -216,6 +216,10 @@ void FrameRenderer::begin(FrameInput input) {
     slot.frame = Frame{};
     slot.positions.reset();
     const LineParams extraction = extraction_params(input.lines, slot.sets);
+    slot.levels = slot.draw_lines && std::any_of(slot.sets.begin(), slot.sets.end(), [](const LineSetDesc& set) {
+        return set.enabled && set.select.qi.has_value();
+    });
+    if (slot.levels) slot.occlusion.set_mesh(*line_mesh_);  // again only for a new pose
 
     // (1) Surface and depth; line extraction in the same submission, or (on a CPU device, see
     // ComputeSite) by the host while the device draws the surface: lavapipe's vertex stage
@@ -288,7 +292,8 @@ Frame FrameRenderer::finish() {
         frame.timings.chain_ms = chain.elapsed_ms();
         Timer visibility;
         const DepthImage depth{int(target.width), int(target.height), depth_pixels, in.camera.znear, in.camera.zfar};
-        frame.screen_paths = compute_visibility(frame.paths, in.camera, depth, {.sample_spacing_px = in.lines.sample_spacing_px});
+        frame.screen_paths = compute_visibility(frame.paths, in.camera, depth, {.sample_spacing_px = in.lines.sample_spacing_px},
+                                                slot.levels ? &slot.occlusion : nullptr);
         frame.timings.visibility_ms = visibility.elapsed_ms();
         prepare_sets(frame, slot.sets, in.lines, in.camera, depth, coherence,
                      slot.positions ? *slot.positions : line_mesh_->mesh.positions, in.outputs.draw ? &strokes : nullptr);

@@ -198,6 +198,10 @@ private:
         // The line mesh's positions in the frame's pose, kept when it is posed again before
         // the frame finishes (its votes carry samples from that pose).
         std::optional<std::vector<glm::vec3>> positions;
+        // The ray-casting index of the frame's pose, when a line set selects occlusion
+        // levels ("qi"): built in begin(), while the line mesh is in that pose.
+        OcclusionCounter occlusion;
+        bool levels = false;
     };
     void keep_positions_of_frames_in_flight();
     // The slot's target and the surface pass at `samples` per pixel (1, 4 or 8;

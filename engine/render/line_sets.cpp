@@ -15,6 +15,7 @@ std::vector<LineSetDesc> effective_line_sets(const LinesDesc& lines) {
         LineSetDesc set{.name = line_type_name(type), .enabled = line_type_enabled(lines.params, type)};
         set.select.types = 1u << uint32_t(t);
         set.select.visibility = lines.hidden == HiddenLines::None ? Visibility::Visible : Visibility::Any;
+        if (lines.hidden != HiddenLines::None && lines.hidden_levels > 0) set.select.qi = LevelRange{0, lines.hidden_levels};
         set.style.color = legacy.color;
         set.style.width = legacy.width;
         set.style.slam = legacy.slam;
@@ -68,8 +69,12 @@ std::vector<ScreenPath> select_line_set(const std::vector<ScreenPath>& runs, con
     const bool by_group = !select.models.empty() || !select.materials.empty();
     for (const ScreenPath& run : runs) {
         if (!select.has_type(run.type)) continue;
-        if (select.visibility == Visibility::Visible && !run.visible) continue;
-        if (select.visibility == Visibility::Hidden && run.visible) continue;
+        if (select.qi) {
+            if (run.qi < select.qi->min || run.qi > select.qi->max) continue;
+        } else if ((select.visibility == Visibility::Visible && !run.visible) ||
+                   (select.visibility == Visibility::Hidden && run.visible)) {
+            continue;
+        }
         if (by_group && (!groups || !path_in_groups(run, select, *groups))) continue;
         selected.push_back(run);
     }

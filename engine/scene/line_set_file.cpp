@@ -147,6 +147,14 @@ LineSelection read_selection(ObjectReader& set, const std::filesystem::path& fil
         const std::string v = r.string_of("visibility", {"visible", "hidden", "any"});
         select.visibility = v == "visible" ? Visibility::Visible : v == "hidden" ? Visibility::Hidden : Visibility::Any;
     }
+    if (r.has("qi")) {
+        if (r.has("visibility")) r.fail_key("qi", "give either \"qi\" or \"visibility\", not both");
+        const json& q = r.at("qi");
+        const auto level = [](const json& v) { return v.is_number_integer() && v.get<int64_t>() >= 0 && v.get<int64_t>() <= 1000; };
+        if (!q.is_array() || q.size() != 2 || !level(q[0]) || !level(q[1]) || q[0].get<int64_t>() > q[1].get<int64_t>())
+            r.fail_key("qi", "expected [min, max]: occlusion levels 0 to 1000 (0 visible, 1 behind one surface), min <= max");
+        select.qi = LevelRange{q[0].get<uint32_t>(), q[1].get<uint32_t>()};
+    }
     if (r.has("models")) select.models = strings(r, "models");
     if (r.has("materials")) select.materials = strings(r, "materials");
     r.reject_unknown();

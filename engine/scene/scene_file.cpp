@@ -182,6 +182,11 @@ LinesDesc read_lines(ObjectReader& parent, const std::filesystem::path& file) {
         const std::string h = r.string_of("hidden", {"none", "dashed", "faint"});
         desc.hidden = h == "dashed" ? HiddenLines::Dashed : h == "faint" ? HiddenLines::Faint : HiddenLines::None;
     }
+    if (r.has("hidden_levels")) {
+        const double n = r.number("hidden_levels", 0, 1000);
+        if (n != std::floor(n)) r.fail_key("hidden_levels", "expected a whole number of surfaces (0: all hidden lines)");
+        desc.hidden_levels = uint32_t(n);
+    }
     if (r.has("sample_spacing")) desc.sample_spacing_px = static_cast<float>(r.number("sample_spacing", 0.25, 64.0));
     if (r.has("contours")) desc.params.contours = contour_mode(r.string_of("contours", {"smooth", "mesh", "auto"}));
     r.reject_unknown();

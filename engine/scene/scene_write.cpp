@@ -107,6 +107,10 @@ json line_sets(const std::vector<LineSetDesc>& sets, const std::filesystem::path
         const Visibility v = set.select.visibility;
         json select{{"types", types},
                     {"visibility", v == Visibility::Visible ? "visible" : v == Visibility::Hidden ? "hidden" : "any"}};
+        if (const auto& q = set.select.qi) {
+            select.erase("visibility");
+            select["qi"] = {q->min, q->max};
+        }
         if (!set.select.models.empty()) select["models"] = set.select.models;
         if (!set.select.materials.empty()) select["materials"] = set.select.materials;
         json coherence = json::object();
@@ -168,6 +172,7 @@ std::string scene_json(const SceneDesc& desc, const ViewCamera& camera, const st
             l[line_type_name(type)] = entry;
         }
         l["hidden"] = lines.hidden == HiddenLines::Dashed ? "dashed" : lines.hidden == HiddenLines::Faint ? "faint" : "none";
+        if (lines.hidden_levels > 0) l["hidden_levels"] = lines.hidden_levels;
         l["sample_spacing"] = round6(lines.sample_spacing_px);
         if (lines.params.contours != ContourMode::Smooth) l["contours"] = contour_mode_name(lines.params.contours);
         root["lines"] = l;

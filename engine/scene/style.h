@@ -74,6 +74,9 @@ struct LinesDesc {
         LineStyle{2.0f, glm::vec3(0.0f), "", 0.0f},  LineStyle{1.5f, glm::vec3(0.15f), "", 0.0f},
         LineStyle{2.0f, glm::vec3(0.0f), "", 0.0f}};
     HiddenLines hidden = HiddenLines::None;
+    // With hidden lines drawn: only those behind at most this many surfaces (0: all). Counts
+    // them exactly (lines/occlusion.h): 1 shows the first hidden level only.
+    uint32_t hidden_levels = 0;
     float sample_spacing_px = 2.0f;  // δ of the visibility stage
     // "line_sets" of the scene file, drawn in order. Empty: `styles` and `params` are the
     // per-type shorthand, one set per type (render/line_sets.h, effective_line_sets).

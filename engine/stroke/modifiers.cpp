@@ -23,7 +23,7 @@ glm::vec2 perp(glm::vec2 d) { return {-d.y, d.x}; }
 
 ScreenPath empty_like(const ScreenPath& path) {
     return ScreenPath{
-        .type = path.type, .closed = false, .visible = path.visible, .source = path.source, .samples = {}};
+        .type = path.type, .closed = false, .visible = path.visible, .qi = path.qi, .source = path.source, .samples = {}};
 }
 
 ScreenSample lerp_sample(const ScreenSample& a, const ScreenSample& b, float t) {

@@ -24,9 +24,18 @@ enum class ParamPolicy { Coherent, Arclength, Stretch };
 
 enum class Visibility { Visible, Hidden, Any };
 
+// Occlusion levels a set selects (ScreenPath::qi): 0 is visible, 1 behind one surface, …
+struct LevelRange {
+    uint32_t min = 0, max = 0;
+    bool operator==(const LevelRange&) const = default;
+};
+
 struct LineSelection {
     uint32_t types = kDefaultLineTypes;  // bit (1 << LineType): the types selected (default: those drawn by default)
     Visibility visibility = Visibility::Visible;
+    // "qi": [min, max] — runs whose occlusion level is in the range, counted exactly (the
+    // frame then casts rays for hidden samples, lines/occlusion.h); replaces `visibility`.
+    std::optional<LevelRange> qi;
     std::vector<std::string> models;     // model file names (as in the scene's "model"); empty: all
     std::vector<std::string> materials;  // glTF material names; empty: all
 

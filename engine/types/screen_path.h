@@ -30,6 +30,9 @@ struct ScreenPath {
     LineType type = LineType::Silhouette;
     bool closed = false;   // a whole loop, entirely visible
     bool visible = true;
+    // Occlusion level: 0 when visible; when hidden, the number of surfaces in front where
+    // the visibility stage was asked to count them (lines/occlusion.h), else 1 (at least one).
+    uint32_t qi = 0;
     size_t source = 0;     // index of the LinePath it came from
     std::vector<ScreenSample> samples;
 };

@@ -56,6 +56,7 @@ struct BenchOptions {
     lw::bench::CameraFlags camera;  // over the framing camera
     bool extract_only = false;      // lines: the host extraction alone (extract_bench.h)
     bool crossed_copy = false;      // lines --extract-only: the model and a copy crossing it
+    int hidden_levels = 0;          // lines: hidden lines dashed, up to this occlusion level (0: none drawn)
     std::string types;
     std::string contours = "smooth";
     std::vector<int> threads{1};
@@ -139,6 +140,10 @@ int run_lines(const BenchOptions& b) {
     BenchScene s = prepare(b, ctx);
     lw::FrameRenderer renderer(ctx, uint32_t(s.width), uint32_t(s.height));
     lw::LinesDesc lines;
+    if (b.hidden_levels > 0) {  // occlusion levels counted for every hidden sample (lines/occlusion.h)
+        lines.hidden = lw::HiddenLines::Dashed;
+        lines.hidden_levels = uint32_t(b.hidden_levels);
+    }
     lw::CoherenceParams coherence;
     const bool coherent = b.coherence || b.strokes;
     if (b.strokes) {
@@ -169,7 +174,7 @@ int run_lines(const BenchOptions& b) {
     size_t coherent_samples = 0;
     Series frame_ms, frame_released, extract_gpu, extract_host, extract_wall, surface_gpu, draw_gpu, chain, visibility,
         extract_cpu;
-    size_t segments = 0, paths = 0;
+    size_t segments = 0, paths = 0, hidden_samples = 0;
     for (int frame = -2; frame < b.frames; ++frame) {
         // The frame as a caller's loop pays for it: drawn, its figures taken, and released
         // (its vertex buffers and path vectors freed), as a Python session's lines() is timed.
@@ -185,6 +190,8 @@ int run_lines(const BenchOptions& b) {
         }
         segments = held->segments.size();
         paths = held->paths.size();
+        hidden_samples = 0;
+        for (const auto& p : held->screen_paths) hidden_samples += p.visible ? 0 : p.samples.size();
         held.reset();
         const double released_ms = released.elapsed_ms();
         lw::Timer cpu;
@@ -219,7 +226,8 @@ int run_lines(const BenchOptions& b) {
     extract_host.print("host extraction");
     extract_wall.print("GPU extraction alone, wall (submit+wait+readback)");
     chain.print("CPU chaining");
-    visibility.print("CPU visibility");
+    visibility.print(b.hidden_levels > 0 ? "CPU visibility with occlusion levels" : "CPU visibility");
+    if (b.hidden_levels > 0) std::printf("  %zu hidden samples, each given its level by a ray cast\n", hidden_samples);
     draw_gpu.print("GPU line drawing");
     extract_cpu.print("CPU reference extract");
     if (coherent) {
@@ -276,6 +284,10 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     lines_cmd->add_option("--repeat", lines.repeat, "--extract-only: timed runs (after one warm-up)")
         ->capture_default_str();
+    lines_cmd->add_option("--hidden-levels", lines.hidden_levels,
+                          "Draw hidden lines dashed up to this occlusion level, counted exactly by a ray cast per hidden "
+                          "sample (the CPU visibility time includes it)")
+        ->check(CLI::Range(0, 1000));
     lines_cmd->add_flag("--crossed-copy", lines.crossed_copy,
                         "--extract-only: add a copy of the model turned 30° about the vertical and moved by a third of "
                         "its size, so that the two cut through each other (intersection lines)");

@@ -22,6 +22,10 @@ void add_frame_options(CLI::App* cmd, RenderOptions& o) {
                     "in NAME-hidden, centre lines in a hidden NAME-centerlines group; under --frames FILE_NNNN.svg)");
     cmd->add_option("--hidden", o.hidden, "Hidden lines: none (default), dashed or faint")
         ->check(CLI::IsMember({"none", "dashed", "faint"}));
+    cmd->add_option("--hidden-levels", o.hidden_levels,
+                    "With --hidden: only hidden lines behind at most N surfaces (1: the first hidden level), counted "
+                    "exactly by casting a ray per hidden sample (scene key lines.hidden_levels)")
+        ->check(CLI::Range(1, 1000));
     cmd->add_option("--orbit", o.orbit, "Turn the camera DEG degrees about the bounding-box centre over the frames");
     cmd->add_option("--dump-paths", o.dump_paths,
                     "Write DIR/frame_NNNN.json per frame: visible paths, their line set, (ρ, φ), level and samples");
@@ -44,6 +48,11 @@ void apply_frame_overrides(const RenderOptions& o, SceneDesc& desc) {
     if (o.no_materials) desc.style.materials = false;
     if (!o.hidden.empty())
         desc.lines.hidden = o.hidden == "dashed" ? HiddenLines::Dashed : o.hidden == "faint" ? HiddenLines::Faint : HiddenLines::None;
+    if (o.hidden_levels) {
+        if (desc.lines.hidden == HiddenLines::None)
+            throw usage_error("--hidden-levels: hidden lines are not drawn (add --hidden dashed or --hidden faint)");
+        desc.lines.hidden_levels = uint32_t(*o.hidden_levels);
+    }
     if (!o.svg.empty() && !desc.lines.enabled) throw usage_error("--svg needs lines (drop --no-lines)");
     if (o.orbit) desc.camera_path = CameraPath{.kind = CameraPath::Kind::Orbit, .orbit = {.degrees = *o.orbit}};
 }

@@ -19,6 +19,7 @@ struct RenderOptions {
     // Frame-shaping (add_frame_options).
     std::string eye, target, up, shading, svg, hidden, dump_paths;
     std::optional<float> fov, orbit;
+    std::optional<int> hidden_levels;
     bool exr = false, lines_only = false, no_lines = false, no_materials = false;
     // Range and output (registered by `render` only).
     std::string output, frames, part, save_states, start_state;
