@@ -16,7 +16,8 @@ packages=(
   libopenimageio-dev
   libglfw3-dev libimgui-dev                 # the viewer: window, input and its Dear ImGui panel
   xvfb xauth                                # viewer tests: xvfb-run, a display without a screen
-  libcgal-dev                               # Delaunay triangulations of the stroke-pattern synthesizer
+  libcgal-dev                               # Delaunay triangulations, fills, intersection lines
+  libembree-dev                             # ray casting of occlusion levels
   libfftw3-dev                              # FFTs of the SLAM synthesizer (fftw3f)
   libeigen3-dev                             # its small dense linear algebra (eigen-decompositions, solves)
   libgtest-dev libbenchmark-dev

@@ -5,8 +5,8 @@
 //         face it lies on.
 // Output: the number of distinct surface crossings on the segment from the eye to the point.
 //
-// Exact by ray casting against the scene's triangles, with CGAL's AABB tree as the spatial
-// index (built once per pose, LineMesh::generation). Not counted: hits at the point itself
+// Exact by ray casting against the scene's triangles, with Embree's BVH as the spatial index
+// (built once per pose, LineMesh::generation; robust mode: watertight triangle tests). Not counted: hits at the point itself
 // (the last 1e-3 of the way, where the line's own surface is — a crease or an intersection
 // line lies on two faces), and for a point on a contour hits on the faces round the point's
 // face (those sharing a vertex with it): a smooth contour lies inside a face where the
@@ -17,6 +17,7 @@
 //
 // The visibility stage (visibility.h) asks for a level only where the depth test found a
 // sample hidden; this is the only implementation (a CPU ray cast; there is no GPU pass).
+// Queries are thread-safe (the visibility stage runs paths on every core).
 #pragma once
 
 #include <cstdint>
