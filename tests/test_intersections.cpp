@@ -6,6 +6,7 @@
 #include "geometry/test_meshes.h"
 #include "lines/chaining.h"
 #include "lines/intersections.h"
+#include "render/frame_renderer.h"
 #include "scene/scene.h"
 #include "test_support.h"
 
@@ -147,6 +148,33 @@ TEST(Intersections, TouchingIsNotCrossing) {
     ASSERT_EQ(paths.size(), 1u);
     EXPECT_TRUE(paths[0].closed);
     EXPECT_NEAR(path_length(paths[0]), 2.0f * (0.5f + 0.4f), 1e-5f) << "the 0.5 × 0.4 rectangle where the top face is cut";
+}
+
+// Through the frame: with the type on (host or device extraction alike), the crossing is one
+// visible-or-hidden closed path; a new pose (deform) finds the new circle.
+class IntersectionFrames : public test::GpuTest {};
+
+TEST_F(IntersectionFrames, DrawnAndFoundAgainForANewPose) {
+    const TriangleMesh rest = two_spheres(kD, false);
+    const glm::vec3 eye(0.3f, 0.5f, 4.0f);
+    const ViewCamera view{.eye = eye, .target = glm::vec3(0.0f), .fov_deg = 40.0f};
+    const CameraMatrices camera = camera_matrices(view, 4.0f / 3.0f, compute_bounds(rest.positions));
+    FrameRenderer renderer(ctx(), 320, 240);
+    renderer.set_mesh(rest, true, 45.0f);
+    LinesDesc lines;
+    set_line_types(lines.params, 1u << uint32_t(LineType::Intersection));
+    for (const float d : {kD, 0.7f}) {
+        if (d != kD) renderer.deform(two_spheres(d, false));
+        const Frame frame = renderer.render(camera, eye, SurfaceStyle{}, lines, FrameOutputs{.color = false});
+        std::vector<LineSegment> crossing;
+        for (const LineSegment& s : frame.segments) {
+            ASSERT_EQ(s.type, uint32_t(LineType::Intersection));
+            crossing.push_back(s);
+        }
+        SCOPED_TRACE("spheres at ±" + std::to_string(d));
+        expect_circle(crossing, d);
+        EXPECT_FALSE(frame.screen_paths.empty());
+    }
 }
 
 }  // namespace
