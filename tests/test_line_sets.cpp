@@ -225,7 +225,7 @@ TEST(LineSets, SavedSceneReadsBackEveryKey) {
                                        "influence": 0.25}],
                   "geometry": [{"kind": "noise", "wavelength": 9, "amplitude": 1.5, "seed": 42},
                                {"kind": "tip_remove", "length": 3}],
-                  "chaining": {"split_angle": 50, "min_length": 4, "max_length": 300}},
+                  "chaining": {"split_angle": 50, "min_length": 4, "max_length": 300, "outline": true}},
         "coherence": {"policy": "arclength", "length_scale": 2, "sample_spacing": 3}},
        {"name": "b", "style": {"slam": "s.exr"}}])";
     const SceneDesc desc = parse_scene_json("{\"model\": \"m.glb\", \"line_sets\": " + sets + "}", dir / "in.json");
@@ -247,6 +247,7 @@ TEST(LineSets, SavedSceneReadsBackEveryKey) {
     EXPECT_EQ(a.style.taper_out_px, 2.0f);
     EXPECT_FALSE(a.style.fade);
     EXPECT_EQ(a.style.dashes, b.style.dashes);
+    EXPECT_TRUE(a.style.chaining.outline);
     ASSERT_EQ(a.style.width_modifiers.size(), 1u);
     EXPECT_EQ(a.style.width_modifiers[0].blend, ModifierBlend::Replace);
     EXPECT_EQ(a.style.width_modifiers[0].ramp.points, b.style.width_modifiers[0].ramp.points);

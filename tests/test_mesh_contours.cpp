@@ -120,6 +120,82 @@ TEST_F(MeshContours, LowPolyOutlinesCloseOnTheRasterizedOutline) {
     EXPECT_LT(smooth.iou, 0.9);
 }
 
+// The outline as one stroke (a line set's "chaining": {"outline": true}, stroke/outline.h):
+// the Fox's visible mesh contours, 20-odd runs met at T-junctions on screen, become one
+// closed path whose samples lie at most 2δ apart and whose inside (even-odd fill) is the
+// rasterized mesh (IoU ≥ 0.99 off the outline's own pixels).
+TEST_F(MeshContours, FoxOutlineIsOneClosedPath) {
+    const int width = 640, height = 480;
+    const LoadedScene fox = load_scene(scene_for_model(test::data_dir() / "models/Fox/Fox.glb"));
+    const glm::vec3 centre = fox.bounds.center();
+    const glm::vec3 eye = centre + 2.4f * fox.bounds.radius() * glm::normalize(glm::vec3(1.0f, 0.15f, 0.05f));
+    const ViewCamera view{.eye = eye, .target = centre, .fov_deg = 40.0f};
+    const CameraMatrices camera = camera_matrices(view, float(width) / float(height), fox.bounds);
+    FrameRenderer renderer(ctx(), uint32_t(width), uint32_t(height));
+    renderer.set_mesh(fox.mesh, true, 45.0f);
+    LinesDesc lines;
+    lines.params.contours = ContourMode::Mesh;
+    LineSetDesc set{.name = "outline"};
+    set.select.types = 1u << uint32_t(LineType::Silhouette);
+    set.style.chaining.outline = true;
+    lines.sets = {set};
+    Frame frame = renderer.render(camera, eye, SurfaceStyle{}, lines, FrameOutputs{.color = false, .depth = true});
+    ASSERT_EQ(frame.sets.size(), 1u);
+    const std::vector<ScreenPath>& outline = frame.sets[0].paths;
+    ASSERT_EQ(outline.size(), 1u) << "one outline";
+    const ScreenPath& loop = outline[0];
+    EXPECT_TRUE(loop.closed);
+    float widest = 0.0f;
+    const size_t n = loop.samples.size();
+    for (size_t i = 0; i < n; ++i) widest = std::max(widest, glm::distance(loop.samples[i].pixel, loop.samples[(i + 1) % n].pixel));
+    RecordProperty("outline_samples", int(n));
+    RecordProperty("widest_step_px", std::to_string(widest));
+    EXPECT_LE(widest, 4.0f) << "a jump: the outline is not continuous";
+    size_t runs = 0;
+    for (const ScreenPath& p : frame.screen_paths) runs += p.visible;
+    RecordProperty("visible_runs", int(runs));
+    // Its inside, filled even-odd at pixel centres, against the coverage mask, off the
+    // outline's own pixels (Closure's line mask).
+    frame.screen_paths = outline;
+    const Closure closure = outline_closure(frame, width, height);
+    EXPECT_GE(closure.iou, 0.99);
+    std::vector<uint8_t> filled(size_t(width) * height, 0);
+    for (int y = 0; y < height; ++y) {
+        const float cy = float(y) + 0.5f;
+        std::vector<float> xs;
+        for (size_t i = 0; i < n; ++i) {
+            const glm::vec2 a = loop.samples[i].pixel, b = loop.samples[(i + 1) % n].pixel;
+            if ((a.y <= cy) != (b.y <= cy)) xs.push_back(a.x + (cy - a.y) / (b.y - a.y) * (b.x - a.x));
+        }
+        std::sort(xs.begin(), xs.end());
+        for (size_t k = 0; k + 1 < xs.size(); k += 2)
+            for (int x = std::max(0, int(std::ceil(xs[k] - 0.5f))); x < width && float(x) + 0.5f < xs[k + 1]; ++x)
+                filled[size_t(y) * width + size_t(x)] = 1;
+    }
+    std::vector<uint8_t> on_line(filled.size(), 0);  // within 1.5 px of the outline
+    for (size_t i = 0; i < n; ++i) {
+        const glm::vec2 a = loop.samples[i].pixel, b = loop.samples[(i + 1) % n].pixel;
+        for (int k = 0; k <= 8; ++k) {
+            const glm::vec2 q = glm::mix(a, b, float(k) / 8.0f);
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) {
+                    const int x = int(std::floor(q.x)) + dx, y = int(std::floor(q.y)) + dy;
+                    if (x >= 0 && y >= 0 && x < width && y < height) on_line[size_t(y) * width + size_t(x)] = 1;
+                }
+        }
+    }
+    size_t both = 0, either = 0;
+    for (size_t i = 0; i < filled.size(); ++i) {
+        if (on_line[i]) continue;
+        const bool covered = frame.image.depth[i] < 1.0f;
+        both += filled[i] && covered;
+        either += filled[i] || covered;
+    }
+    const double iou = either ? double(both) / double(either) : 0.0;
+    RecordProperty("fill_iou", std::to_string(iou));
+    EXPECT_GE(iou, 0.99);
+}
+
 // Mesh contours are the edges between a front- and a back-facing face, each once, emitted by
 // the front face and keyed by their fans of front faces; on a closed mesh they chain into
 // closed loops, also where two of them touch at a vertex.

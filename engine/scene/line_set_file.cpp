@@ -207,6 +207,7 @@ LineSetStyle read_style(ObjectReader& set, const std::filesystem::path& file) {
         if (c.has("split_angle")) style.chaining.split_angle_deg = float(c.number("split_angle", 0.0, 180.0));
         if (c.has("min_length")) style.chaining.min_length_px = float(c.number("min_length", 0.0, 1e6));
         if (c.has("max_length")) style.chaining.max_length_px = float(c.number("max_length", 1.0, 1e6));
+        if (c.has("outline")) style.chaining.outline = c.boolean("outline");
         c.reject_unknown();
     }
     r.reject_unknown();

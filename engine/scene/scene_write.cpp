@@ -93,6 +93,7 @@ json line_set_style(const LineSetStyle& s, const std::filesystem::path& dest_dir
     if (!s.geometry.empty()) style["geometry"] = geometry_modifiers(s.geometry);
     json chaining{{"split_angle", round6(s.chaining.split_angle_deg)}, {"min_length", round6(s.chaining.min_length_px)}};
     if (s.chaining.max_length_px > 0.0f) chaining["max_length"] = round6(s.chaining.max_length_px);
+    if (s.chaining.outline) chaining["outline"] = true;
     style["chaining"] = chaining;
     return style;
 }

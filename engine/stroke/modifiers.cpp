@@ -4,7 +4,21 @@
 #include <cmath>
 #include <numeric>
 
+#include "stroke/outline.h"
+
 namespace lw {
+
+ScreenSample lerp_sample(const ScreenSample& a, const ScreenSample& b, float t) {
+    ScreenSample q = t < 0.5f ? a : b;  // face: of the nearer sample
+    q.pixel = glm::mix(a.pixel, b.pixel, t);
+    q.depth = glm::mix(a.depth, b.depth, t);
+    q.s = glm::mix(a.s, b.s, t);
+    q.position = glm::mix(a.position, b.position, t);
+    q.bary = glm::mix(a.bary, b.bary, t);
+    q.alpha = glm::mix(a.alpha, b.alpha, t);
+    q.width = glm::mix(a.width, b.width, t);
+    return q;
+}
 
 namespace {
 
@@ -26,17 +40,6 @@ ScreenPath empty_like(const ScreenPath& path) {
         .type = path.type, .closed = false, .visible = path.visible, .qi = path.qi, .source = path.source, .samples = {}};
 }
 
-ScreenSample lerp_sample(const ScreenSample& a, const ScreenSample& b, float t) {
-    ScreenSample q = t < 0.5f ? a : b;  // face: of the nearer sample
-    q.pixel = glm::mix(a.pixel, b.pixel, t);
-    q.depth = glm::mix(a.depth, b.depth, t);
-    q.s = glm::mix(a.s, b.s, t);
-    q.position = glm::mix(a.position, b.position, t);
-    q.bary = glm::mix(a.bary, b.bary, t);
-    q.alpha = glm::mix(a.alpha, b.alpha, t);
-    q.width = glm::mix(a.width, b.width, t);
-    return q;
-}
 
 float closing_length(const ScreenPath& path) {
     const auto& s = path.samples;
@@ -340,6 +343,7 @@ float taper_factor(const StrokeSpan& whole, const LineSetStyle& style, float s) 
 }  // namespace
 
 std::vector<ScreenPath> apply_chaining_options(std::vector<ScreenPath> paths, const ChainingOptions& options) {
+    if (options.outline) paths = trace_outlines(paths);
     std::vector<ScreenPath> split, cut, kept;
     for (ScreenPath& path : paths) split_at_turns(std::move(path), options.split_angle_deg, split);
     for (ScreenPath& path : split) cut_to_max_length(std::move(path), options.max_length_px, cut);

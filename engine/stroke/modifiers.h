@@ -33,8 +33,13 @@
 
 namespace lw {
 
+// A sample between a and b at t: position, depth, s, fade and width interpolated; face and
+// surface point of the nearer one.
+[[nodiscard]] ScreenSample lerp_sample(const ScreenSample& a, const ScreenSample& b, float t);
+
 // Splits, cuts and drops runs per `options` (Freestyle's "split by angle", "max 2D length",
-// "min 2D length", in that order):
+// "min 2D length", in that order), after joining them into outlines when `options.outline`
+// (stroke/outline.h: the set's runs become the closed outer outline of each drawing):
 //   - a sample where the polyline turns by more than split_angle_deg (the angle between the
 //     directions of its two segments; 180: never) ends one piece and starts the next;
 //   - pieces longer than max_length_px (> 0) are cut into the fewest pieces of equal length,

@@ -99,6 +99,7 @@ struct ChainingOptions {
     float split_angle_deg = 180.0f;  // split where the polyline turns by more than this (180: never)
     float min_length_px = 0.0f;      // drop runs shorter than this
     float max_length_px = 0.0f;      // cut runs into pieces no longer than this (0: no limit)
+    bool outline = false;            // join the runs into the closed outer outline of each drawing (stroke/outline.h)
 };
 
 struct LineSetStyle {

@@ -1,0 +1,166 @@
+#include "stroke/outline.h"
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <limits>
+
+#include "stroke/modifiers.h"
+
+namespace lw {
+
+namespace {
+
+// The runs drawn into a grid of `cell` px, each segment covering the cells whose centres lie
+// within `radius` of it.
+struct Grid {
+    glm::vec2 origin;
+    float cell;
+    int width = 0, height = 0;
+    std::vector<uint8_t> line, outside;
+    glm::vec2 centre(int x, int y) const { return origin + cell * glm::vec2(float(x) + 0.5f, float(y) + 0.5f); }
+    size_t at(int x, int y) const { return size_t(y) * size_t(width) + size_t(x); }
+};
+
+void draw_segment(Grid& g, glm::vec2 a, glm::vec2 b, float radius) {
+    const glm::vec2 lo = (glm::min(a, b) - radius - g.origin) / g.cell, hi = (glm::max(a, b) + radius - g.origin) / g.cell;
+    const glm::vec2 ab = b - a;
+    const float len2 = glm::dot(ab, ab);
+    for (int y = std::max(0, int(lo.y)); y <= std::min(g.height - 1, int(hi.y)); ++y)
+        for (int x = std::max(0, int(lo.x)); x <= std::min(g.width - 1, int(hi.x)); ++x) {
+            const glm::vec2 c = g.centre(x, y);
+            const float t = len2 > 0.0f ? std::clamp(glm::dot(c - a, ab) / len2, 0.0f, 1.0f) : 0.0f;
+            if (glm::distance(c, a + t * ab) <= radius) g.line[g.at(x, y)] = 1;
+        }
+}
+
+// The outer boundary of the region of cells that are not outside, by radial sweep: from
+// `start` (its first cell in row order, so the cells left of and above it are outside), each
+// next cell is the first inside neighbour clockwise after the one we came from, until the
+// walk is back at `start`.
+std::vector<glm::ivec2> trace_boundary(const Grid& g, glm::ivec2 start) {
+    static const glm::ivec2 step[8] = {{1, 0}, {1, 1}, {0, 1}, {-1, 1}, {-1, 0}, {-1, -1}, {0, -1}, {1, -1}};
+    const auto inside = [&](glm::ivec2 p) {
+        return p.x >= 0 && p.y >= 0 && p.x < g.width && p.y < g.height && !g.outside[g.at(p.x, p.y)];
+    };
+    std::vector<glm::ivec2> boundary{start};
+    glm::ivec2 p = start;
+    int from = 4;  // entered from the left (the cell to the left is outside)
+    const size_t limit = 4 * g.line.size();
+    for (size_t n = 0; n < limit; ++n) {
+        // Clockwise (in y-down axes) from the neighbour we came from.
+        int found = -1;
+        for (int k = 1; k <= 8; ++k) {
+            const int d = (from + k) % 8;
+            if (inside(p + step[d])) {
+                found = d;
+                break;
+            }
+        }
+        if (found < 0) return boundary;  // a single cell
+        p += step[found];
+        from = (found + 4) % 8;  // the next sweep starts just past the cell we came from
+        if (p == start) break;
+        boundary.push_back(p);
+    }
+    return boundary;
+}
+
+// The nearest point on any run to `q`: the run sample interpolated there.
+ScreenSample nearest_sample(const std::vector<ScreenPath>& runs, glm::vec2 q) {
+    float best = std::numeric_limits<float>::max();
+    ScreenSample out{};
+    for (const ScreenPath& r : runs) {
+        const size_t n = r.samples.size();
+        for (size_t i = 0; i + 1 < n + (r.closed ? 1 : 0); ++i) {
+            const ScreenSample &a = r.samples[i], &b = r.samples[(i + 1) % n];
+            const glm::vec2 ab = b.pixel - a.pixel;
+            const float len2 = glm::dot(ab, ab);
+            const float t = len2 > 0.0f ? std::clamp(glm::dot(q - a.pixel, ab) / len2, 0.0f, 1.0f) : 0.0f;
+            const float d = glm::distance(q, a.pixel + t * ab);
+            if (d < best) best = d, out = lerp_sample(a, b, t);
+        }
+        if (n == 1 && glm::distance(q, r.samples[0].pixel) < best) best = glm::distance(q, r.samples[0].pixel), out = r.samples[0];
+    }
+    return out;
+}
+
+}  // namespace
+
+std::vector<ScreenPath> trace_outlines(const std::vector<ScreenPath>& runs, float tolerance_px) {
+    glm::vec2 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+    for (const ScreenPath& r : runs)
+        for (const ScreenSample& s : r.samples) lo = glm::min(lo, s.pixel), hi = glm::max(hi, s.pixel);
+    if (!(lo.x <= hi.x)) return {};
+    // Half-pixel cells; lines drawn `tolerance` wide close gaps up to that width.
+    Grid g;
+    g.cell = 0.5f;
+    const float margin = tolerance_px + 2.0f * g.cell;
+    g.origin = lo - margin;
+    g.width = int(std::ceil((hi.x - lo.x + 2.0f * margin) / g.cell));
+    g.height = int(std::ceil((hi.y - lo.y + 2.0f * margin) / g.cell));
+    if (double(g.width) * g.height > 64e6) return {};  // a drawing over ~16k × 16k px: not traced
+    g.line.assign(size_t(g.width) * size_t(g.height), 0);
+    for (const ScreenPath& r : runs) {
+        const size_t n = r.samples.size();
+        for (size_t i = 0; i + 1 < n + (r.closed && n > 2 ? 1 : 0); ++i)
+            draw_segment(g, r.samples[i].pixel, r.samples[(i + 1) % n].pixel, 0.5f * tolerance_px);
+    }
+    // The outside: reached from the border without crossing a line.
+    g.outside.assign(g.line.size(), 0);
+    std::deque<glm::ivec2> todo;
+    for (int x = 0; x < g.width; ++x) todo.insert(todo.end(), {{x, 0}, {x, g.height - 1}});
+    for (int y = 0; y < g.height; ++y) todo.insert(todo.end(), {{0, y}, {g.width - 1, y}});
+    while (!todo.empty()) {
+        const glm::ivec2 p = todo.front();
+        todo.pop_front();
+        if (p.x < 0 || p.y < 0 || p.x >= g.width || p.y >= g.height) continue;
+        const size_t i = g.at(p.x, p.y);
+        if (g.outside[i] || g.line[i]) continue;
+        g.outside[i] = 1;
+        todo.insert(todo.end(), {p + glm::ivec2(1, 0), p - glm::ivec2(1, 0), p + glm::ivec2(0, 1), p - glm::ivec2(0, 1)});
+    }
+    // Each inside region (8-connected) from its first cell in row order; regions of less area
+    // than a tolerance-wide square enclose nothing (a line seen edge-on, a stray run).
+    std::vector<uint8_t> seen(g.line.size(), 0);
+    std::vector<ScreenPath> out;
+    const size_t min_cells = size_t(std::ceil(4.0f * tolerance_px * tolerance_px / (g.cell * g.cell)));
+    for (int y = 0; y < g.height; ++y)
+        for (int x = 0; x < g.width; ++x) {
+            if (g.outside[g.at(x, y)] || seen[g.at(x, y)]) continue;
+            size_t cells = 0;
+            std::deque<glm::ivec2> region{{x, y}};
+            seen[g.at(x, y)] = 1;
+            while (!region.empty()) {
+                const glm::ivec2 p = region.front();
+                region.pop_front();
+                ++cells;
+                for (int dy = -1; dy <= 1; ++dy)
+                    for (int dx = -1; dx <= 1; ++dx) {
+                        const glm::ivec2 q = p + glm::ivec2(dx, dy);
+                        if (q.x < 0 || q.y < 0 || q.x >= g.width || q.y >= g.height) continue;
+                        const size_t i = g.at(q.x, q.y);
+                        if (!g.outside[i] && !seen[i]) seen[i] = 1, region.push_back(q);
+                    }
+            }
+            if (cells < min_cells) continue;
+            // Its boundary, snapped onto the runs, one sample per pixel of outline or more.
+            ScreenPath path{.type = runs.front().type, .closed = true, .visible = runs.front().visible,
+                            .qi = runs.front().qi, .source = runs.front().source};
+            for (const glm::ivec2& c : trace_boundary(g, {x, y})) {
+                const ScreenSample s = nearest_sample(runs, g.centre(c.x, c.y));
+                if (!path.samples.empty() && glm::distance(s.pixel, path.samples.back().pixel) < 1.0f) continue;
+                path.samples.push_back(s);
+            }
+            if (path.samples.size() < 3) continue;
+            float s = 0.0f;
+            for (size_t i = 0; i < path.samples.size(); ++i) {
+                if (i > 0) s += glm::distance(path.samples[i].pixel, path.samples[i - 1].pixel);
+                path.samples[i].s = s;
+            }
+            out.push_back(std::move(path));
+        }
+    return out;
+}
+
+}  // namespace lw
