@@ -66,24 +66,56 @@ std::vector<glm::ivec2> trace_boundary(const Grid& g, glm::ivec2 start) {
     return boundary;
 }
 
-// The nearest point on any run to `q`: the run sample interpolated there.
-ScreenSample nearest_sample(const std::vector<ScreenPath>& runs, glm::vec2 q) {
-    float best = std::numeric_limits<float>::max();
-    ScreenSample out{};
-    for (const ScreenPath& r : runs) {
-        const size_t n = r.samples.size();
-        for (size_t i = 0; i + 1 < n + (r.closed ? 1 : 0); ++i) {
-            const ScreenSample &a = r.samples[i], &b = r.samples[(i + 1) % n];
-            const glm::vec2 ab = b.pixel - a.pixel;
-            const float len2 = glm::dot(ab, ab);
-            const float t = len2 > 0.0f ? std::clamp(glm::dot(q - a.pixel, ab) / len2, 0.0f, 1.0f) : 0.0f;
-            const float d = glm::distance(q, a.pixel + t * ab);
-            if (d < best) best = d, out = lerp_sample(a, b, t);
+// The runs' segments in buckets of `kBucket` px, to find the one nearest a point.
+class SegmentIndex {
+public:
+    static constexpr float kBucket = 8.0f;
+
+    SegmentIndex(const std::vector<ScreenPath>& runs, glm::vec2 origin, glm::vec2 size) : runs_(runs), origin_(origin) {
+        columns_ = int(size.x / kBucket) + 1;
+        rows_ = int(size.y / kBucket) + 1;
+        buckets_.resize(size_t(columns_) * size_t(rows_));
+        for (uint32_t r = 0; r < runs.size(); ++r) {
+            const size_t n = runs[r].samples.size();
+            for (uint32_t i = 0; i < n; ++i) {  // segment i: samples i and i + 1 (or 0, closing a loop)
+                if (i + 1 == n && !(runs[r].closed && n > 2) && n > 1) break;
+                const glm::vec2 a = runs[r].samples[i].pixel, b = runs[r].samples[(i + 1) % n].pixel;
+                const glm::ivec2 lo = bucket(glm::min(a, b)), hi = bucket(glm::max(a, b));
+                for (int y = lo.y; y <= hi.y; ++y)
+                    for (int x = lo.x; x <= hi.x; ++x) buckets_[size_t(y) * size_t(columns_) + size_t(x)].push_back({r, i});
+            }
         }
-        if (n == 1 && glm::distance(q, r.samples[0].pixel) < best) best = glm::distance(q, r.samples[0].pixel), out = r.samples[0];
     }
-    return out;
-}
+
+    // The run sample (interpolated) nearest `q` among the segments within a bucket of it.
+    ScreenSample nearest(glm::vec2 q) const {
+        float best = std::numeric_limits<float>::max();
+        ScreenSample out = runs_.front().samples.front();
+        const glm::ivec2 c = bucket(q);
+        for (int y = std::max(0, c.y - 1); y <= std::min(rows_ - 1, c.y + 1); ++y)
+            for (int x = std::max(0, c.x - 1); x <= std::min(columns_ - 1, c.x + 1); ++x)
+                for (const auto& [r, i] : buckets_[size_t(y) * size_t(columns_) + size_t(x)]) {
+                    const std::vector<ScreenSample>& s = runs_[r].samples;
+                    const ScreenSample &a = s[i], &b = s[(i + 1) % s.size()];
+                    const glm::vec2 ab = b.pixel - a.pixel;
+                    const float len2 = glm::dot(ab, ab);
+                    const float t = len2 > 0.0f ? std::clamp(glm::dot(q - a.pixel, ab) / len2, 0.0f, 1.0f) : 0.0f;
+                    const float d = glm::distance(q, a.pixel + t * ab);
+                    if (d < best) best = d, out = lerp_sample(a, b, t);
+                }
+        return out;
+    }
+
+private:
+    glm::ivec2 bucket(glm::vec2 p) const {
+        const glm::ivec2 c((p - origin_) / kBucket);
+        return glm::clamp(c, glm::ivec2(0), glm::ivec2(columns_ - 1, rows_ - 1));
+    }
+    const std::vector<ScreenPath>& runs_;
+    glm::vec2 origin_;
+    int columns_ = 0, rows_ = 0;
+    std::vector<std::vector<std::pair<uint32_t, uint32_t>>> buckets_;
+};
 
 }  // namespace
 
@@ -124,6 +156,9 @@ std::vector<ScreenPath> trace_outlines(const std::vector<ScreenPath>& runs, floa
     // than a tolerance-wide square enclose nothing (a line seen edge-on, a stray run).
     std::vector<uint8_t> seen(g.line.size(), 0);
     std::vector<ScreenPath> out;
+    // Boundary cells lie within half the tolerance and a cell of a run: its nearest segment
+    // is in the cell's bucket or the next.
+    const SegmentIndex index(runs, g.origin, glm::vec2(g.width, g.height) * g.cell);
     const size_t min_cells = size_t(std::ceil(4.0f * tolerance_px * tolerance_px / (g.cell * g.cell)));
     for (int y = 0; y < g.height; ++y)
         for (int x = 0; x < g.width; ++x) {
@@ -148,7 +183,7 @@ std::vector<ScreenPath> trace_outlines(const std::vector<ScreenPath>& runs, floa
             ScreenPath path{.type = runs.front().type, .closed = true, .visible = runs.front().visible,
                             .qi = runs.front().qi, .source = runs.front().source};
             for (const glm::ivec2& c : trace_boundary(g, {x, y})) {
-                const ScreenSample s = nearest_sample(runs, g.centre(c.x, c.y));
+                const ScreenSample s = index.nearest(g.centre(c.x, c.y));
                 if (!path.samples.empty() && glm::distance(s.pixel, path.samples.back().pixel) < 1.0f) continue;
                 path.samples.push_back(s);
             }

@@ -6,15 +6,17 @@
 //
 // The outline you see is pieces of several contours: where a contour passes behind another
 // surface its visible run ends on the occluding contour, which goes on (a T-junction on
-// screen: Freestyle's T-vertex). Each run is one stroke; Line Art and Pencil+ also offer the
-// outline as one stroke. Here: every open end of a run within `tolerance_px` of another run
-// splits that run there (the T-junction) or meets its end (a corner); the pieces form a
-// planar graph whose nodes are those meeting points; ends that meet nothing are pruned back
-// to the first junction (spurs: an inner line that ends inside the drawing); and the outer
-// face of each connected part is walked from its leftmost node, turning at every node onto
-// the next piece round the node on the outside, until the walk comes back. Of the two
-// turning senses the one enclosing the larger area is the outer boundary. A part whose walk
-// does not come back within its pieces (a gap over the tolerance) gives no outline.
+// screen: Freestyle's T-vertex), and each run is its own stroke. Line Art and Pencil+ also
+// offer the outline as one stroke. Here the runs are drawn `tolerance_px` wide into a grid of
+// half-pixel cells (closing gaps up to that width, such as a run that ends a sample short of
+// the contour that hides it); the outside is what a fill from the grid's border reaches; each
+// region it does not reach (8-connected, larger than a tolerance-wide square) is one drawing,
+// and the boundary of that region, walked once round by radial sweep, is its outline. Each
+// boundary cell is snapped to the nearest point of the runs, so the outline lies on them.
+// (A walk over a planar graph of the runs split at their junctions was tried first: nearly
+// parallel runs a pixel apart make thin faces there in which the walk lost its way.) Only the
+// outer boundary is kept, so interior lines in the selection do no harm: select every type
+// that can bound the drawing (silhouettes, borders, and creases on hard-edged models).
 //
 // Samples keep their surface point, face and fade; s is the outline's own pixel arc length.
 #pragma once
