@@ -114,6 +114,14 @@ TEST_F(OcclusionLevels, LineSetsAndHiddenLevelsSelectByLevel) {
                                    [](const ScreenPath& r) { return r.qi == 1; })),
               first.size());
 
+    // A set with its own sample spacing tests visibility again: with levels counted too.
+    LineSetDesc spaced = level_set("deep", {2, 2});
+    spaced.coherence.sample_spacing_px = 3.0f;
+    const Frame own = render_levels(ctx(), {spaced});
+    ASSERT_EQ(own.sets.size(), 1u);
+    ASSERT_FALSE(own.sets[0].paths.empty()) << "level-2 runs at 3 px spacing";
+    for (const ScreenPath& run : own.sets[0].paths) EXPECT_EQ(run.qi, 2u);
+
     // The shorthand (no line sets): --hidden dashed --hidden-levels 1.
     LinesDesc lines;
     lines.hidden = HiddenLines::Dashed;

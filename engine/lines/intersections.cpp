@@ -101,7 +101,7 @@ bool cross(const WeldedMesh& m, uint32_t a, uint32_t b, Crossing& out) {
 std::vector<uint32_t> endpoint_keys(const std::vector<Crossing>& crossings, double tolerance) {
     struct CellHash {
         size_t operator()(const glm::i64vec3& c) const {
-            return size_t(c.x * 73856093) ^ size_t(c.y * 19349663) ^ size_t(c.z * 83492791);
+            return size_t(uint64_t(c.x) * 73856093u ^ uint64_t(c.y) * 19349663u ^ uint64_t(c.z) * 83492791u);
         }
     };
     std::unordered_map<glm::i64vec3, std::vector<uint32_t>, CellHash> grid;

@@ -53,6 +53,13 @@ struct OcclusionCounter::Index {
         // One build thread: frames extract on one core while lavapipe uses the other.
         device = rtcNewDevice("threads=1");
         if (!device) throw Error("occlusion levels: rtcNewDevice failed (Embree could not start)");
+        // Counting needs every hit: filter functions on, and back faces not culled.
+        if (!rtcGetDeviceProperty(device, RTC_DEVICE_PROPERTY_FILTER_FUNCTION_SUPPORTED) ||
+            rtcGetDeviceProperty(device, RTC_DEVICE_PROPERTY_BACKFACE_CULLING_ENABLED)) {
+            rtcReleaseDevice(device);
+            throw Error("occlusion levels: this Embree library was built without filter functions or with back-face "
+                        "culling, so it cannot count the surfaces a ray crosses");
+        }
     }
     ~Index() {
         if (scene) rtcReleaseScene(scene);
@@ -80,8 +87,11 @@ void OcclusionCounter::set_mesh(const LineMesh& mesh) {
     // between its two triangles.
     rtcSetSceneFlags(index->scene, RTC_SCENE_FLAG_ROBUST);
     rtcSetSceneBuildQuality(index->scene, RTC_BUILD_QUALITY_MEDIUM);
-    RTCGeometry geometry = rtcNewGeometry(index->device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    // Released when this function leaves (the scene keeps its own reference once attached).
+    const std::unique_ptr<RTCGeometryTy, void (*)(RTCGeometry)> owned(
+        rtcNewGeometry(index->device, RTC_GEOMETRY_TYPE_TRIANGLE), rtcReleaseGeometry);
     check(index->device, "rtcNewGeometry");
+    RTCGeometry geometry = owned.get();
     // Buffers Embree allocates (padded as its SIMD loads need) and we fill.
     auto* positions = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
                                                                   3 * sizeof(float), m.positions.size()));
@@ -95,7 +105,6 @@ void OcclusionCounter::set_mesh(const LineMesh& mesh) {
     rtcSetGeometryIntersectFilterFunction(geometry, record_hit);
     rtcCommitGeometry(geometry);
     rtcAttachGeometry(index->scene, geometry);
-    rtcReleaseGeometry(geometry);
     rtcCommitScene(index->scene);
     check(index->device, "rtcCommitScene");
     index_ = std::move(index);

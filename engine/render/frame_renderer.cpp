@@ -295,7 +295,7 @@ Frame FrameRenderer::finish() {
         frame.screen_paths = compute_visibility(frame.paths, in.camera, depth, {.sample_spacing_px = in.lines.sample_spacing_px},
                                                 slot.levels ? &slot.occlusion : nullptr);
         frame.timings.visibility_ms = visibility.elapsed_ms();
-        prepare_sets(frame, slot.sets, in.lines, in.camera, depth, coherence,
+        prepare_sets(frame, slot.sets, in.lines, in.camera, depth, slot.levels ? &slot.occlusion : nullptr, coherence,
                      slot.positions ? *slot.positions : line_mesh_->mesh.positions, in.outputs.draw ? &strokes : nullptr);
     }
 
@@ -333,7 +333,7 @@ Frame FrameRenderer::finish() {
 }
 
 void FrameRenderer::prepare_sets(Frame& frame, const std::vector<LineSetDesc>& sets, const LinesDesc& lines,
-                                 const CameraMatrices& camera, const DepthImage& depth,
+                                 const CameraMatrices& camera, const DepthImage& depth, const OcclusionCounter* levels,
                                  const CoherenceParams* coherence, const std::vector<glm::vec3>& positions,
                                  std::vector<std::vector<StrokeVertex>>* strokes) {
     Timer param_timer;
@@ -363,7 +363,8 @@ void FrameRenderer::prepare_sets(Frame& frame, const std::vector<LineSetDesc>& s
                                                                      : lines.sample_spacing_px;
         out.paths = spacing == lines.sample_spacing_px
                         ? select_line_set(frame.screen_paths, set, groups)
-                        : select_line_set(compute_visibility(frame.paths, camera, depth, {.sample_spacing_px = spacing}),
+                        : select_line_set(compute_visibility(frame.paths, camera, depth, {.sample_spacing_px = spacing},
+                                                             levels),
                                           set, groups);
         if (coherence) {
             out.params = state.tracker->update(out.paths, camera, surface, out.coherence);

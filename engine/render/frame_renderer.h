@@ -47,7 +47,7 @@ namespace lw {
 
 struct FrameTimings {
     double total_ms = 0.0;       // wall, whole frame
-    double extract_ms = 0.0;     // CPU, when the host extracts (CPU devices), else 0
+    double extract_ms = 0.0;     // CPU: the host extraction (CPU devices) and intersection lines, else 0
     double chain_ms = 0.0;       // CPU
     double visibility_ms = 0.0;  // CPU
     double coherence_ms = 0.0;   // votes + RANSAC + splat, wall
@@ -229,10 +229,12 @@ private:
     };
     SetState& set_state(size_t set);
     // Per set: select, parameterize, and (with `strokes`) build stroke geometry (StrokeVertex)
-    // for non-plain sets.
+    // for non-plain sets. `levels`: the frame's occlusion-level index, when a set selects
+    // levels (a set with its own spacing tests visibility again and counts them too).
     void prepare_sets(Frame& frame, const std::vector<LineSetDesc>& sets, const LinesDesc& lines,
-                      const CameraMatrices& camera, const DepthImage& depth, const CoherenceParams* coherence,
-                      const std::vector<glm::vec3>& positions, std::vector<std::vector<StrokeVertex>>* strokes);
+                      const CameraMatrices& camera, const DepthImage& depth, const OcclusionCounter* levels,
+                      const CoherenceParams* coherence, const std::vector<glm::vec3>& positions,
+                      std::vector<std::vector<StrokeVertex>>* strokes);
     void record_sets(VkCommandBuffer cmd, RenderTarget& target, const Frame& frame,
                      const std::vector<LineSetDesc>& sets, const LinesDesc& lines,
                      const std::vector<std::vector<StrokeVertex>>& strokes, UploadArena& arena);

@@ -152,7 +152,8 @@ LineSelection read_selection(ObjectReader& set, const std::filesystem::path& fil
         const json& q = r.at("qi");
         const auto level = [](const json& v) { return v.is_number_integer() && v.get<int64_t>() >= 0 && v.get<int64_t>() <= 1000; };
         if (!q.is_array() || q.size() != 2 || !level(q[0]) || !level(q[1]) || q[0].get<int64_t>() > q[1].get<int64_t>())
-            r.fail_key("qi", "expected [min, max]: occlusion levels 0 to 1000 (0 visible, 1 behind one surface), min <= max");
+            r.fail_key("qi", "expected [min, max]: occlusion levels 0 to 1000 (0 visible, 1 behind one surface), min <= max; "
+                             "got " + q.dump());
         select.qi = LevelRange{q[0].get<uint32_t>(), q[1].get<uint32_t>()};
     }
     if (r.has("models")) select.models = strings(r, "models");

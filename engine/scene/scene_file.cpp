@@ -186,6 +186,8 @@ LinesDesc read_lines(ObjectReader& parent, const std::filesystem::path& file) {
         const double n = r.number("hidden_levels", 0, 1000);
         if (n != std::floor(n)) r.fail_key("hidden_levels", "expected a whole number of surfaces (0: all hidden lines)");
         desc.hidden_levels = uint32_t(n);
+        if (n > 0 && desc.hidden == HiddenLines::None)
+            r.fail_key("hidden_levels", "hidden lines are not drawn (\"hidden\" is \"none\"): set it to \"dashed\" or \"faint\"");
     }
     if (r.has("sample_spacing")) desc.sample_spacing_px = static_cast<float>(r.number("sample_spacing", 0.25, 64.0));
     if (r.has("contours")) desc.params.contours = contour_mode(r.string_of("contours", {"smooth", "mesh", "auto"}));

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <deque>
 #include <limits>
+#include <map>
 
 #include "stroke/modifiers.h"
 
@@ -37,7 +38,8 @@ void draw_segment(Grid& g, glm::vec2 a, glm::vec2 b, float radius) {
 // The outer boundary of the region of cells that are not outside, by radial sweep: from
 // `start` (its first cell in row order, so the cells left of and above it are outside), each
 // next cell is the first inside neighbour clockwise after the one we came from, until the
-// walk is back at `start`.
+// walk is back at `start` about to make its first move again (a start cell that joins two
+// parts of the region is passed twice).
 std::vector<glm::ivec2> trace_boundary(const Grid& g, glm::ivec2 start) {
     static const glm::ivec2 step[8] = {{1, 0}, {1, 1}, {0, 1}, {-1, 1}, {-1, 0}, {-1, -1}, {0, -1}, {1, -1}};
     const auto inside = [&](glm::ivec2 p) {
@@ -46,6 +48,7 @@ std::vector<glm::ivec2> trace_boundary(const Grid& g, glm::ivec2 start) {
     std::vector<glm::ivec2> boundary{start};
     glm::ivec2 p = start;
     int from = 4;  // entered from the left (the cell to the left is outside)
+    int first = -1;  // the first move: the walk ends when it would make it again (Jacob's rule)
     const size_t limit = 4 * g.line.size();
     for (size_t n = 0; n < limit; ++n) {
         // Clockwise (in y-down axes) from the neighbour we came from.
@@ -58,22 +61,23 @@ std::vector<glm::ivec2> trace_boundary(const Grid& g, glm::ivec2 start) {
             }
         }
         if (found < 0) return boundary;  // a single cell
+        if (first < 0) first = found;
+        else if (p == start && found == first) break;
+        else boundary.push_back(p);
         p += step[found];
         from = (found + 4) % 8;  // the next sweep starts just past the cell we came from
-        if (p == start) break;
-        boundary.push_back(p);
     }
     return boundary;
 }
 
-// The runs' segments in buckets of `kBucket` px, to find the one nearest a point.
+// The runs' segments in square buckets, to find the one nearest a point.
 class SegmentIndex {
 public:
-    static constexpr float kBucket = 8.0f;
-
-    SegmentIndex(const std::vector<ScreenPath>& runs, glm::vec2 origin, glm::vec2 size) : runs_(runs), origin_(origin) {
-        columns_ = int(size.x / kBucket) + 1;
-        rows_ = int(size.y / kBucket) + 1;
+    // Buckets at least as wide as the farthest a boundary cell can be from its run.
+    SegmentIndex(const std::vector<ScreenPath>& runs, glm::vec2 origin, glm::vec2 size, float reach)
+        : runs_(runs), origin_(origin), bucket_(std::max(8.0f, reach)) {
+        columns_ = int(size.x / bucket_) + 1;
+        rows_ = int(size.y / bucket_) + 1;
         buckets_.resize(size_t(columns_) * size_t(rows_));
         for (uint32_t r = 0; r < runs.size(); ++r) {
             const size_t n = runs[r].samples.size();
@@ -108,35 +112,48 @@ public:
 
 private:
     glm::ivec2 bucket(glm::vec2 p) const {
-        const glm::ivec2 c((p - origin_) / kBucket);
+        const glm::ivec2 c((p - origin_) / bucket_);
         return glm::clamp(c, glm::ivec2(0), glm::ivec2(columns_ - 1, rows_ - 1));
     }
     const std::vector<ScreenPath>& runs_;
     glm::vec2 origin_;
+    float bucket_;
     int columns_ = 0, rows_ = 0;
     std::vector<std::vector<std::pair<uint32_t, uint32_t>>> buckets_;
 };
 
 }  // namespace
 
-std::vector<ScreenPath> trace_outlines(const std::vector<ScreenPath>& runs, float tolerance_px) {
+namespace {
+
+// The outlines of runs of one occlusion level; runs in no enclosing drawing are kept as they are.
+void trace_level(const std::vector<ScreenPath>& runs, float tolerance, std::vector<ScreenPath>& out) {
     glm::vec2 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
     for (const ScreenPath& r : runs)
         for (const ScreenSample& s : r.samples) lo = glm::min(lo, s.pixel), hi = glm::max(hi, s.pixel);
-    if (!(lo.x <= hi.x)) return {};
-    // Half-pixel cells; lines drawn `tolerance` wide close gaps up to that width.
+    // Half-pixel cells, coarser on drawings over ~2000 × 2000 px (16 million cells at most);
+    // a drawing whose cells would be wider than the tolerance (runs far off screen) is left
+    // as it is.
     Grid g;
-    g.cell = 0.5f;
-    const float margin = tolerance_px + 2.0f * g.cell;
+    const float margin = tolerance + 2.0f;
+    const double w = double(hi.x) - double(lo.x) + 2.0 * margin, h = double(hi.y) - double(lo.y) + 2.0 * margin;
+    if (!(w > 0.0 && h > 0.0 && std::isfinite(w * h))) {
+        out.insert(out.end(), runs.begin(), runs.end());
+        return;
+    }
+    g.cell = float(std::max(0.5, std::sqrt(w * h / 16e6)));
+    if (g.cell > 0.5f * tolerance) {
+        out.insert(out.end(), runs.begin(), runs.end());
+        return;
+    }
     g.origin = lo - margin;
-    g.width = int(std::ceil((hi.x - lo.x + 2.0f * margin) / g.cell));
-    g.height = int(std::ceil((hi.y - lo.y + 2.0f * margin) / g.cell));
-    if (double(g.width) * g.height > 64e6) return {};  // a drawing over ~16k × 16k px: not traced
+    g.width = int(std::ceil(w / g.cell));
+    g.height = int(std::ceil(h / g.cell));
     g.line.assign(size_t(g.width) * size_t(g.height), 0);
     for (const ScreenPath& r : runs) {
         const size_t n = r.samples.size();
         for (size_t i = 0; i + 1 < n + (r.closed && n > 2 ? 1 : 0); ++i)
-            draw_segment(g, r.samples[i].pixel, r.samples[(i + 1) % n].pixel, 0.5f * tolerance_px);
+            draw_segment(g, r.samples[i].pixel, r.samples[(i + 1) % n].pixel, 0.5f * tolerance);
     }
     // The outside: reached from the border without crossing a line.
     g.outside.assign(g.line.size(), 0);
@@ -152,49 +169,74 @@ std::vector<ScreenPath> trace_outlines(const std::vector<ScreenPath>& runs, floa
         g.outside[i] = 1;
         todo.insert(todo.end(), {p + glm::ivec2(1, 0), p - glm::ivec2(1, 0), p + glm::ivec2(0, 1), p - glm::ivec2(0, 1)});
     }
-    // Each inside region (8-connected) from its first cell in row order; regions of less area
-    // than a tolerance-wide square enclose nothing (a line seen edge-on, a stray run).
-    std::vector<uint8_t> seen(g.line.size(), 0);
-    std::vector<ScreenPath> out;
-    // Boundary cells lie within half the tolerance and a cell of a run: its nearest segment
-    // is in the cell's bucket or the next.
-    const SegmentIndex index(runs, g.origin, glm::vec2(g.width, g.height) * g.cell);
-    const size_t min_cells = size_t(std::ceil(4.0f * tolerance_px * tolerance_px / (g.cell * g.cell)));
+    // The regions the fill does not reach (8-connected), each from its first cell in row
+    // order. One encloses something when it has cells off the lines, at least a
+    // tolerance-wide square of them: a loose run is all line.
+    std::vector<int32_t> region(g.line.size(), -1);
+    std::vector<glm::ivec2> first_cell;
+    std::vector<bool> encloses;
+    const size_t min_enclosed = size_t(std::ceil(tolerance * tolerance / (g.cell * g.cell)));
     for (int y = 0; y < g.height; ++y)
         for (int x = 0; x < g.width; ++x) {
-            if (g.outside[g.at(x, y)] || seen[g.at(x, y)]) continue;
-            size_t cells = 0;
-            std::deque<glm::ivec2> region{{x, y}};
-            seen[g.at(x, y)] = 1;
-            while (!region.empty()) {
-                const glm::ivec2 p = region.front();
-                region.pop_front();
-                ++cells;
+            if (g.outside[g.at(x, y)] || region[g.at(x, y)] >= 0) continue;
+            const auto id = int32_t(first_cell.size());
+            size_t enclosed = 0;
+            std::deque<glm::ivec2> cells{{x, y}};
+            region[g.at(x, y)] = id;
+            while (!cells.empty()) {
+                const glm::ivec2 p = cells.front();
+                cells.pop_front();
+                enclosed += g.line[g.at(p.x, p.y)] == 0;
                 for (int dy = -1; dy <= 1; ++dy)
                     for (int dx = -1; dx <= 1; ++dx) {
                         const glm::ivec2 q = p + glm::ivec2(dx, dy);
                         if (q.x < 0 || q.y < 0 || q.x >= g.width || q.y >= g.height) continue;
                         const size_t i = g.at(q.x, q.y);
-                        if (!g.outside[i] && !seen[i]) seen[i] = 1, region.push_back(q);
+                        if (!g.outside[i] && region[i] < 0) region[i] = id, cells.push_back(q);
                     }
             }
-            if (cells < min_cells) continue;
-            // Its boundary, snapped onto the runs, one sample per pixel of outline or more.
-            ScreenPath path{.type = runs.front().type, .closed = true, .visible = runs.front().visible,
-                            .qi = runs.front().qi, .source = runs.front().source};
-            for (const glm::ivec2& c : trace_boundary(g, {x, y})) {
-                const ScreenSample s = index.nearest(g.centre(c.x, c.y));
-                if (!path.samples.empty() && glm::distance(s.pixel, path.samples.back().pixel) < 1.0f) continue;
-                path.samples.push_back(s);
-            }
-            if (path.samples.size() < 3) continue;
-            float s = 0.0f;
-            for (size_t i = 0; i < path.samples.size(); ++i) {
-                if (i > 0) s += glm::distance(path.samples[i].pixel, path.samples[i - 1].pixel);
-                path.samples[i].s = s;
-            }
-            out.push_back(std::move(path));
+            first_cell.push_back({x, y});
+            encloses.push_back(enclosed >= min_enclosed);
         }
+    // Runs whose region encloses nothing stay as they are.
+    for (const ScreenPath& r : runs) {
+        if (r.samples.empty()) continue;
+        const glm::ivec2 c((r.samples.front().pixel - g.origin) / g.cell);
+        const int32_t id = c.x >= 0 && c.y >= 0 && c.x < g.width && c.y < g.height ? region[g.at(c.x, c.y)] : -1;
+        if (id < 0 || !encloses[size_t(id)]) out.push_back(r);
+    }
+    // Boundary cells lie within half the tolerance and a cell of a run: its nearest segment
+    // is in the cell's bucket or the next.
+    const SegmentIndex index(runs, g.origin, glm::vec2(g.width, g.height) * g.cell, tolerance + 2.0f * g.cell);
+    for (size_t id = 0; id < first_cell.size(); ++id) {
+        if (!encloses[id]) continue;
+        // Its boundary, snapped onto the runs, a sample per pixel of outline or more.
+        const ScreenPath& any = runs.front();
+        ScreenPath path{.type = any.type, .closed = true, .visible = any.visible, .qi = any.qi, .source = any.source};
+        for (const glm::ivec2& c : trace_boundary(g, first_cell[id])) {
+            const ScreenSample s = index.nearest(g.centre(c.x, c.y));
+            if (!path.samples.empty() && glm::distance(s.pixel, path.samples.back().pixel) < 1.0f) continue;
+            path.samples.push_back(s);
+        }
+        if (path.samples.size() < 3) continue;
+        float s = 0.0f;
+        for (size_t i = 0; i < path.samples.size(); ++i) {
+            if (i > 0) s += glm::distance(path.samples[i].pixel, path.samples[i - 1].pixel);
+            path.samples[i].s = s;
+        }
+        out.push_back(std::move(path));
+    }
+}
+
+}  // namespace
+
+std::vector<ScreenPath> trace_outlines(const std::vector<ScreenPath>& runs, float tolerance_px) {
+    // Each occlusion level on its own: a set may select visible and hidden runs.
+    std::map<uint32_t, std::vector<ScreenPath>> levels;
+    for (const ScreenPath& r : runs)
+        if (!r.samples.empty()) levels[r.qi].push_back(r);
+    std::vector<ScreenPath> out;
+    for (const auto& [level, level_runs] : levels) trace_level(level_runs, tolerance_px, out);
     return out;
 }
 
