@@ -168,6 +168,10 @@ TEST(OcclusionLevelKeys, ReadBackAndRejectBadValues) {
     const SceneDesc back = parse_scene_json(scene_json(desc, ViewCamera{}, fs_dir), fs_dir / "out.json");
     EXPECT_EQ(back.lines.sets[0].select.qi, desc.lines.sets[0].select.qi);
     EXPECT_EQ(back.lines.hidden_levels, 2u);
+    // The viewer can turn hidden lines off with levels still set: the scene it saves reads back.
+    SceneDesc off = desc;
+    off.lines.hidden = HiddenLines::None;
+    EXPECT_NO_THROW((void)parse_scene_json(scene_json(off, ViewCamera{}, fs_dir), fs_dir / "off.json"));
     const auto error_of = [&](const std::string& select) {
         try {
             (void)parse_scene_json(R"({"model": "m.glb", "line_sets": [{"name": "a", "select": )" + select + "}]}",

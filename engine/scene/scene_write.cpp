@@ -173,7 +173,8 @@ std::string scene_json(const SceneDesc& desc, const ViewCamera& camera, const st
             l[line_type_name(type)] = entry;
         }
         l["hidden"] = lines.hidden == HiddenLines::Dashed ? "dashed" : lines.hidden == HiddenLines::Faint ? "faint" : "none";
-        if (lines.hidden_levels > 0) l["hidden_levels"] = lines.hidden_levels;
+        // (Kept only where hidden lines are drawn: the reader rejects levels without them.)
+        if (lines.hidden_levels > 0 && lines.hidden != HiddenLines::None) l["hidden_levels"] = lines.hidden_levels;
         l["sample_spacing"] = round6(lines.sample_spacing_px);
         if (lines.params.contours != ContourMode::Smooth) l["contours"] = contour_mode_name(lines.params.contours);
         root["lines"] = l;
