@@ -8,6 +8,12 @@
 
 namespace lw {
 
+float nearest_on_segment(glm::vec2 p, glm::vec2 a, glm::vec2 b) {
+    const glm::vec2 ab = b - a;
+    const float len2 = glm::dot(ab, ab);
+    return len2 > 0.0f ? std::clamp(glm::dot(p - a, ab) / len2, 0.0f, 1.0f) : 0.0f;
+}
+
 ScreenSample lerp_sample(const ScreenSample& a, const ScreenSample& b, float t) {
     ScreenSample q = t < 0.5f ? a : b;  // face: of the nearer sample
     q.pixel = glm::mix(a.pixel, b.pixel, t);
@@ -221,10 +227,7 @@ void remove_tips(ScreenPath& path, float length_px) {
 }
 
 float distance_to_segment(glm::vec2 p, glm::vec2 a, glm::vec2 b) {
-    const glm::vec2 ab = b - a;
-    const float len2 = glm::dot(ab, ab);
-    const float t = len2 > 0.0f ? std::clamp(glm::dot(p - a, ab) / len2, 0.0f, 1.0f) : 0.0f;
-    return glm::length(p - (a + t * ab));
+    return glm::length(p - (a + nearest_on_segment(p, a, b) * (b - a)));
 }
 
 // Douglas–Peucker on an open run, with an explicit stack (no recursion depth limit).

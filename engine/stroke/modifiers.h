@@ -37,6 +37,9 @@ namespace lw {
 // surface point of the nearer one.
 [[nodiscard]] ScreenSample lerp_sample(const ScreenSample& a, const ScreenSample& b, float t);
 
+// Where on the segment a–b (0 at a, 1 at b) the point nearest p lies.
+[[nodiscard]] float nearest_on_segment(glm::vec2 p, glm::vec2 a, glm::vec2 b);
+
 // Splits, cuts and drops runs per `options` (Freestyle's "split by angle", "max 2D length",
 // "min 2D length", in that order), after joining them into outlines when `options.outline`
 // (stroke/outline.h: the set's runs become the closed outer outline of each drawing):

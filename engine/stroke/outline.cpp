@@ -25,13 +25,10 @@ struct Grid {
 
 void draw_segment(Grid& g, glm::vec2 a, glm::vec2 b, float radius) {
     const glm::vec2 lo = (glm::min(a, b) - radius - g.origin) / g.cell, hi = (glm::max(a, b) + radius - g.origin) / g.cell;
-    const glm::vec2 ab = b - a;
-    const float len2 = glm::dot(ab, ab);
     for (int y = std::max(0, int(lo.y)); y <= std::min(g.height - 1, int(hi.y)); ++y)
         for (int x = std::max(0, int(lo.x)); x <= std::min(g.width - 1, int(hi.x)); ++x) {
             const glm::vec2 c = g.centre(x, y);
-            const float t = len2 > 0.0f ? std::clamp(glm::dot(c - a, ab) / len2, 0.0f, 1.0f) : 0.0f;
-            if (glm::distance(c, a + t * ab) <= radius) g.line[g.at(x, y)] = 1;
+            if (glm::distance(c, a + nearest_on_segment(c, a, b) * (b - a)) <= radius) g.line[g.at(x, y)] = 1;
         }
 }
 
@@ -101,10 +98,8 @@ public:
                 for (const auto& [r, i] : buckets_[size_t(y) * size_t(columns_) + size_t(x)]) {
                     const std::vector<ScreenSample>& s = runs_[r].samples;
                     const ScreenSample &a = s[i], &b = s[(i + 1) % s.size()];
-                    const glm::vec2 ab = b.pixel - a.pixel;
-                    const float len2 = glm::dot(ab, ab);
-                    const float t = len2 > 0.0f ? std::clamp(glm::dot(q - a.pixel, ab) / len2, 0.0f, 1.0f) : 0.0f;
-                    const float d = glm::distance(q, a.pixel + t * ab);
+                    const float t = nearest_on_segment(q, a.pixel, b.pixel);
+                    const float d = glm::distance(q, a.pixel + t * (b.pixel - a.pixel));
                     if (d < best) best = d, out = lerp_sample(a, b, t);
                 }
         return out;
