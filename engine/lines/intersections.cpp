@@ -53,9 +53,9 @@ bool share_vertex(const glm::uvec3& f, const glm::uvec3& g) {
     return false;
 }
 
-// One crossing: the faces and the segment they have in common.
+// One crossing: the segment two faces have in common, kept by the lower-numbered one.
 struct Crossing {
-    uint32_t face, other;
+    uint32_t face;  // the lower-numbered face of the pair
     glm::dvec3 p[2];
     glm::dvec3 bary[2];  // in `face`
 };
@@ -73,7 +73,6 @@ bool cross(const WeldedMesh& m, uint32_t a, uint32_t b, Crossing& out) {
     const Kernel::Segment_3* segment = boost::get<Kernel::Segment_3>(&*result);  // CGAL 5.5: a boost::variant
     if (!segment) return false;  // a point (touching), or a coplanar overlap
     out.face = a;
-    out.other = b;
     for (int e = 0; e < 2; ++e) {
         out.p[e] = to_glm(segment->vertex(e));
         out.bary[e] = barycentric(m, a, out.p[e]);
@@ -81,12 +80,10 @@ bool cross(const WeldedMesh& m, uint32_t a, uint32_t b, Crossing& out) {
     if (out.p[1] == out.p[0]) return false;
     // Both ends on the same edge of one face: the faces meet along that edge without
     // crossing (a seam of parts that are not welded, a wall standing on a floor).
-    for (const uint32_t face : {a, b})
-        for (int c = 0; c < 3; ++c) {
-            bool both = true;
-            for (int e = 0; e < 2 && both; ++e) both = std::abs(barycentric(m, face, out.p[e])[c]) <= kOnEdge;
-            if (both) return false;
-        }
+    const glm::dvec3 in_b[2] = {barycentric(m, b, out.p[0]), barycentric(m, b, out.p[1])};
+    for (const glm::dvec3* ends : {static_cast<const glm::dvec3*>(out.bary), in_b})
+        for (int c = 0; c < 3; ++c)
+            if (std::abs(ends[0][c]) <= kOnEdge && std::abs(ends[1][c]) <= kOnEdge) return false;
     return true;
 }
 
