@@ -88,8 +88,11 @@ void ridge_segment(StripFace sf, int r, vec3 e, vec3 k, float thresh, bool to_ce
     append(s);
 }
 
+int crossings(bool z01, bool z12, bool z20) { return int(z01) + int(z12) + int(z20); }
+
 void crossed_face(StripFace sf, bool z01, bool z12, bool z20, vec3 e, vec3 k, float thresh, bool fade,
                   bool three_to_center, bool test, vec3 tmax[3], uint type) {
+    if (crossings(z01, z12, z20) < 2) return;  // draws nothing
     if (!z01) {
         ridge_segment(sf, 1, e, k, thresh, false, fade, test, tmax, type);
     } else if (!z12) {
@@ -103,7 +106,6 @@ void crossed_face(StripFace sf, bool z01, bool z12, bool z20, vec3 e, vec3 k, fl
     }
 }
 
-int crossings(bool z01, bool z12, bool z20) { return int(z01) + int(z12) + int(z20); }
 
 void ridge_face(uint f, bool ridge, float thresh, bool fade) {
     StripFace sf = strip_face(f);
@@ -126,7 +128,6 @@ void ridge_face(uint f, bool ridge, float thresh, bool fade) {
     z01 = z01 && (dot3(tmax[0], d01) >= 0.0 || dot3(tmax[1], d01) <= 0.0);
     z12 = z12 && (dot3(tmax[1], d12) >= 0.0 || dot3(tmax[2], d12) <= 0.0);
     z20 = z20 && (dot3(tmax[2], d20) >= 0.0 || dot3(tmax[0], d20) <= 0.0);
-    if (crossings(z01, z12, z20) < 2) return;
     crossed_face(sf, z01, z12, z20, e, k, thresh, fade, true, false, tmax, ridge ? LINE_RIDGE : LINE_VALLEY);
 }
 
@@ -160,7 +161,6 @@ void principal_highlight_face(uint f, vec3 eye, float thresh, bool fade) {
         if (!agree) continue;
         precise float a01 = along[0] * along[1], a12 = along[1] * along[2], a20 = along[2] * along[0];
         bool z01 = a01 <= 0.0, z12 = a12 <= 0.0, z20 = a20 <= 0.0;
-        if (crossings(z01, z12, z20) < 2) continue;
         crossed_face(sf, z01, z12, z20, along, strength, thresh, fade, false, false, none, LINE_PRINCIPAL_HIGHLIGHT);
     }
 }
@@ -179,7 +179,6 @@ void apparent_ridge_face(uint f, float thresh, bool fade) {
     }
     if (k[0] <= thresh && k[1] <= thresh && k[2] <= thresh) return;
     bool z01 = dot3(tmax[0], tmax[1]) <= 0.0, z12 = dot3(tmax[1], tmax[2]) <= 0.0, z20 = dot3(tmax[2], tmax[0]) <= 0.0;
-    if (crossings(z01, z12, z20) < 2) return;
     crossed_face(sf, z01, z12, z20, e, k, thresh, fade, true, true, tmax, LINE_APPARENT_RIDGE);
 }
 

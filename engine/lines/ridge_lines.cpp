@@ -99,10 +99,11 @@ void ridge_segment(const LineMesh& lm, const StripFace& sf, int r, const float* 
 // The crossings of a ridge-like face: an edge "crosses" where the directions of increase
 // at its ends point against each other (rtsc: z01, z12, z20); then the segments rtsc draws
 // for them — from the two crossed edges, or (all three crossed, `three_to_center`) three
-// pieces to the centre.
+// pieces to the centre; a face crossed on fewer than two edges draws nothing.
 void crossed_face(const LineMesh& lm, const StripFace& sf, bool z01, bool z12, bool z20, const float* e, const float* k,
                   float thresh, bool fade, bool three_to_center, const glm::vec3* tmax, LineType type,
                   std::vector<LineSegment>& out) {
+    if (int(z01) + int(z12) + int(z20) < 2) return;
     if (!z01) {
         ridge_segment(lm, sf, 1, e, k, thresh, false, fade, tmax, type, out);
     } else if (!z12) {
@@ -218,7 +219,6 @@ void ridge_face(const LineMesh& lm, uint32_t f, const float* ndotv, bool ridge, 
     z01 = z01 && (dot3(tmax[0], x[1] - x[0]) >= 0.0f || dot3(tmax[1], x[1] - x[0]) <= 0.0f);
     z12 = z12 && (dot3(tmax[1], x[2] - x[1]) >= 0.0f || dot3(tmax[2], x[2] - x[1]) <= 0.0f);
     z20 = z20 && (dot3(tmax[2], x[0] - x[2]) >= 0.0f || dot3(tmax[0], x[0] - x[2]) <= 0.0f);
-    if (int(z01) + int(z12) + int(z20) < 2) return;
     crossed_face(lm, sf, z01, z12, z20, e, k, thresh, fade, true, nullptr, ridge ? LineType::Ridge : LineType::Valley, out);
 }
 
@@ -281,7 +281,6 @@ void principal_highlight_face(const LineMesh& lm, uint32_t f, uint8_t shape, con
         strength[i] = strength_at[sf.vertex[i]];
     }
     const bool z01 = along[0] * along[1] <= 0.0f, z12 = along[1] * along[2] <= 0.0f, z20 = along[2] * along[0] <= 0.0f;
-    if (int(z01) + int(z12) + int(z20) < 2) return;
     for (const uint8_t flavour : {kPrincipalConvex, kPrincipalConcave})  // both where every k1 is 0, as in rtsc
         if (shape & flavour)
             crossed_face(lm, sf, z01, z12, z20, along, strength, thresh, fade, false, nullptr, LineType::PrincipalHighlight,
@@ -304,7 +303,6 @@ void apparent_ridge_face(const LineMesh& lm, uint32_t f, const ApparentVertex* a
     }
     const bool z01 = dot3(tmax[0], tmax[1]) <= 0.0f, z12 = dot3(tmax[1], tmax[2]) <= 0.0f,
                z20 = dot3(tmax[2], tmax[0]) <= 0.0f;
-    if (int(z01) + int(z12) + int(z20) < 2) return;
     crossed_face(lm, sf, z01, z12, z20, e, k, thresh, fade, true, tmax, LineType::ApparentRidge, out);
 }
 
