@@ -99,7 +99,7 @@ void facing_pass(const LineMesh& lm, const glm::vec3& eye, size_t begin, size_t 
 // principal highlights' v·e1 and strength. (Suggestive highlights': in vertex_pass.)
 void optional_vertex_pass(const LineMesh& lm, const glm::vec3& eye, const LineParams& params,
                           const ScaledThresholds& thresholds, size_t begin, size_t end, ExtractWorkspace& ws) {
-    if (params.apparent_ridges) apparent_curvature(lm, eye, ws.ndotv.data(), begin, end, ws.apparent.data());
+    if (params.apparent_ridges) apparent_curvature(lm, eye, ws.ndotv.data(), begin, end, ws.apparent);
     if (params.silhouettes && params.contours != ContourMode::Smooth)
         facing_pass(lm, eye, lm.mesh.faces.size() * begin / std::max<size_t>(1, lm.vertex_arrays.count),
                     lm.mesh.faces.size() * end / std::max<size_t>(1, lm.vertex_arrays.count), ws.front.data());
@@ -329,7 +329,9 @@ void face_pass(const LineMesh& lm, const ExtractWorkspace& ws, const LineParams&
         }
     }
     if (params.apparent_ridges)
-        for (uint32_t f = begin; f < end; ++f) apparent_ridge_face(lm, f, ws.apparent.data(), t.ar_thresh, params.fade, out);
+        for (uint32_t f = begin; f < end; ++f)
+            if (apparent_ridge_candidate(ws.apparent.corners.data(), faces[f], t.ar_thresh))
+                apparent_ridge_face(lm, f, ws.apparent, t.ar_thresh, params.fade, out);
     if (params.principal_highlights)
         for (uint32_t f = begin; f < end; ++f) {
             const uint8_t shape = ws.principal_shapes[f];
@@ -379,7 +381,7 @@ void extract_lines_reference(const LineMesh& lm, const glm::vec3& eye, const Lin
     if (threads == 1) {  // straight into the output
         vertex_passes(lm.vertex_arrays, eye, params, thresholds, 0, nv, ws);
         optional_vertex_pass(lm, eye, params, thresholds, 0, nv, ws);
-        if (params.apparent_ridges) apparent_derivative(lm, ws.ndotv.data(), 0, nv, ws.apparent.data());
+        if (params.apparent_ridges) apparent_derivative(lm, ws.ndotv.data(), 0, nv, ws.apparent);
         out.clear();
         for (size_t b = 0; b < blocks; ++b) face_block(b, out);
         return;
@@ -396,7 +398,7 @@ void extract_lines_reference(const LineMesh& lm, const glm::vec3& eye, const Lin
         optional_vertex_pass(lm, eye, params, thresholds, first, last, ws);
         sync.arrive_and_wait();
         if (params.apparent_ridges) {  // reads the neighbours' q1
-            apparent_derivative(lm, ws.ndotv.data(), first, last, ws.apparent.data());
+            apparent_derivative(lm, ws.ndotv.data(), first, last, ws.apparent);
             sync.arrive_and_wait();
         }
         for (size_t b = next_block.fetch_add(1); b < blocks; b = next_block.fetch_add(1)) {

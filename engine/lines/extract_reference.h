@@ -31,7 +31,7 @@ struct ExtractWorkspace {
     std::vector<float> ndotv, kr, test_num;
     std::vector<uint8_t> signs;
     std::vector<float> highlight_num;        // suggestive highlights' test numerator (when drawn)
-    std::vector<ApparentVertex> apparent;    // apparent ridges' view-dependent curvature (when drawn)
+    ApparentArrays apparent;                 // apparent ridges' view-dependent curvature (when drawn)
     std::vector<float> principal_along, principal_strength;  // principal highlights' (when drawn)
     std::vector<uint8_t> principal_flags;
     std::vector<uint8_t> front;  // per face, 1 where it faces the eye (mesh contours)

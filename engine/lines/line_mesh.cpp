@@ -65,7 +65,7 @@ LineMesh build_line_mesh(const TriangleMesh& mesh, float crease_angle_deg) {
     line_mesh.face_coarse = coarse_faces(line_mesh.mesh, per_face(mesh.face_model), mesh.subdivisions);
     line_mesh.feature_edges = feature_edge_masks(line_mesh.mesh, crease_angle_deg, line_mesh.face_part);
     line_mesh.vertex_arrays = line_vertex_arrays(line_mesh.mesh, line_mesh.curvature);
-    vertex_face_lists(line_mesh.mesh, line_mesh.vertex_face_offsets, line_mesh.vertex_faces);
+    vertex_face_lists(line_mesh.mesh, line_mesh.vertex_face_offsets, line_mesh.vertex_faces, line_mesh.vertex_ring);
     line_mesh.strip_corners = strip_corner_order(line_mesh.mesh, line_mesh.vertex_face_offsets, line_mesh.vertex_faces);
     line_mesh.generation = next_generation();
     return line_mesh;
@@ -107,16 +107,23 @@ std::vector<uint8_t> coarse_faces(const WeldedMesh& mesh, const std::vector<uint
     return coarse;
 }
 
-void vertex_face_lists(const WeldedMesh& mesh, std::vector<uint32_t>& offsets, std::vector<uint32_t>& faces) {
+void vertex_face_lists(const WeldedMesh& mesh, std::vector<uint32_t>& offsets, std::vector<uint32_t>& faces,
+                       std::vector<glm::uvec2>& ring) {
     // Counting sort by vertex: a face index goes to each corner's list in face order.
     offsets.assign(mesh.positions.size() + 1, 0u);
     for (const glm::uvec3& f : mesh.faces)
         for (int i = 0; i < 3; ++i) ++offsets[f[i] + 1];
     for (size_t v = 0; v < mesh.positions.size(); ++v) offsets[v + 1] += offsets[v];
     faces.resize(offsets.back());
+    ring.resize(offsets.back());
     std::vector<uint32_t> fill(offsets.begin(), offsets.end() - 1);
     for (size_t f = 0; f < mesh.faces.size(); ++f)
-        for (int i = 0; i < 3; ++i) faces[fill[mesh.faces[f][i]]++] = uint32_t(f);
+        for (int i = 0; i < 3; ++i) {
+            const glm::uvec3 c = mesh.faces[f];
+            const uint32_t j = fill[c[i]]++;
+            faces[j] = uint32_t(f);
+            ring[j] = {c[(i + 1) % 3], c[(i + 2) % 3]};
+        }
 }
 
 LineVertexArrays line_vertex_arrays(const WeldedMesh& mesh, const SurfaceCurvature& curvature) {

@@ -62,6 +62,9 @@ struct LineMesh {
     // The faces around each vertex, in face order (apparent ridges, ridge_lines.h): those of
     // vertex v are vertex_faces[vertex_face_offsets[v] .. vertex_face_offsets[v + 1]).
     std::vector<uint32_t> vertex_face_offsets, vertex_faces;
+    // Beside each vertex_faces entry, that face's two other corners in its winding after v
+    // (the opposite edge v1–v2): apparent ridges' derivative walks these on the host.
+    std::vector<glm::uvec2> vertex_ring;
     std::vector<StripCorners> strip_corners;  // per face, the corner order rtsc sees (strip_order.h)
     // A number no other build or pose of any line mesh has had: what per-view caches of
     // view-independent lines (ExtractWorkspace) are keyed on.
@@ -77,8 +80,10 @@ void pose_line_mesh(LineMesh& line_mesh, const TriangleMesh& posed);
 
 [[nodiscard]] LineVertexArrays line_vertex_arrays(const WeldedMesh& mesh, const SurfaceCurvature& curvature);
 
-// The faces around each vertex, in face order, as `LineMesh::vertex_faces` holds them.
-void vertex_face_lists(const WeldedMesh& mesh, std::vector<uint32_t>& offsets, std::vector<uint32_t>& faces);
+// The faces around each vertex, in face order, as `LineMesh::vertex_faces` holds them, and
+// each one's opposite edge (`LineMesh::vertex_ring`).
+void vertex_face_lists(const WeldedMesh& mesh, std::vector<uint32_t>& offsets, std::vector<uint32_t>& faces,
+                       std::vector<glm::uvec2>& ring);
 
 // The feature-edge masks for a crease angle; `face_part` (per face, or empty) marks the
 // boundaries between parts.

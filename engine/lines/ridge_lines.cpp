@@ -4,6 +4,7 @@
 #include "lines/ridge_lines.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 namespace lw {
@@ -70,6 +71,14 @@ void ridge_segment(const LineMesh& lm, const StripFace& sf, int r, const float* 
     // Where e is exactly 0 at both ends of an edge (a symmetric mesh seen symmetrically) the
     // weight is 0/0: rtsc hands GL a NaN vertex, which draws nothing; so do we.
     if (!std::isfinite(p01.x + p01.y + p01.z + p12.x + p12.y + p12.z)) return;
+    if (tmax) {
+        // perp points from the segment towards b when (v0, v1, v2) winds as the face, away
+        // from it when the strip reversed it: rtsc's test, winding and all. (About half the
+        // apparent ridge pieces end here: it comes before the rest is filled in.)
+        const glm::vec3 normal = 0.5f * glm::cross(xb - xa, xc - xa);
+        const glm::vec3 perp = glm::cross(normal, p01 - p12);
+        if (dot3(tmax[a], perp) <= 0.0f || dot3(tmax[b], perp) >= 0.0f || dot3(tmax[c], perp) <= 0.0f) return;
+    }
     glm::vec4 bary01(0.0f), bary12(1.0f / 3.0f, 1.0f / 3.0f, 1.0f / 3.0f, 0.0f);
     bary01[sf.corner[a]] = w01;
     bary01[sf.corner[b]] = w10;
@@ -79,13 +88,6 @@ void ridge_segment(const LineMesh& lm, const StripFace& sf, int r, const float* 
         bary12[sf.corner[b]] = w12;
         bary12[sf.corner[c]] = w21;
         key12 = uint32_t(lm.mesh.face_edges[sf.face][sf.corner[a]]);  // edge b–c
-    }
-    if (tmax) {
-        // perp points from the segment towards b when (v0, v1, v2) winds as the face, away
-        // from it when the strip reversed it: rtsc's test, winding and all.
-        const glm::vec3 normal = 0.5f * glm::cross(xb - xa, xc - xa);
-        const glm::vec3 perp = glm::cross(normal, p01 - p12);
-        if (dot3(tmax[a], perp) <= 0.0f || dot3(tmax[b], perp) >= 0.0f || dot3(tmax[c], perp) <= 0.0f) return;
     }
     float alpha01 = 1.0f, alpha12 = 1.0f;
     if (fade) {  // (an end at 0 with a zero threshold: 0, not rtsc's 0/0)
@@ -117,82 +119,109 @@ void crossed_face(const LineMesh& lm, const StripFace& sf, bool z01, bool z12, b
     }
 }
 
-// The eigenvalue of larger magnitude of the symmetric 2×2 matrix [m1 m12; m12 m2] and its
-// unit eigenvector (rtsc's largest_eig_2x2).
-void largest_eigen_2x2(float m1, float m12, float m2, glm::vec2& vector, float& value) {
-    value = 0.5f * (m1 + m2);
-    const float root = std::sqrt(m12 * m12 + 0.25f * ((m2 - m1) * (m2 - m1)));
-    if (value > 0.0f)
-        value += root;
-    else
-        value -= root;
-    const glm::vec2 v(m2 - value, -m12);
-    const float length = std::sqrt(v.x * v.x + v.y * v.y);
-    if (!(length > 0.0f)) {
-        vector = glm::vec2(0.0f, 1.0f);
-    } else {
-        const float inv = 1.0f / length;
-        vector = glm::vec2(v.x * inv, v.y * inv);
-    }
-}
-
 }  // namespace
 
-void apparent_curvature(const LineMesh& lm, const glm::vec3& eye, const float* ndotv, size_t begin, size_t end,
-                        ApparentVertex* out) {
-    const SurfaceCurvature& c = lm.curvature;
+// `condition ? a : b` as bit operations: GCC leaves a float select in a loop as a branch,
+// which keeps the loop from vectorizing.
+inline float pick(bool condition, float a, float b) {
+    const uint32_t mask = 0u - uint32_t(condition);
+    return std::bit_cast<float>((std::bit_cast<uint32_t>(a) & mask) | (std::bit_cast<uint32_t>(b) & ~mask));
+}
+
+// Cloned for AVX2 where the CPU has it, like the base vertex pass (extract_reference.cpp):
+// trimesh2's normalize and rtsc's largest_eig_2x2 are written as selects so that the loop
+// vectorizes; the operations and their order are rtsc's, so the bits are the same.
+__attribute__((target_clones("avx2", "default"))) void apparent_curvature(const LineMesh& lm, const glm::vec3& eye,
+                                                                          const float* ndotv, size_t begin, size_t end,
+                                                                          ApparentArrays& out) {
+    using F = LineVertexArrays::Field;
+    const LineVertexArrays& va = lm.vertex_arrays;
+    const float *px = va.field(F::Px), *py = va.field(F::Py), *pz = va.field(F::Pz);
+    const float *ax = va.field(F::E1x), *ay = va.field(F::E1y), *az = va.field(F::E1z);
+    const float *bx = va.field(F::E2x), *by = va.field(F::E2y), *bz = va.field(F::E2z);
+    const float *k1 = va.field(F::K1), *k2 = va.field(F::K2);
+    float *q1 = out.q1.data(), *t1x = out.t1x.data(), *t1y = out.t1y.data();
+    const glm::vec3 e = eye;
+#pragma GCC ivdep
     for (size_t i = begin; i < end; ++i) {
-        const glm::vec3 v = unit(eye - lm.mesh.positions[i]);
-        const float u = dot3(v, c.pdir1[i]), w = dot3(v, c.pdir2[i]);
+        // v: the unit direction to the eye, (0, 0, 1) for a zero or NaN length (`unit`).
+        const float dx = e.x - px[i], dy = e.y - py[i], dz = e.z - pz[i];
+        const float length = std::sqrt(dx * dx + dy * dy + dz * dz);
+        const bool has_length = length > 0.0f;
+        const float inv = 1.0f / length;
+        const float vx = pick(has_length, dx * inv, 0.0f), vy = pick(has_length, dy * inv, 0.0f),
+                    vz = pick(has_length, dz * inv, 1.0f);
+        const float u = vx * ax[i] + vy * ay[i] + vz * az[i], w = vx * bx[i] + vy * by[i] + vz * bz[i];
         const float u2 = u * u, w2 = w * w;
         const float csc2 = 1.0f / (u2 + w2);
         // Q = S·P⁻¹ = S + (secθ − 1)·S·ŵŵᵀ, ŵ the unit projected view direction (Judd et al. §3).
         const float sec_minus_1 = 1.0f / std::fabs(ndotv[i]) - 1.0f;
         const float uu = u2 * csc2, uw = u * w * csc2, ww = w2 * csc2;
-        const float q11 = c.k1[i] * (1.0f + sec_minus_1 * uu);
-        const float q12 = c.k1[i] * (sec_minus_1 * uw);
-        const float q21 = c.k2[i] * (sec_minus_1 * uw);
-        const float q22 = c.k2[i] * (1.0f + sec_minus_1 * ww);
-        glm::vec2 t1;
-        float q1;
-        largest_eigen_2x2(q11 * q11 + q21 * q21, q11 * q12 + q21 * q22, q12 * q12 + q22 * q22, t1, q1);
-        out[i] = {q1, t1.x, t1.y, 0.0f};
+        const float q11 = k1[i] * (1.0f + sec_minus_1 * uu);
+        const float q12 = k1[i] * (sec_minus_1 * uw);
+        const float q21 = k2[i] * (sec_minus_1 * uw);
+        const float q22 = k2[i] * (1.0f + sec_minus_1 * ww);
+        // The eigenvalue of QᵀQ = [m1 m12; m12 m2] of larger magnitude and its unit
+        // eigenvector, (0, 1) where that has no length (rtsc's largest_eig_2x2).
+        const float m1 = q11 * q11 + q21 * q21, m12 = q11 * q12 + q21 * q22, m2 = q12 * q12 + q22 * q22;
+        const float mean = 0.5f * (m1 + m2);
+        const float root = std::sqrt(m12 * m12 + 0.25f * ((m2 - m1) * (m2 - m1)));
+        const float value = pick(mean > 0.0f, mean + root, mean - root);
+        const float vec_x = m2 - value, vec_y = -m12;
+        const float vec_length = std::sqrt(vec_x * vec_x + vec_y * vec_y);
+        const bool has_direction = vec_length > 0.0f;
+        const float vec_inv = 1.0f / vec_length;
+        q1[i] = value;
+        t1x[i] = pick(has_direction, vec_x * vec_inv, 0.0f);
+        t1y[i] = pick(has_direction, vec_y * vec_inv, 1.0f);
     }
 }
 
-void apparent_derivative(const LineMesh& lm, const float* ndotv, size_t begin, size_t end, ApparentVertex* inout) {
+void apparent_derivative(const LineMesh& lm, const float* ndotv, size_t begin, size_t end, ApparentArrays& inout) {
     const SurfaceCurvature& c = lm.curvature;
     const auto& positions = lm.mesh.positions;
+    const float* q1_at = inout.q1.data();
+    // Whether the line along t1 crosses a face's opposite edge is as good as random from face
+    // to face, so a branch per face mispredicts often: the weights of up to kChunk faces are
+    // computed first with no branch, then only the crossed ones are read on.
+    constexpr uint32_t kChunk = 8;
     for (size_t i = begin; i < end; ++i) {
         const glm::vec3 v0 = positions[i];
-        const float q1 = inout[i].q1;
-        const glm::vec3 t1 = inout[i].t1x * c.pdir1[i] + inout[i].t1y * c.pdir2[i];
+        const float q1 = q1_at[i];
+        const glm::vec3 t1 = inout.t1x[i] * c.pdir1[i] + inout.t1y[i] * c.pdir2[i];
         const glm::vec3 t2 = glm::cross(c.normals[i], t1);
         const float v0_t2 = dot3(v0, t2);
         float derivative = 0.0f;
         int estimates = 0;
-        for (uint32_t j = lm.vertex_face_offsets[i]; j < lm.vertex_face_offsets[i + 1]; ++j) {
-            // The point p on the opposite edge v1–v2 that lies along t1 from v0.
-            const uint32_t f = lm.vertex_faces[j];
-            const glm::uvec3 corner = lm.mesh.faces[f];
-            const int at = corner.x == i ? 0 : corner.y == i ? 1 : 2;
-            const uint32_t i1 = corner[(at + 1) % 3], i2 = corner[(at + 2) % 3];
-            const float v1_t2 = dot3(positions[i1], t2), v2_t2 = dot3(positions[i2], t2);
-            const float w1 = (v2_t2 - v0_t2) / (v2_t2 - v1_t2);
-            if (w1 < 0.0f || w1 >= 1.0f) continue;  // infinities fail here; NaN passes, as in rtsc
-            const float w2 = 1.0f - w1;
-            const glm::vec3 p = w1 * positions[i1] + w2 * positions[i2];
-            const float q1_p = w1 * inout[i1].q1 + w2 * inout[i2].q1;
-            // The derivative along the projected (screen) direction: distances shrink by |n·v|.
-            float distance = dot3(p - v0, t1);
-            distance *= std::fabs(ndotv[i]);
-            derivative += (q1_p - q1) / distance;
-            if (++estimates == 2) {  // a line through v0 leaves through two faces at most
-                derivative *= 0.5f;
-                break;
+        const uint32_t last = lm.vertex_face_offsets[i + 1];
+        for (uint32_t j0 = lm.vertex_face_offsets[i]; j0 < last && estimates < 2; j0 += kChunk) {
+            const uint32_t n = std::min(kChunk, last - j0);
+            float weight[kChunk];
+            uint32_t crossed = 0;
+            for (uint32_t k = 0; k < n; ++k) {
+                // The point p on the opposite edge v1–v2 that lies along t1 from v0: at w1.
+                const glm::uvec2 edge = lm.vertex_ring[j0 + k];
+                const float v1_t2 = dot3(positions[edge.x], t2), v2_t2 = dot3(positions[edge.y], t2);
+                const float w1 = (v2_t2 - v0_t2) / (v2_t2 - v1_t2);
+                weight[k] = w1;
+                crossed |= (uint32_t(!(w1 < 0.0f)) & uint32_t(!(w1 >= 1.0f))) << k;  // infinities fail; NaN passes, as in rtsc
+            }
+            for (; crossed != 0 && estimates < 2; crossed &= crossed - 1) {  // a line leaves through two faces at most
+                const uint32_t k = uint32_t(std::countr_zero(crossed));
+                const glm::uvec2 edge = lm.vertex_ring[j0 + k];
+                const float w1 = weight[k], w2 = 1.0f - w1;
+                const glm::vec3 p = w1 * positions[edge.x] + w2 * positions[edge.y];
+                const float q1_p = w1 * q1_at[edge.x] + w2 * q1_at[edge.y];
+                // The derivative along the projected (screen) direction: distances shrink by |n·v|.
+                float distance = dot3(p - v0, t1);
+                distance *= std::fabs(ndotv[i]);
+                derivative += (q1_p - q1) / distance;
+                ++estimates;
             }
         }
-        inout[i].dt1q1 = derivative;
+        if (estimates == 2) derivative *= 0.5f;
+        inout.dt1q1[i] = derivative;
+        inout.corners[i] = {derivative * t1, q1};
     }
 }
 
@@ -287,19 +316,16 @@ void principal_highlight_face(const LineMesh& lm, uint32_t f, uint8_t shape, con
                          out);
 }
 
-void apparent_ridge_face(const LineMesh& lm, uint32_t f, const ApparentVertex* apparent, float thresh, bool fade,
+void apparent_ridge_face(const LineMesh& lm, uint32_t f, const ApparentArrays& apparent, float thresh, bool fade,
                          std::vector<LineSegment>& out) {
-    // No back-face culling: rtsc keeps faces that are just back-facing, so that apparent
-    // ridges reach the contours they end at.
+    const ApparentCorner* corners = apparent.corners.data();
     const StripFace sf = strip_face(lm, f);
-    const ApparentVertex q[3] = {apparent[sf.vertex[0]], apparent[sf.vertex[1]], apparent[sf.vertex[2]]};
-    if (q[0].q1 <= thresh && q[1].q1 <= thresh && q[2].q1 <= thresh) return;
-    const float k[3] = {q[0].q1, q[1].q1, q[2].q1};
-    const float e[3] = {q[0].dt1q1, q[1].dt1q1, q[2].dt1q1};
+    float k[3], e[3];
     glm::vec3 tmax[3];
     for (int i = 0; i < 3; ++i) {
-        const glm::vec3 t1 = q[i].t1x * lm.curvature.pdir1[sf.vertex[i]] + q[i].t1y * lm.curvature.pdir2[sf.vertex[i]];
-        tmax[i] = q[i].dt1q1 * t1;
+        k[i] = corners[sf.vertex[i]].q1;
+        e[i] = apparent.dt1q1[sf.vertex[i]];
+        tmax[i] = corners[sf.vertex[i]].tmax;
     }
     const bool z01 = dot3(tmax[0], tmax[1]) <= 0.0f, z12 = dot3(tmax[1], tmax[2]) <= 0.0f,
                z20 = dot3(tmax[2], tmax[0]) <= 0.0f;

@@ -3,7 +3,7 @@
 // reference; shaders/lines_ridges.glsl does the same per face on the GPU).
 //
 // Input:  a `LineMesh` (curvature, derivative tensor, vertex → face adjacency), per vertex
-//         the view's n·v, the eye; for apparent ridges the per-vertex `ApparentVertex`
+//         the view's n·v, the eye; for apparent ridges the per-vertex `ApparentArrays`
 //         computed here first. Thresholds as LineParams gives them (scaled by fs inside).
 // Output: `LineSegment`s appended per face, endpoints keyed by the mesh edge they lie on
 //         (kNoKey at a face's centre, where three pieces meet).
@@ -35,8 +35,9 @@
 
 namespace lw {
 
-// A vertex's view-dependent curvature for apparent ridges: q1 (the largest eigenvalue of
-// QᵀQ, a squared curvature), its direction t1 in the (e1, e2) frame, and D_t1 q1.
+// A vertex's view-dependent curvature for apparent ridges, as the GPU pass keeps it: q1 (the
+// largest eigenvalue of QᵀQ, a squared curvature), its direction t1 in the (e1, e2) frame,
+// and D_t1 q1.
 struct ApparentVertex {
     float q1;
     float t1x, t1y;
@@ -44,12 +45,31 @@ struct ApparentVertex {
 };
 static_assert(sizeof(ApparentVertex) == 16, "ApparentVertex must match shaders/lines_shared.glsl");
 
+// What the host's face test reads of a vertex, in one 16-byte load: tmax = D_t1 q1 · t1 in
+// world space (rtsc's direction of increasing q1, scaled) and q1.
+struct ApparentCorner {
+    glm::vec3 tmax;
+    float q1;
+};
+
+// The same values on the host, an array each (the first pass's loop vectorizes), and the
+// corners the face test reads.
+struct ApparentArrays {
+    std::vector<float> q1, t1x, t1y, dt1q1;
+    std::vector<ApparentCorner> corners;
+    void resize(size_t vertices) {
+        for (std::vector<float>* a : {&q1, &t1x, &t1y, &dt1q1}) a->resize(vertices);
+        corners.resize(vertices);
+    }
+};
+
 // Apparent ridges need two vertex passes: q1 and t1 of vertices [begin, end) first, then
 // (once every vertex has them) D_t1 q1 from each vertex's first two neighbouring faces
-// where the line along t1 crosses the opposite edge, in face order (rtsc's compute_Dt1q1).
+// where the line along t1 crosses the opposite edge, in face order (rtsc's compute_Dt1q1),
+// and the vertex's `ApparentCorner`.
 void apparent_curvature(const LineMesh& mesh, const glm::vec3& eye, const float* ndotv, size_t begin, size_t end,
-                        ApparentVertex* out);
-void apparent_derivative(const LineMesh& mesh, const float* ndotv, size_t begin, size_t end, ApparentVertex* inout);
+                        ApparentArrays& out);
+void apparent_derivative(const LineMesh& mesh, const float* ndotv, size_t begin, size_t end, ApparentArrays& inout);
 
 // rtsc's back-face culling: all three corners have n·v ≤ 0.
 inline bool back_facing(const float* ndotv, const glm::uvec3& corners) {
@@ -77,7 +97,23 @@ constexpr uint8_t kPrincipalConvex = 1, kPrincipalConcave = 2, kPrincipalFlip = 
 // bytes make it a candidate (the caller's tests: rtsc's back-face culling among them).
 void principal_highlight_face(const LineMesh& mesh, uint32_t face, uint8_t shape, const float* along,
                               const float* strength, float ph_thresh, bool fade, std::vector<LineSegment>& out);
-void apparent_ridge_face(const LineMesh& mesh, uint32_t face, const ApparentVertex* apparent, float ar_thresh,
-                         bool fade, std::vector<LineSegment>& out);
+// Whether a face with these corners can have an apparent ridge: q1 above the threshold at a
+// corner, and tmax turning (a dot product ≤ 0) across two of its edges at least. Neither
+// test depends on the corner order, so most faces (on FlightHelmet 61 % at the default
+// camera) are passed over here, before their strip order is read. (The dot product's
+// operations are dot3's in ridge_lines.cpp, in the same order.)
+inline bool apparent_ridge_candidate(const ApparentCorner* corners, const glm::uvec3& c, float ar_thresh) {
+    const ApparentCorner a = corners[c.x], b = corners[c.y], d = corners[c.z];
+    const auto turns = [](const glm::vec3& u, const glm::vec3& v) {
+        return int(u.x * v.x + u.y * v.y + u.z * v.z <= 0.0f);
+    };
+    return !(a.q1 <= ar_thresh && b.q1 <= ar_thresh && d.q1 <= ar_thresh) &&
+           turns(a.tmax, b.tmax) + turns(b.tmax, d.tmax) + turns(d.tmax, a.tmax) >= 2;
+}
+// One face's apparent ridges, for a face that `apparent_ridge_candidate` lets through. No
+// back-face culling: rtsc keeps faces that are just back-facing, so that apparent ridges
+// reach the contours they end at.
+void apparent_ridge_face(const LineMesh& mesh, uint32_t face, const ApparentArrays& apparent, float ar_thresh, bool fade,
+                         std::vector<LineSegment>& out);
 
 }  // namespace lw
