@@ -115,7 +115,9 @@ TEST_P(LinesGpuMatchesCpu, SameSegments) {
         }
         for (int t = 0; t < kLineTypeCount && all; ++t) {
             RecordProperty(line_type_name(LineType(t)), int(by_type[size_t(t)]));
-            if (c.present & (1u << t)) EXPECT_GT(by_type[size_t(t)], 0u) << line_type_name(LineType(t)) << ": none to compare";
+            if (c.present & (1u << t)) {
+                EXPECT_GT(by_type[size_t(t)], 0u) << line_type_name(LineType(t)) << ": none to compare";
+            }
         }
     }
 }
