@@ -3,8 +3,9 @@
 // Feature-line extraction, apparent ridges' second vertex pass (between lines_vertex.comp,
 // which wrote every vertex's q1 and t1, and lines_extract.comp): D_t1 q1 per vertex, the
 // derivative of q1 along t1 from the first two faces around the vertex (in face order)
-// where the line along t1 leaves through the opposite edge — rtsc's compute_Dt1q1, line
-// by line as engine/lines/ridge_lines.cpp (apparent_derivative), with `precise`.
+// where the line along t1 leaves through the opposite edge — rtsc's compute_Dt1q1, the
+// same operations in the same order as engine/lines/ridge_lines.cpp (apparent_derivative,
+// which finds the crossed faces in chunks), with `precise`.
 #include "lines_shared.glsl"
 #include "lines_ridges_math.glsl"
 

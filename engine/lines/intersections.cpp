@@ -3,6 +3,7 @@
 #include "lines/intersections.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <tuple>
 #include <unordered_map>
@@ -141,6 +142,9 @@ std::vector<LineSegment> find_intersection_lines(const LineMesh& lm, size_t* can
     boxes.reserve(m.faces.size());
     for (uint32_t f = 0; f < m.faces.size(); ++f) {
         const glm::vec3 a = m.positions[m.faces[f].x], b = m.positions[m.faces[f].y], c = m.positions[m.faces[f].z];
+        // (A corner at infinity or NaN, from a broken pose, would send CGAL's exact
+        // fallback into numbers it cannot represent: such a face crosses nothing.)
+        if (!std::isfinite(a.x + a.y + a.z + b.x + b.y + b.z + c.x + c.y + c.z)) continue;
         if (CGAL::collinear(Point(a.x, a.y, a.z), Point(b.x, b.y, b.z), Point(c.x, c.y, c.z))) continue;
         glm::vec3 lo = glm::min(a, glm::min(b, c)), hi = glm::max(a, glm::max(b, c));
         boxes.emplace_back(&lo.x, &hi.x, &m.faces[f]);

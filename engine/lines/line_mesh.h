@@ -63,7 +63,8 @@ struct LineMesh {
     // vertex v are vertex_faces[vertex_face_offsets[v] .. vertex_face_offsets[v + 1]).
     std::vector<uint32_t> vertex_face_offsets, vertex_faces;
     // Beside each vertex_faces entry, that face's two other corners in its winding after v
-    // (the opposite edge v1–v2): apparent ridges' derivative walks these on the host.
+    // (the opposite edge v1–v2): apparent ridges' derivative walks these on the host. (A
+    // welded face has three distinct corners: weld drops the others.)
     std::vector<glm::uvec2> vertex_ring;
     std::vector<StripCorners> strip_corners;  // per face, the corner order rtsc sees (strip_order.h)
     // A number no other build or pose of any line mesh has had: what per-view caches of

@@ -119,7 +119,6 @@ void crossed_face(const LineMesh& lm, const StripFace& sf, bool z01, bool z12, b
     }
 }
 
-}  // namespace
 
 // `condition ? a : b` as bit operations: GCC leaves a float select in a loop as a branch,
 // which keeps the loop from vectorizing.
@@ -127,6 +126,8 @@ inline float pick(bool condition, float a, float b) {
     const uint32_t mask = 0u - uint32_t(condition);
     return std::bit_cast<float>((std::bit_cast<uint32_t>(a) & mask) | (std::bit_cast<uint32_t>(b) & ~mask));
 }
+
+}  // namespace
 
 // Cloned for AVX2 where the CPU has it, like the base vertex pass (extract_reference.cpp):
 // trimesh2's normalize and rtsc's largest_eig_2x2 are written as selects so that the loop

@@ -51,6 +51,7 @@ struct ApparentCorner {
     glm::vec3 tmax;
     float q1;
 };
+static_assert(sizeof(ApparentCorner) == 16, "ApparentCorner is read as one 16-byte record");
 
 // The same values on the host, an array each (the first pass's loop vectorizes), and the
 // corners the face test reads.
@@ -101,7 +102,8 @@ void principal_highlight_face(const LineMesh& mesh, uint32_t face, uint8_t shape
 // corner, and tmax turning (a dot product ≤ 0) across two of its edges at least. Neither
 // test depends on the corner order, so most faces (on FlightHelmet 61 % at the default
 // camera) are passed over here, before their strip order is read. (The dot product's
-// operations are dot3's in ridge_lines.cpp, in the same order.)
+// operations are dot3's in ridge_lines.cpp, in the same order: bit-exact only where the
+// caller is compiled with -ffp-contract=off, as extract_reference.cpp is.)
 inline bool apparent_ridge_candidate(const ApparentCorner* corners, const glm::uvec3& c, float ar_thresh) {
     const ApparentCorner a = corners[c.x], b = corners[c.y], d = corners[c.z];
     const auto turns = [](const glm::vec3& u, const glm::vec3& v) {
