@@ -10,6 +10,9 @@
 #include "lines/chaining.h"
 #include "lines/extract_reference.h"
 #include "scene/scene.h"
+#include "core/error.h"
+#include "scene/scene_file.h"
+#include "session/scene_session.h"
 #include "test_support.h"
 
 namespace lw {
@@ -257,6 +260,51 @@ TEST(RidgeLinesThreads, SameSegmentsAtAnyThreadCountAndFromTheCache) {
         for (glm::vec3& p : moved.positions) p.y += 0.05f * std::sin(3.0f * p.x);
         pose_line_mesh(lm, moved);
     }
+}
+
+// lines.curvature "trimesh2" (or --curvature) fits the curvature as newer trimesh2 does: the
+// line mesh of a session, of every pose, and of a session told so later; the scene key reads
+// back and a bad value names it. (What the fit does to the lines: docs/research/rtsc-lines.md
+// §7.4; CurvatureOptions itself: tests/test_curvature.cpp.)
+TEST(CurvatureFitKey, Trimesh2FitReachesEveryLineMesh) {
+    const std::filesystem::path dir = test::temp_dir();
+    const SceneDesc read = parse_scene_json(R"({"model": "m.glb", "lines": {"curvature": "trimesh2"}})", dir / "in.json");
+    EXPECT_EQ(read.lines.params.curvature, CurvatureFit::Trimesh2);
+    EXPECT_EQ(parse_scene_json(scene_json(read, ViewCamera{}, dir), dir / "out.json").lines.params.curvature,
+              CurvatureFit::Trimesh2);
+    try {
+        (void)parse_scene_json(R"({"model": "m.glb", "lines": {"curvature": "fast"}})", dir / "bad.json");
+        ADD_FAILURE() << "no error";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("bad.json: lines.curvature"), std::string::npos) << e.what();
+    }
+
+    // The fits differ on a scan's irregular triangles; the line mesh keeps its fit in a new pose.
+    SceneDesc desc = scene_for_model(test::data_dir() / "models/LeePerrySmith/LeePerrySmith.glb");
+    desc.width = 160;
+    desc.height = 120;
+    const LoadedScene scene = load_scene(desc);
+    const SurfaceCurvature exact = build_line_mesh(scene.mesh, 45.0f).curvature;
+    LineMesh fitted = build_line_mesh(scene.mesh, 45.0f, curvature_options(CurvatureFit::Trimesh2));
+    const SurfaceCurvature newer = compute_curvature(fitted.mesh, {.trimesh2_ldlt_shortcut = true});
+    ASSERT_EQ(fitted.curvature.k1.size(), exact.k1.size());
+    EXPECT_EQ(fitted.curvature.k1, newer.k1);
+    EXPECT_NE(fitted.curvature.k1, exact.k1);
+    pose_line_mesh(fitted, scene.mesh);
+    EXPECT_EQ(fitted.curvature.k1, newer.k1);
+
+    Context ctx({.device = {DeviceChoice::Kind::Cpu}, .validation = true});
+    {
+        desc.lines.params.curvature = CurvatureFit::Trimesh2;
+        SceneSession session(ctx, desc);
+        ASSERT_NE(session.renderer().line_mesh(), nullptr);
+        EXPECT_EQ(session.renderer().line_mesh()->curvature.k1, newer.k1);
+        LinesDesc lines = desc.lines;
+        lines.params.curvature = CurvatureFit::Exact;
+        session.set_lines(lines);  // rebuilds the line mesh
+        EXPECT_EQ(session.renderer().line_mesh()->curvature.k1, exact.k1);
+    }
+    EXPECT_TRUE(ctx.validation_messages().empty());
 }
 
 }  // namespace

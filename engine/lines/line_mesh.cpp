@@ -49,10 +49,11 @@ std::vector<uint32_t> feature_edge_masks(const WeldedMesh& mesh, float crease_an
     return masks;
 }
 
-LineMesh build_line_mesh(const TriangleMesh& mesh, float crease_angle_deg) {
+LineMesh build_line_mesh(const TriangleMesh& mesh, float crease_angle_deg, const CurvatureOptions& curvature) {
     LineMesh line_mesh;
     line_mesh.mesh = weld(mesh);
-    line_mesh.curvature = compute_curvature(line_mesh.mesh);
+    line_mesh.curvature_options = curvature;
+    line_mesh.curvature = compute_curvature(line_mesh.mesh, curvature);
     line_mesh.feature_size = feature_size(line_mesh.mesh, line_mesh.curvature);
     // A per-triangle array per welded face (empty where the mesh has none).
     const auto per_face = [&](const std::vector<uint32_t>& per_triangle) {
@@ -73,7 +74,7 @@ LineMesh build_line_mesh(const TriangleMesh& mesh, float crease_angle_deg) {
 
 void pose_line_mesh(LineMesh& line_mesh, const TriangleMesh& posed) {
     update_positions(line_mesh.mesh, posed);
-    line_mesh.curvature = compute_curvature(line_mesh.mesh);
+    line_mesh.curvature = compute_curvature(line_mesh.mesh, line_mesh.curvature_options);
     line_mesh.vertex_arrays = line_vertex_arrays(line_mesh.mesh, line_mesh.curvature);
     line_mesh.generation = next_generation();
 }

@@ -67,12 +67,21 @@ struct LineMesh {
     // welded face has three distinct corners: weld drops the others.)
     std::vector<glm::uvec2> vertex_ring;
     std::vector<StripCorners> strip_corners;  // per face, the corner order rtsc sees (strip_order.h)
+    CurvatureOptions curvature_options;       // what `curvature` was fitted with, in every pose
     // A number no other build or pose of any line mesh has had: what per-view caches of
     // view-independent lines (ExtractWorkspace) are keyed on.
     uint64_t generation = 0;
 };
 
-[[nodiscard]] LineMesh build_line_mesh(const TriangleMesh& mesh, float crease_angle_deg);
+[[nodiscard]] LineMesh build_line_mesh(const TriangleMesh& mesh, float crease_angle_deg,
+                                       const CurvatureOptions& curvature = {});
+
+// The curvature options of a LineParams::curvature choice.
+inline CurvatureOptions curvature_options(CurvatureFit fit) {
+    CurvatureOptions options;
+    options.trimesh2_ldlt_shortcut = fit == CurvatureFit::Trimesh2;
+    return options;
+}
 
 // Another pose of the same mesh (an animation frame, same vertex numbering): positions,
 // curvature and the vertex arrays follow it; the feature size and the feature edges stay

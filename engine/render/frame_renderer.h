@@ -119,8 +119,10 @@ public:
     void set_materials(const SurfaceMaterials& materials);
 
     // Uploads the mesh for shading and, when lines are wanted, builds and uploads its
-    // line mesh (weld, curvature, feature edges) with `crease_angle_deg`.
-    void set_mesh(const TriangleMesh& mesh, bool with_lines, float crease_angle_deg);
+    // line mesh (weld, curvature, feature edges) with `crease_angle_deg`, its curvature
+    // fitted as `curvature` says (LineParams::curvature).
+    void set_mesh(const TriangleMesh& mesh, bool with_lines, float crease_angle_deg,
+                  CurvatureFit curvature = CurvatureFit::Exact);
 
     // A new pose of the mesh given to set_mesh (same topology: an animation frame). The
     // line mesh keeps its welding and feature size; positions, curvature and its derivative

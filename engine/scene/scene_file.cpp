@@ -191,6 +191,7 @@ LinesDesc read_lines(ObjectReader& parent, const std::filesystem::path& file) {
     }
     if (r.has("sample_spacing")) desc.sample_spacing_px = static_cast<float>(r.number("sample_spacing", 0.25, 64.0));
     if (r.has("contours")) desc.params.contours = contour_mode(r.string_of("contours", {"smooth", "mesh", "auto"}));
+    if (r.has("curvature")) desc.params.curvature = curvature_fit(r.string_of("curvature", {"exact", "trimesh2"}));
     r.reject_unknown();
     return desc;
 }

@@ -177,6 +177,7 @@ std::string scene_json(const SceneDesc& desc, const ViewCamera& camera, const st
         if (lines.hidden_levels > 0 && lines.hidden != HiddenLines::None) l["hidden_levels"] = lines.hidden_levels;
         l["sample_spacing"] = round6(lines.sample_spacing_px);
         if (lines.params.contours != ContourMode::Smooth) l["contours"] = contour_mode_name(lines.params.contours);
+        if (lines.params.curvature != CurvatureFit::Exact) l["curvature"] = curvature_fit_name(lines.params.curvature);
         root["lines"] = l;
         if (!lines.sets.empty()) root["line_sets"] = line_sets(lines.sets, dest_dir);
     }

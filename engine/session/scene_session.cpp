@@ -87,7 +87,7 @@ SceneSession::SceneSession(const Context& ctx, SceneDesc desc, const SessionOpti
         // The line mesh is welded (and its feature size taken) in the pose of the first frame.
         const float start = options.start_seconds;
         renderer_.set_mesh(animated_ ? posed_mesh(start) : scene_.mesh, desc_.lines.enabled,
-                           desc_.lines.params.crease_angle_deg);
+                           desc_.lines.params.crease_angle_deg, desc_.lines.params.curvature);
         if (animated_) posed_at_ = start;
         if (const LineMesh* lines = renderer_.line_mesh())
             renderer_.set_face_groups(face_groups(scene_, scene_.mesh, *lines, options.subdivide));
@@ -150,7 +150,8 @@ void SceneSession::set_lines(const LinesDesc& lines) {
         sets_ = effective_line_sets(desc_.lines);
         throw;
     }
-    if (lines.enabled != before.enabled || lines.params.crease_angle_deg != before.params.crease_angle_deg)
+    if (lines.enabled != before.enabled || lines.params.crease_angle_deg != before.params.crease_angle_deg ||
+        lines.params.curvature != before.params.curvature)
         rebuild_lines();
 }
 
@@ -183,7 +184,7 @@ bool SceneSession::line_set_textured(size_t set) const { return set < textured_.
 void SceneSession::rebuild_lines() {
     if (!has_model()) return;
     renderer_.set_mesh(animated_ ? posed_mesh(posed_at_.value_or(0.0f)) : scene_.mesh, desc_.lines.enabled,
-                       desc_.lines.params.crease_angle_deg);
+                       desc_.lines.params.crease_angle_deg, desc_.lines.params.curvature);
     if (const LineMesh* lines = renderer_.line_mesh())
         renderer_.set_face_groups(face_groups(scene_, scene_.mesh, *lines, options_.subdivide));
 }

@@ -75,6 +75,20 @@ inline const char* contour_mode_name(ContourMode mode) {
     return mode == ContourMode::Mesh ? "mesh" : mode == ContourMode::Auto ? "auto" : "smooth";
 }
 
+// How the per-vertex curvature is fitted (Rusinkiewicz 2004, as trimesh2 does it): the exact
+// least-squares solve of the paper and of older trimesh2 (the default), or the 3×3 solve of
+// newer trimesh2 (Forceflow/trimesh2 on GitHub, which a CMake build of rtsc links today),
+// whose last pivot skips a term (geometry/curvature.h, CurvatureOptions). With the second,
+// every line type lies on the segments of an rtsc built that way; the first is the
+// surface's curvature (docs/research/rtsc-lines.md §5.5, §7.4).
+enum class CurvatureFit : uint32_t { Exact, Trimesh2 };
+
+// "exact", "trimesh2" (scene key lines.curvature, --curvature); the name of a fit.
+inline CurvatureFit curvature_fit(std::string_view name) {
+    return name == "trimesh2" ? CurvatureFit::Trimesh2 : CurvatureFit::Exact;
+}
+inline const char* curvature_fit_name(CurvatureFit fit) { return fit == CurvatureFit::Trimesh2 ? "trimesh2" : "exact"; }
+
 // Thresholds and switches of the feature-line extraction, as rtsc defines them
 // (DESIGN.md "Line extraction as rtsc does it"; docs/research/rtsc-lines.md). Every
 // threshold is rtsc's, scaled by its feature size fs as rtsc scales it.
@@ -99,6 +113,7 @@ struct LineParams {
     float sh_thresh = 0.02f;         // suggestive highlights: −tanθ·DwKr above sh_thresh / fs²
     float ph_thresh = 0.04f;         // principal highlights: (k1² − k2²)·n·v above ph_thresh / fs²
     ContourMode contours = ContourMode::Smooth;
+    CurvatureFit curvature = CurvatureFit::Exact;  // the line mesh's; changing it rebuilds that
 };
 
 // The switch of one type in `p` (const or not).

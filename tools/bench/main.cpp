@@ -159,7 +159,7 @@ int run_lines(const BenchOptions& b) {
         coherence.length_scale = float(slam.height) / 6.0f;
     }
     lw::Timer prepare_timer;
-    renderer.set_mesh(s.scene.mesh, true, lines.params.crease_angle_deg);
+    renderer.set_mesh(s.scene.mesh, true, lines.params.crease_angle_deg, lines.params.curvature);
     std::printf("line mesh (weld, curvature, feature edges, upload): %.0f ms\n", prepare_timer.elapsed_ms());
 
     // The extraction alone in its own submission, wall-clock: checks the timestamps.

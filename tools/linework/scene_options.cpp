@@ -32,6 +32,11 @@ void add_scene_options(CLI::App* cmd, SceneOptions& o, bool offline) {
                     "and back-facing faces (a closed outline of a low-poly model), or auto: mesh on models whose faces are "
                     "coarse (median angle between neighbouring faces over 12°), smooth elsewhere (scene key lines.contours)")
         ->check(CLI::IsMember({"smooth", "mesh", "auto"}));
+    cmd->add_option("--curvature", o.curvature,
+                    "How vertex curvature is fitted: exact (the least-squares fit of Rusinkiewicz 2004; the default) or "
+                    "trimesh2 (the 3x3 solve of newer trimesh2, which an rtsc built from GitHub today links: every line "
+                    "type then lies on that rtsc's lines; scene key lines.curvature)")
+        ->check(CLI::IsMember({"exact", "trimesh2"}));
     cmd->add_option("--slam", o.slam, "Draw silhouettes and suggestive contours as strokes textured by this SLAM (.exr)");
     cmd->add_option("--stroke-width", o.stroke_width, "Width of SLAM strokes in pixels (default 6)")
         ->check(CLI::PositiveNumber);
@@ -100,6 +105,7 @@ SceneDesc scene_from_options(const SceneOptions& o) {
     if (o.samples > 0) desc.style.samples = static_cast<uint32_t>(o.samples);
     if (!o.lines.empty()) choose_line_types(o.lines, desc.lines);
     if (!o.contours.empty()) desc.lines.params.contours = contour_mode(o.contours);
+    if (!o.curvature.empty()) desc.lines.params.curvature = curvature_fit(o.curvature);
     if (!o.slam.empty()) use_slam_strokes(desc.lines, o.slam, o.stroke_width);
     return desc;
 }

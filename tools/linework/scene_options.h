@@ -23,6 +23,7 @@ struct SceneOptions {
     int samples = 0;         // 1, 4 or 8; 0: the scene's
     std::string lines;  // --lines TYPE,TYPE,...: the types drawn (empty: the scene's)
     std::string contours;  // --contours smooth|mesh|auto (empty: the scene's)
+    std::string curvature;  // --curvature exact|trimesh2 (empty: the scene's)
     std::string slam;
     float stroke_width = 6.0f;
     std::string param;
