@@ -66,6 +66,9 @@ void write_fixtures(const fs::path& tmp) {
     write(tmp / "badsize.json", R"({"model": ")" + spot + R"(", "size": [0, 10]})");
     write(tmp / "badsamples.json", R"({"model": ")" + spot + R"(", "samples": 2})");
     write(tmp / "setsuffix.json", R"({"model": ")" + spot + R"(", "line_sets": [{"name": "rim-hidden"}]})");
+    write(tmp / "sets.json", R"({"model": ")" + spot + R"(", "line_sets": [{"name": "rim"}]})");
+    write(tmp / "sethidden.json",
+          R"({"model": ")" + spot + R"(", "lines": {"hidden": "dashed"}, "line_sets": [{"name": "rim"}]})");
     write(tmp / "badcolor.json", R"({"model": ")" + spot + R"(", "background": "#ff88"})");
     write(tmp / "past.obj", "v 0 0 0\nv 1 0 0\nf 1 2 9\n");
     write(tmp / "nan.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n");

@@ -155,23 +155,37 @@ TEST(OcclusionCounter, CountsEachSurfaceOnce) {
     EXPECT_EQ(counter.surfaces_in_front({0, 0, 5}, {0, 0, -1}, kNoFace, false), 3u);
 }
 
-// "qi" and "hidden_levels" read back from a saved scene; bad values name the key.
+// "qi" and "hidden_levels" read back from a saved scene; bad values name the key; the
+// shorthand's hidden-line keys are refused beside line sets (which draw their own).
 TEST(OcclusionLevelKeys, ReadBackAndRejectBadValues) {
     const auto fs_dir = test::temp_dir();
-    const SceneDesc desc = parse_scene_json(
-        R"({"model": "m.glb", "lines": {"hidden": "faint", "hidden_levels": 2},
-            "line_sets": [{"name": "first", "select": {"types": ["crease"], "qi": [1, 1]}}]})",
-        fs_dir / "in.json");
+    const std::string set = R"("line_sets": [{"name": "first", "select": {"types": ["crease"], "qi": [1, 1]}}])";
+    const SceneDesc desc = parse_scene_json(R"({"model": "m.glb", )" + set + "}", fs_dir / "in.json");
     ASSERT_TRUE(desc.lines.sets[0].select.qi.has_value());
     EXPECT_EQ(*desc.lines.sets[0].select.qi, (LevelRange{1, 1}));
-    EXPECT_EQ(desc.lines.hidden_levels, 2u);
-    const SceneDesc back = parse_scene_json(scene_json(desc, ViewCamera{}, fs_dir), fs_dir / "out.json");
-    EXPECT_EQ(back.lines.sets[0].select.qi, desc.lines.sets[0].select.qi);
-    EXPECT_EQ(back.lines.hidden_levels, 2u);
-    // The viewer can turn hidden lines off with levels still set: the scene it saves reads back.
-    SceneDesc off = desc;
+    EXPECT_EQ(parse_scene_json(scene_json(desc, ViewCamera{}, fs_dir), fs_dir / "out.json").lines.sets[0].select.qi,
+              desc.lines.sets[0].select.qi);
+    const SceneDesc shorthand =
+        parse_scene_json(R"({"model": "m.glb", "lines": {"hidden": "faint", "hidden_levels": 2}})", fs_dir / "s.json");
+    EXPECT_EQ(shorthand.lines.hidden_levels, 2u);
+    EXPECT_EQ(parse_scene_json(scene_json(shorthand, ViewCamera{}, fs_dir), fs_dir / "s2.json").lines.hidden_levels, 2u);
+    try {
+        (void)parse_scene_json(R"({"model": "m.glb", "lines": {"hidden": "faint", "hidden_levels": 2}, )" + set + "}",
+                               fs_dir / "both.json");
+        ADD_FAILURE() << "hidden lines of the shorthand beside line sets: no error";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("both.json: lines.hidden: styles the hidden lines"), std::string::npos)
+            << e.what();
+    }
+    // The viewer can turn hidden lines off with levels still set, or set them beside line sets
+    // (where they do nothing): the scenes it saves read back.
+    SceneDesc off = shorthand;
     off.lines.hidden = HiddenLines::None;
     EXPECT_NO_THROW((void)parse_scene_json(scene_json(off, ViewCamera{}, fs_dir), fs_dir / "off.json"));
+    SceneDesc beside = desc;
+    beside.lines.hidden = HiddenLines::Dashed;
+    beside.lines.hidden_levels = 1;
+    EXPECT_NO_THROW((void)parse_scene_json(scene_json(beside, ViewCamera{}, fs_dir), fs_dir / "beside.json"));
     const auto error_of = [&](const std::string& select) {
         try {
             (void)parse_scene_json(R"({"model": "m.glb", "line_sets": [{"name": "a", "select": )" + select + "}]}",

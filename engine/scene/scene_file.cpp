@@ -187,7 +187,8 @@ LinesDesc read_lines(ObjectReader& parent, const std::filesystem::path& file) {
         if (n != std::floor(n)) r.fail_key("hidden_levels", "expected a whole number of surfaces (0: all hidden lines)");
         desc.hidden_levels = uint32_t(n);
         if (n > 0 && desc.hidden == HiddenLines::None)
-            r.fail_key("hidden_levels", "hidden lines are not drawn (\"hidden\" is \"none\"): set it to \"dashed\" or \"faint\"");
+            r.fail_key("hidden_levels", "hidden lines are not drawn (\"hidden\" is \"none\"): set it to \"dashed\" or "
+                                        "\"faint\", or remove \"hidden_levels\" (null in Session.configure)");
     }
     if (r.has("sample_spacing")) desc.sample_spacing_px = static_cast<float>(r.number("sample_spacing", 0.25, 64.0));
     if (r.has("contours")) desc.params.contours = contour_mode(r.string_of("contours", {"smooth", "mesh", "auto"}));
@@ -360,6 +361,10 @@ SceneDesc parse_scene_json(const std::string& text, const std::filesystem::path&
     if (r.has("line_sets")) {
         if (!scene.lines.enabled) r.fail_key("line_sets", "cannot be combined with \"lines\": false");
         scene.lines.sets = read_line_sets(r, source);
+        // "hidden" and "hidden_levels" style the shorthand's lines; a set draws hidden lines
+        // itself, so beside "line_sets" they would change nothing.
+        if (scene.lines.hidden != HiddenLines::None || scene.lines.hidden_levels > 0)
+            r.fail_key("lines.hidden", std::string(kHiddenBesideLineSets));
     }
     r.reject_unknown();
     return scene;

@@ -71,6 +71,13 @@ struct SceneDesc {
 // A scene of one model with every default.
 [[nodiscard]] SceneDesc scene_for_model(const std::filesystem::path& model);
 
+// Why hidden-line settings of "lines" (scene keys, --hidden) are refused beside "line_sets":
+// they style the shorthand's lines only, and a set draws its hidden lines itself.
+inline constexpr const char* kHiddenBesideLineSets =
+    "styles the hidden lines of the \"lines\" shorthand only; with \"line_sets\" a set draws hidden lines "
+    "itself (\"select\": {\"visibility\": \"hidden\"} or {\"qi\": [1, 1]}, with a style such as "
+    "\"dashes\": [6, 4])";
+
 // True when the path names a model (by extension: .gltf, .glb, .obj, .ply) rather than a scene file.
 [[nodiscard]] bool is_model_path(const std::filesystem::path& path);
 

@@ -172,9 +172,12 @@ std::string scene_json(const SceneDesc& desc, const ViewCamera& camera, const st
             if (type == LineType::Crease) entry["angle"] = round6(lines.params.crease_angle_deg);
             l[line_type_name(type)] = entry;
         }
-        l["hidden"] = lines.hidden == HiddenLines::Dashed ? "dashed" : lines.hidden == HiddenLines::Faint ? "faint" : "none";
-        // (Kept only where hidden lines are drawn: the reader rejects levels without them.)
-        if (lines.hidden_levels > 0 && lines.hidden != HiddenLines::None) l["hidden_levels"] = lines.hidden_levels;
+        // Hidden-line settings style the shorthand's lines only (the reader refuses them beside
+        // line sets), and levels only where hidden lines are drawn.
+        if (lines.sets.empty()) {
+            l["hidden"] = lines.hidden == HiddenLines::Dashed ? "dashed" : lines.hidden == HiddenLines::Faint ? "faint" : "none";
+            if (lines.hidden_levels > 0 && lines.hidden != HiddenLines::None) l["hidden_levels"] = lines.hidden_levels;
+        }
         l["sample_spacing"] = round6(lines.sample_spacing_px);
         if (lines.params.contours != ContourMode::Smooth) l["contours"] = contour_mode_name(lines.params.contours);
         if (lines.params.curvature != CurvatureFit::Exact) l["curvature"] = curvature_fit_name(lines.params.curvature);

@@ -88,7 +88,8 @@ int main(int argc, char** argv) {
     } catch (const CLI::CallForVersion& e) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
-        app.exit(e);
+        // As every other error: one line with the tool's prefix (CLI11's own print has none).
+        std::fprintf(stderr, "linework: error: %s\nRun with --help for more information.\n", e.what());
         return 2;
     }
 

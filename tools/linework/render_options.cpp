@@ -1,6 +1,7 @@
 #include "render_options.h"
 
 #include <algorithm>
+#include <charconv>
 
 #include "commands.h"
 
@@ -23,9 +24,18 @@ void add_frame_options(CLI::App* cmd, RenderOptions& o) {
     cmd->add_option("--hidden", o.hidden, "Hidden lines: none (default), dashed or faint")
         ->check(CLI::IsMember({"none", "dashed", "faint"}));
     cmd->add_option("--hidden-levels", o.hidden_levels,
-                    "With --hidden: only hidden lines behind at most N surfaces (1: the first hidden level), counted "
-                    "exactly by casting a ray per hidden sample (scene key lines.hidden_levels)")
-        ->check(CLI::Range(1, 1000));
+                    "With --hidden: only hidden lines behind at most N surfaces (1: the first hidden level; 0, the "
+                    "default: all), counted exactly by casting a ray per hidden sample (scene key lines.hidden_levels)")
+        ->check(CLI::Validator(
+            [](const std::string& text) -> std::string {
+                int n = -1;
+                const char* end = text.data() + text.size();
+                const auto [at, problem] = std::from_chars(text.data(), end, n);
+                if (problem != std::errc() || at != end || n < 0 || n > 1000)
+                    return "expected a whole number of surfaces, 0 to 1000 (0: all hidden lines), got \"" + text + "\"";
+                return {};
+            },
+            "INT in [0 - 1000]"));
     cmd->add_option("--orbit", o.orbit, "Turn the camera DEG degrees about the bounding-box centre over the frames");
     cmd->add_option("--dump-paths", o.dump_paths,
                     "Write DIR/frame_NNNN.json per frame: visible paths, their line set, (ρ, φ), level and samples");
@@ -42,14 +52,16 @@ void apply_frame_overrides(const RenderOptions& o, SceneDesc& desc) {
         desc.style.shading = o.shading == "flat" ? Shading::Flat : o.shading == "unlit" ? Shading::Unlit : Shading::Toon;
     }
     if (o.lines_only && o.no_lines) throw usage_error("--lines-only and --no-lines leave nothing to draw");
-    if (!o.scene.lines.empty() && o.no_lines) throw usage_error("--lines chooses line types, --no-lines draws none: give one");
+    if (o.scene.lines && o.no_lines) throw usage_error("--lines chooses line types, --no-lines draws none: give one");
     if (o.lines_only) desc.style.draw_surface = false;
     if (o.no_lines) desc.lines.enabled = false;
     if (o.no_materials) desc.style.materials = false;
+    if (!desc.lines.sets.empty() && ((!o.hidden.empty() && o.hidden != "none") || o.hidden_levels.value_or(0) > 0))
+        throw usage_error(std::string(o.hidden_levels ? "--hidden-levels " : "--hidden ") + kHiddenBesideLineSets);
     if (!o.hidden.empty())
         desc.lines.hidden = o.hidden == "dashed" ? HiddenLines::Dashed : o.hidden == "faint" ? HiddenLines::Faint : HiddenLines::None;
     if (o.hidden_levels) {
-        if (desc.lines.hidden == HiddenLines::None)
+        if (*o.hidden_levels > 0 && desc.lines.hidden == HiddenLines::None)
             throw usage_error("--hidden-levels: hidden lines are not drawn (add --hidden dashed or --hidden faint)");
         desc.lines.hidden_levels = uint32_t(*o.hidden_levels);
     }

@@ -73,6 +73,7 @@ void choose_line_types(const std::string& list, LinesDesc& lines) {
     if (!lines.sets.empty())
         throw usage_error("--lines chooses the types of a scene without \"line_sets\"; this scene selects them in its line "
                           "sets (\"select\": {\"types\": [...]})");
+    if (list.empty()) throw usage_error("--lines: no line types given (" + line_type_names() + "; --no-lines draws none)");
     std::string unknown;
     const std::optional<uint32_t> types = line_types_from_list(list, unknown);
     if (!types) throw usage_error("--lines: unknown line type \"" + unknown + "\" (" + line_type_names() + ")");
@@ -103,7 +104,7 @@ SceneDesc scene_from_options(const SceneOptions& o) {
         desc.style.transparent = false;
     }
     if (o.samples > 0) desc.style.samples = static_cast<uint32_t>(o.samples);
-    if (!o.lines.empty()) choose_line_types(o.lines, desc.lines);
+    if (o.lines) choose_line_types(*o.lines, desc.lines);
     if (!o.contours.empty()) desc.lines.params.contours = contour_mode(o.contours);
     if (!o.curvature.empty()) desc.lines.params.curvature = curvature_fit(o.curvature);
     if (!o.slam.empty()) use_slam_strokes(desc.lines, o.slam, o.stroke_width);

@@ -21,7 +21,7 @@ struct SceneOptions {
     std::string size;
     std::string background;  // a colour, "transparent", or empty: the scene's
     int samples = 0;         // 1, 4 or 8; 0: the scene's
-    std::string lines;  // --lines TYPE,TYPE,...: the types drawn (empty: the scene's)
+    std::optional<std::string> lines;  // --lines TYPE,TYPE,...: the types drawn (none: the scene's)
     std::string contours;  // --contours smooth|mesh|auto (empty: the scene's)
     std::string curvature;  // --curvature exact|trimesh2 (empty: the scene's)
     std::string slam;

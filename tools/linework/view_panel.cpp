@@ -139,7 +139,9 @@ bool apply_key(ViewerState& s, int key) {
             }
             break;
         }
-        case GLFW_KEY_H: s.desc.lines.hidden = HiddenLines((int(s.desc.lines.hidden) + 1) % 3); break;
+        case GLFW_KEY_H:  // (line sets draw their hidden lines themselves)
+            if (s.desc.lines.sets.empty()) s.desc.lines.hidden = HiddenLines((int(s.desc.lines.hidden) + 1) % 3);
+            break;
         case GLFW_KEY_R: s.camera = s.home; break;
         case GLFW_KEY_Q: case GLFW_KEY_ESCAPE: s.quit = true; break;
         case GLFW_KEY_SPACE:
@@ -223,8 +225,11 @@ void draw_panel(ViewerState& s) {
         if (ImGui::IsItemDeactivatedAfterEdit()) s.crease_changed = true;
         ImGui::SliderFloat("sample spacing px", &lines.sample_spacing_px, 0.5f, 16.0f, "%.1f");
         int hidden = int(lines.hidden);
-        if (ImGui::Combo("hidden (h)", &hidden, "none\0dashed\0faint\0")) lines.hidden = HiddenLines(hidden);
-        if (lines.hidden != HiddenLines::None) {
+        if (!lines.sets.empty())
+            ImGui::TextDisabled("hidden lines: each line set's own");
+        else if (ImGui::Combo("hidden (h)", &hidden, "none\0dashed\0faint\0"))
+            lines.hidden = HiddenLines(hidden);
+        if (lines.sets.empty() && lines.hidden != HiddenLines::None) {
             // Levels are counted by a ray per hidden sample (lines/occlusion.h): tens of ms a frame.
             int levels = int(lines.hidden_levels);
             if (ImGui::SliderInt("hidden levels (0: all)", &levels, 0, 8)) lines.hidden_levels = uint32_t(levels);
