@@ -189,7 +189,8 @@ TEST(LineSets, BadKeysNameThemselves) {
 }
 
 TEST(LineSets, SelectByMaterialAndModel) {
-    // The milk truck has several materials; a set that selects one sees only its faces.
+    // The milk truck has several materials; a set that selects one sees only its faces, one
+    // that names a model or material the scene lacks is refused (it would select nothing).
     SceneDesc desc = scene_for_model(test::data_dir() / "models/CesiumMilkTruck/CesiumMilkTruck.glb");
     desc.width = 320;
     desc.height = 240;
@@ -198,7 +199,7 @@ TEST(LineSets, SelectByMaterialAndModel) {
     const std::string material = probe.models[0].materials[0].name;
     desc.lines.sets = {LineSetDesc{.name = "all"},
                        LineSetDesc{.name = "one", .select = {.materials = {material}}},
-                       LineSetDesc{.name = "none", .select = {.models = {"other.glb"}}}};
+                       LineSetDesc{.name = "truck", .select = {.models = {"CesiumMilkTruck.glb"}}}};
     Context ctx({.device = {DeviceChoice::Kind::Cpu}, .validation = true});
     {
         SceneSession session(ctx, desc);
@@ -206,7 +207,21 @@ TEST(LineSets, SelectByMaterialAndModel) {
         ASSERT_EQ(frame.sets.size(), 3u);
         EXPECT_GT(frame.sets[0].paths.size(), frame.sets[1].paths.size());
         EXPECT_GT(frame.sets[1].paths.size(), 0u) << material;
-        EXPECT_TRUE(frame.sets[2].paths.empty());
+        EXPECT_EQ(frame.sets[2].paths.size(), frame.sets[0].paths.size());
+        for (const auto& [models, materials] : {std::pair{std::vector<std::string>{"other.glb"}, std::vector<std::string>{}},
+                                                std::pair{std::vector<std::string>{}, std::vector<std::string>{"Nope"}}}) {
+            LinesDesc lines = desc.lines;
+            lines.sets[2].select = {.models = models, .materials = materials};
+            try {
+                session.set_lines(lines);
+                ADD_FAILURE() << "a selection of nothing: no error";
+            } catch (const Error& e) {
+                const std::string key = models.empty() ? "materials: \"Nope\"" : "models: \"other.glb\"";
+                EXPECT_NE(std::string(e.what()).find("line_sets[2].select." + key + " is none of the scene's"),
+                          std::string::npos) << e.what();
+            }
+        }
+        EXPECT_EQ(session.frame({.outputs = {.color = false}}).sets[2].paths.size(), frame.sets[2].paths.size());
     }
     EXPECT_TRUE(ctx.validation_messages().empty());
 }

@@ -108,7 +108,37 @@ std::optional<T> already_read(const std::string& file, std::string LineSetStyle:
 
 }  // namespace
 
+namespace {
+
+// A set that names a model or material the scene does not have would select nothing, quietly:
+// refused, naming the set, the key and what the scene has.
+void check_line_set_groups(const std::vector<LineSetDesc>& sets, const LoadedScene& scene, const std::string& source) {
+    std::vector<std::string> models, materials;
+    for (const Model& model : scene.models) {
+        models.push_back(model.path.filename().string());
+        for (const Material& material : model.materials) materials.push_back(material.name);
+    }
+    const auto check = [&](size_t index, const char* key, const std::vector<std::string>& names,
+                           const std::vector<std::string>& have) {
+        for (const std::string& name : names) {
+            if (std::find(have.begin(), have.end(), name) != have.end()) continue;
+            std::string list;
+            for (const std::string& h : have)
+                if (list.find("\"" + h + "\"") == std::string::npos) list += (list.empty() ? "\"" : ", \"") + h + "\"";
+            throw Error(source + ": line_sets[" + std::to_string(index) + "].select." + key + ": \"" + name +
+                        "\" is none of the scene's " + key + " (" + (list.empty() ? "it has none" : list) + ")");
+        }
+    };
+    for (size_t i = 0; i < sets.size(); ++i) {
+        check(i, "models", sets[i].select.models, models);
+        check(i, "materials", sets[i].select.materials, materials);
+    }
+}
+
+}  // namespace
+
 void SceneSession::load_line_styles() {
+    if (has_model()) check_line_set_groups(desc_.lines.sets, scene_, desc_.source.empty() ? "scene" : desc_.source.string());
     if (options_.length_scale > 0.0f) {
         desc_.lines.length_scale = options_.length_scale;
         for (LineSetDesc& set : desc_.lines.sets) set.coherence.length_scale = options_.length_scale;
