@@ -38,7 +38,10 @@ void add_frame_options(CLI::App* cmd, RenderOptions& o) {
             "INT in [0 - 1000]"));
     cmd->add_option("--orbit", o.orbit, "Turn the camera DEG degrees about the bounding-box centre over the frames");
     cmd->add_option("--dump-paths", o.dump_paths,
-                    "Write DIR/frame_NNNN.json per frame: visible paths, their line set, (ρ, φ), level and samples");
+                    "Write DIR/frame_NNNN.json per frame: visible paths, their line set, (ρ, φ), level and samples. "
+                    "The dump needs every line set parameterized, which drops fragments under --min-stroke-length "
+                    "and splits paths where the parameterization does: plain lines then draw as parameterized ones do, "
+                    "a little differently from a render without --dump-paths");
 }
 
 void apply_frame_overrides(const RenderOptions& o, SceneDesc& desc) {
