@@ -74,49 +74,58 @@ OcclusionCounter::~OcclusionCounter() = default;
 OcclusionCounter::OcclusionCounter(OcclusionCounter&&) noexcept = default;
 OcclusionCounter& OcclusionCounter::operator=(OcclusionCounter&&) noexcept = default;
 
-bool OcclusionCounter::empty() const { return !index_; }
+bool OcclusionCounter::empty() const { return !index_ || !index_->scene; }
 
 void OcclusionCounter::set_mesh(const LineMesh& mesh) {
-    if (index_ && generation_ == mesh.generation && mesh.generation != 0) return;
-    auto index = std::make_unique<Index>();
+    if (!empty() && generation_ == mesh.generation && mesh.generation != 0) return;
+    // The device is started once and kept; each new pose gets a new scene (an animation
+    // asks for one a frame).
+    if (!index_) index_ = std::make_unique<Index>();
+    Index& index = *index_;
+    if (index.scene) rtcReleaseScene(index.scene);
+    index.scene = nullptr;
+    generation_ = 0;
     const WeldedMesh& m = mesh.mesh;
-    index->faces = m.faces;
-    index->scene = rtcNewScene(index->device);
-    check(index->device, "rtcNewScene");
+    index.faces = m.faces;
+    std::unique_ptr<RTCSceneTy, void (*)(RTCScene)> scene(rtcNewScene(index.device), rtcReleaseScene);
+    check(index.device, "rtcNewScene");
     // Robust: watertight triangle tests, so that a ray through an edge is not let through
     // between its two triangles.
-    rtcSetSceneFlags(index->scene, RTC_SCENE_FLAG_ROBUST);
-    rtcSetSceneBuildQuality(index->scene, RTC_BUILD_QUALITY_MEDIUM);
+    rtcSetSceneFlags(scene.get(), RTC_SCENE_FLAG_ROBUST);
+    rtcSetSceneBuildQuality(scene.get(), RTC_BUILD_QUALITY_MEDIUM);
     // Released when this function leaves (the scene keeps its own reference once attached).
     const std::unique_ptr<RTCGeometryTy, void (*)(RTCGeometry)> owned(
-        rtcNewGeometry(index->device, RTC_GEOMETRY_TYPE_TRIANGLE), rtcReleaseGeometry);
-    check(index->device, "rtcNewGeometry");
+        rtcNewGeometry(index.device, RTC_GEOMETRY_TYPE_TRIANGLE), rtcReleaseGeometry);
+    check(index.device, "rtcNewGeometry");
     RTCGeometry geometry = owned.get();
     // Buffers Embree allocates (padded as its SIMD loads need) and we fill.
     auto* positions = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
                                                                   3 * sizeof(float), m.positions.size()));
     auto* triangles = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
                                                                      3 * sizeof(uint32_t), m.faces.size()));
-    check(index->device, "rtcSetNewGeometryBuffer");
+    check(index.device, "rtcSetNewGeometryBuffer");
     for (size_t v = 0; v < m.positions.size(); ++v)
         for (int c = 0; c < 3; ++c) positions[3 * v + size_t(c)] = m.positions[v][c];
     for (size_t f = 0; f < m.faces.size(); ++f)
         for (int c = 0; c < 3; ++c) triangles[3 * f + size_t(c)] = m.faces[f][c];
     rtcSetGeometryIntersectFilterFunction(geometry, record_hit);
     rtcCommitGeometry(geometry);
-    rtcAttachGeometry(index->scene, geometry);
-    rtcCommitScene(index->scene);
-    check(index->device, "rtcCommitScene");
-    index_ = std::move(index);
+    rtcAttachGeometry(scene.get(), geometry);
+    rtcCommitScene(scene.get());
+    check(index.device, "rtcCommitScene");
+    index.scene = scene.release();
     generation_ = mesh.generation;
 }
 
 uint32_t OcclusionCounter::surfaces_in_front(const glm::vec3& eye, const glm::vec3& point, uint32_t face,
                                              bool contour) const {
-    if (!index_) return 0;
+    if (empty()) return 0;
     const glm::vec3 d = point - eye;
     if (d == glm::vec3(0.0f)) return 0;
-    std::vector<float> along;  // hit distances as fractions of the way (the ray's direction is the whole way)
+    // Hit distances as fractions of the way (the ray's direction is the whole way); kept per
+    // thread, as tens of thousands of rays a frame would each allocate it otherwise.
+    thread_local std::vector<float> along;
+    along.clear();
     HitContext hits{.context = {},
                     .faces = &index_->faces,
                     .own = contour && face < index_->faces.size() ? index_->faces[face] : glm::uvec3(~0u),
