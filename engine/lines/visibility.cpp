@@ -95,9 +95,9 @@ void split_into_runs(const LinePath& path, size_t index, const CameraMatrices& c
     std::vector<ScreenSample> samples = resample(path, camera, depth, spacing);
     if (samples.empty()) return;
     std::vector<uint32_t> level(samples.size());
+    const bool contour = path.type == LineType::Silhouette;
     for (size_t i = 0; i < samples.size(); ++i) {
         if (tester.visible(samples[i].pixel, samples[i].depth)) continue;
-        const bool contour = path.type == LineType::Silhouette;
         level[i] = levels ? std::max(1u, levels->surfaces_in_front(eye, samples[i].position, samples[i].face, contour)) : 1u;
     }
 

@@ -292,10 +292,11 @@ Frame FrameRenderer::finish() {
         frame.timings.chain_ms = chain.elapsed_ms();
         Timer visibility;
         const DepthImage depth{int(target.width), int(target.height), depth_pixels, in.camera.znear, in.camera.zfar};
-        frame.screen_paths = compute_visibility(frame.paths, in.camera, depth, {.sample_spacing_px = in.lines.sample_spacing_px},
-                                                slot.levels ? &slot.occlusion : nullptr);
+        const OcclusionCounter* levels = slot.levels ? &slot.occlusion : nullptr;
+        frame.screen_paths =
+            compute_visibility(frame.paths, in.camera, depth, {.sample_spacing_px = in.lines.sample_spacing_px}, levels);
         frame.timings.visibility_ms = visibility.elapsed_ms();
-        prepare_sets(frame, slot.sets, in.lines, in.camera, depth, slot.levels ? &slot.occlusion : nullptr, coherence,
+        prepare_sets(frame, slot.sets, in.lines, in.camera, depth, levels, coherence,
                      slot.positions ? *slot.positions : line_mesh_->mesh.positions, in.outputs.draw ? &strokes : nullptr);
     }
 

@@ -106,10 +106,6 @@ std::optional<T> already_read(const std::string& file, std::string LineSetStyle:
     return std::nullopt;
 }
 
-}  // namespace
-
-namespace {
-
 // A set that names a model or material the scene does not have would select nothing, quietly:
 // refused, naming the set, the key and what the scene has.
 void check_line_set_groups(const std::vector<LineSetDesc>& sets, const LoadedScene& scene, const std::string& source) {
@@ -118,13 +114,16 @@ void check_line_set_groups(const std::vector<LineSetDesc>& sets, const LoadedSce
         models.push_back(model.path.filename().string());
         for (const Material& material : model.materials) materials.push_back(material.name);
     }
+    for (std::vector<std::string>* names : {&models, &materials}) {  // sorted, each name once
+        std::sort(names->begin(), names->end());
+        names->erase(std::unique(names->begin(), names->end()), names->end());
+    }
     const auto check = [&](size_t index, const char* key, const std::vector<std::string>& names,
                            const std::vector<std::string>& have) {
         for (const std::string& name : names) {
-            if (std::find(have.begin(), have.end(), name) != have.end()) continue;
+            if (std::binary_search(have.begin(), have.end(), name)) continue;
             std::string list;
-            for (const std::string& h : have)
-                if (list.find("\"" + h + "\"") == std::string::npos) list += (list.empty() ? "\"" : ", \"") + h + "\"";
+            for (const std::string& h : have) list += (list.empty() ? "\"" : ", \"") + h + "\"";
             throw Error(source + ": line_sets[" + std::to_string(index) + "].select." + key + ": \"" + name +
                         "\" is none of the scene's " + key + " (" + (list.empty() ? "it has none" : list) + ")");
         }

@@ -46,7 +46,6 @@ ScreenPath empty_like(const ScreenPath& path) {
         .type = path.type, .closed = false, .visible = path.visible, .qi = path.qi, .source = path.source, .samples = {}};
 }
 
-
 float closing_length(const ScreenPath& path) {
     const auto& s = path.samples;
     return path.closed && s.size() > 1 ? glm::length(s.front().pixel - s.back().pixel) : 0.0f;

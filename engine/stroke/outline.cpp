@@ -117,10 +117,6 @@ private:
     std::vector<std::vector<std::pair<uint32_t, uint32_t>>> buckets_;
 };
 
-}  // namespace
-
-namespace {
-
 // The outlines of runs of one occlusion level; runs in no enclosing drawing are kept as they are.
 void trace_level(const std::vector<ScreenPath>& runs, float tolerance, std::vector<ScreenPath>& out) {
     glm::vec2 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());

@@ -56,14 +56,16 @@ void apply_frame_overrides(const RenderOptions& o, SceneDesc& desc) {
     }
     if (o.lines_only && o.no_lines) throw usage_error("--lines-only and --no-lines leave nothing to draw");
     if (o.scene.lines && o.no_lines) throw usage_error("--lines chooses line types, --no-lines draws none: give one");
-    if (o.no_lines && ((!o.hidden.empty() && o.hidden != "none") || o.hidden_levels.value_or(0) > 0))
-        throw usage_error(std::string(o.hidden_levels.value_or(0) > 0 ? "--hidden-levels" : "--hidden") +
-                          " styles hidden lines, --no-lines draws none: give one");
+    // The flag that asks for hidden lines to be drawn, if any.
+    const char* hidden_flag = o.hidden_levels.value_or(0) > 0 ? "--hidden-levels"
+                              : !o.hidden.empty() && o.hidden != "none" ? "--hidden"
+                                                                        : nullptr;
+    if (o.no_lines && hidden_flag)
+        throw usage_error(std::string(hidden_flag) + " styles hidden lines, --no-lines draws none: give one");
     if (o.lines_only) desc.style.draw_surface = false;
     if (o.no_lines) desc.lines.enabled = false;
     if (o.no_materials) desc.style.materials = false;
-    if (!desc.lines.sets.empty() && ((!o.hidden.empty() && o.hidden != "none") || o.hidden_levels.value_or(0) > 0))
-        throw usage_error(std::string(o.hidden_levels ? "--hidden-levels " : "--hidden ") + kHiddenBesideLineSets);
+    if (!desc.lines.sets.empty() && hidden_flag) throw usage_error(std::string(hidden_flag) + " " + kHiddenBesideLineSets);
     if (!o.hidden.empty())
         desc.lines.hidden = o.hidden == "dashed" ? HiddenLines::Dashed : o.hidden == "faint" ? HiddenLines::Faint : HiddenLines::None;
     if (o.hidden_levels) {

@@ -224,15 +224,16 @@ void draw_panel(ViewerState& s) {
         ImGui::SliderFloat("crease angle", &lines.params.crease_angle_deg, 1.0f, 179.0f, "%.0f°");
         if (ImGui::IsItemDeactivatedAfterEdit()) s.crease_changed = true;
         ImGui::SliderFloat("sample spacing px", &lines.sample_spacing_px, 0.5f, 16.0f, "%.1f");
-        int hidden = int(lines.hidden);
-        if (!lines.sets.empty())
+        if (!lines.sets.empty()) {
             ImGui::TextDisabled("hidden lines: each line set's own");
-        else if (ImGui::Combo("hidden (h)", &hidden, "none\0dashed\0faint\0"))
-            lines.hidden = HiddenLines(hidden);
-        if (lines.sets.empty() && lines.hidden != HiddenLines::None) {
-            // Levels are counted by a ray per hidden sample (lines/occlusion.h): tens of ms a frame.
-            int levels = int(lines.hidden_levels);
-            if (ImGui::SliderInt("hidden levels (0: all)", &levels, 0, 8)) lines.hidden_levels = uint32_t(levels);
+        } else {
+            int hidden = int(lines.hidden);
+            if (ImGui::Combo("hidden (h)", &hidden, "none\0dashed\0faint\0")) lines.hidden = HiddenLines(hidden);
+            if (lines.hidden != HiddenLines::None) {
+                // Levels are counted by a ray per hidden sample (lines/occlusion.h): tens of ms a frame.
+                int levels = int(lines.hidden_levels);
+                if (ImGui::SliderInt("hidden levels (0: all)", &levels, 0, 8)) lines.hidden_levels = uint32_t(levels);
+            }
         }
     }
     if (ImGui::CollapsingHeader("Strokes", ImGuiTreeNodeFlags_DefaultOpen)) {
