@@ -381,7 +381,7 @@ void extract_lines_reference(const LineMesh& lm, const glm::vec3& eye, const Lin
     if (threads == 1) {  // straight into the output
         vertex_passes(lm.vertex_arrays, eye, params, thresholds, 0, nv, ws);
         optional_vertex_pass(lm, eye, params, thresholds, 0, nv, ws);
-        if (params.apparent_ridges) apparent_derivative(lm, ws.ndotv.data(), 0, nv, ws.apparent);
+        if (params.apparent_ridges) apparent_derivative(lm, ws.ndotv.data(), thresholds.ar_thresh, 0, nv, ws.apparent);
         out.clear();
         for (size_t b = 0; b < blocks; ++b) face_block(b, out);
         return;
@@ -398,7 +398,7 @@ void extract_lines_reference(const LineMesh& lm, const glm::vec3& eye, const Lin
         optional_vertex_pass(lm, eye, params, thresholds, first, last, ws);
         sync.arrive_and_wait();
         if (params.apparent_ridges) {  // reads the neighbours' q1
-            apparent_derivative(lm, ws.ndotv.data(), first, last, ws.apparent);
+            apparent_derivative(lm, ws.ndotv.data(), thresholds.ar_thresh, first, last, ws.apparent);
             sync.arrive_and_wait();
         }
         for (size_t b = next_block.fetch_add(1); b < blocks; b = next_block.fetch_add(1)) {

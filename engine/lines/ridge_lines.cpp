@@ -178,7 +178,8 @@ __attribute__((target_clones("avx2", "default"))) void apparent_curvature(const 
     }
 }
 
-void apparent_derivative(const LineMesh& lm, const float* ndotv, size_t begin, size_t end, ApparentArrays& inout) {
+void apparent_derivative(const LineMesh& lm, const float* ndotv, float ar_thresh, size_t begin, size_t end,
+                         ApparentArrays& inout) {
     const SurfaceCurvature& c = lm.curvature;
     const auto& positions = lm.mesh.positions;
     const float* q1_at = inout.q1.data();
@@ -187,15 +188,26 @@ void apparent_derivative(const LineMesh& lm, const float* ndotv, size_t begin, s
     // computed first with no branch, then only the crossed ones are read on.
     constexpr uint32_t kChunk = 8;
     for (size_t i = begin; i < end; ++i) {
-        const glm::vec3 v0 = positions[i];
         const float q1 = q1_at[i];
+        // A face is read only if one of its corners has q1 over the threshold
+        // (`apparent_ridge_candidate`): where no face around this vertex has, nothing reads
+        // the derivative, and most vertices of a model are such (rtsc computes it anyway).
+        const uint32_t first = lm.vertex_face_offsets[i], last = lm.vertex_face_offsets[i + 1];
+        bool read = !(q1 <= ar_thresh) && first != last;
+        for (uint32_t j = first; j < last && !read; ++j)
+            read = !(q1_at[lm.vertex_ring[j].x] <= ar_thresh) || !(q1_at[lm.vertex_ring[j].y] <= ar_thresh);
+        if (!read) {
+            inout.dt1q1[i] = 0.0f;
+            inout.corners[i] = {glm::vec3(0.0f), q1};
+            continue;
+        }
+        const glm::vec3 v0 = positions[i];
         const glm::vec3 t1 = inout.t1x[i] * c.pdir1[i] + inout.t1y[i] * c.pdir2[i];
         const glm::vec3 t2 = glm::cross(c.normals[i], t1);
         const float v0_t2 = dot3(v0, t2);
         float derivative = 0.0f;
         int estimates = 0;
-        const uint32_t last = lm.vertex_face_offsets[i + 1];
-        for (uint32_t j0 = lm.vertex_face_offsets[i]; j0 < last && estimates < 2; j0 += kChunk) {
+        for (uint32_t j0 = first; j0 < last && estimates < 2; j0 += kChunk) {
             const uint32_t n = std::min(kChunk, last - j0);
             float weight[kChunk];
             uint32_t crossed = 0;

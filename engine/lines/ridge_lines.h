@@ -67,10 +67,12 @@ struct ApparentArrays {
 // Apparent ridges need two vertex passes: q1 and t1 of vertices [begin, end) first, then
 // (once every vertex has them) D_t1 q1 from each vertex's first two neighbouring faces
 // where the line along t1 crosses the opposite edge, in face order (rtsc's compute_Dt1q1),
-// and the vertex's `ApparentCorner`.
+// and the vertex's `ApparentCorner`; zero where no face around the vertex has a corner with
+// q1 over `ar_thresh`, as no face test reads it there.
 void apparent_curvature(const LineMesh& mesh, const glm::vec3& eye, const float* ndotv, size_t begin, size_t end,
                         ApparentArrays& out);
-void apparent_derivative(const LineMesh& mesh, const float* ndotv, size_t begin, size_t end, ApparentArrays& inout);
+void apparent_derivative(const LineMesh& mesh, const float* ndotv, float ar_thresh, size_t begin, size_t end,
+                         ApparentArrays& inout);
 
 // rtsc's back-face culling: all three corners have n·v ≤ 0.
 inline bool back_facing(const float* ndotv, const glm::uvec3& corners) {
