@@ -12,6 +12,7 @@
 #include "geometry/welded_mesh.h"
 #include "scene/animation.h"
 #include "scene/camera_path.h"
+#include "scene/scene.h"
 #include "scene/scene_file.h"
 
 namespace lw {
@@ -392,8 +393,9 @@ TEST(SceneFileAnimation, ReadsAnimationAndCameraKeys) {
             "camera": {"eye": [0, -5, 0], "target": [0, 0, 0], "up": [0, 0, 1], "orbit": 90}})",
         "x.json");
     EXPECT_TRUE(walk.animation.play);
-    EXPECT_EQ(walk.animation.clip.kind, ClipChoice::Kind::Name);
-    EXPECT_EQ(walk.animation.clip.name, "Walk");
+    ASSERT_EQ(walk.animation.clips.size(), 1u);
+    EXPECT_EQ(walk.animation.clips[0].kind, ClipChoice::Kind::Name);
+    EXPECT_EQ(walk.animation.clips[0].name, "Walk");
     EXPECT_EQ(walk.animation.fps, 30.0f);
     ASSERT_TRUE(walk.animation.frames.has_value());
     EXPECT_EQ(walk.animation.frames->first, 2);
@@ -404,10 +406,10 @@ TEST(SceneFileAnimation, ReadsAnimationAndCameraKeys) {
     EXPECT_EQ(walk.camera_path.orbit.axis, glm::vec3(0, 0, 1));  // about the camera's up
 
     const SceneDesc indexed = parse_scene_json(R"({"model": "a.glb", "animation": {"clip": 3}})", "x.json");
-    EXPECT_EQ(indexed.animation.clip.kind, ClipChoice::Kind::Index);
-    EXPECT_EQ(indexed.animation.clip.index, 3);
+    EXPECT_EQ(indexed.animation.clips.at(0).kind, ClipChoice::Kind::Index);
+    EXPECT_EQ(indexed.animation.clips.at(0).index, 3);
     EXPECT_FALSE(indexed.animation.frames.has_value());
-    EXPECT_EQ(parse_scene_json(R"({"model": "a.glb", "animation": {"clip": "all"}})", "x.json").animation.clip.kind,
+    EXPECT_EQ(parse_scene_json(R"({"model": "a.glb", "animation": {"clip": "all"}})", "x.json").animation.clips.at(0).kind,
               ClipChoice::Kind::All);
 
     // An orbit alone turns the framing camera about +y.
@@ -437,9 +439,11 @@ TEST(SceneFileAnimation, ErrorsNameTheKey) {
     starts(scene_error(R"({"model": "a.glb", "animation": {"clip": 0, "speed": 2}})"),
            "scenes/x.json: animation.speed: unknown key (known here: clip, fps, frames)");
     EXPECT_EQ(scene_error(R"({"model": "a.glb", "animation": {"clip": true}})"),
-              "scenes/x.json: animation.clip: expected a clip name, a clip index or \"all\", got boolean true");
+              "scenes/x.json: animation.clip: expected a clip name, a clip index or \"all\" (or an array of them, one per model), "
+              "got boolean true");
     EXPECT_EQ(scene_error(R"({"model": "a.glb", "animation": {"clip": 1.5}})"),
-              "scenes/x.json: animation.clip: expected a clip name, a clip index or \"all\", got number 1.5");
+              "scenes/x.json: animation.clip: expected a clip name, a clip index or \"all\" (or an array of them, one per model), "
+              "got number 1.5");
     starts(scene_error(R"({"model": "a.glb", "animation": {"clip": -1}})"), "scenes/x.json: animation.clip: clip index");
     starts(scene_error(R"({"model": "a.glb", "animation": {"clip": ""}})"), "scenes/x.json: animation.clip: empty name");
     EXPECT_EQ(scene_error(R"({"model": "a.glb", "animation": {"fps": 0}})"),
@@ -475,6 +479,56 @@ TEST(SceneFileAnimation, ErrorsNameTheKey) {
     EXPECT_EQ(scene_error(R"({"model": "a.glb", "camera": {"eye": [0,0,1], "target": [0,0,0]}, "camera_path": {"keyframes": [)" +
                           key0 + "]}}"),
               "scenes/x.json: camera_path: cannot be combined with camera (the keyframes set the camera)");
+}
+
+// Models seldom share clip names: "clip" takes one choice per model, and one name for a
+// scene of several models names the model that lacks it and the way out.
+TEST(SceneFileAnimation, ClipPerModel) {
+    const std::filesystem::path fox = models_dir() / "Fox/Fox.glb", man = models_dir() / "CesiumMan/CesiumMan.glb";
+    const std::string both = R"({"model": [")" + fox.string() + R"(", ")" + man.string() + R"("], "animation": )";
+    const SceneDesc per_model = parse_scene_json(both + R"({"clip": ["Walk", 0]}})", "scenes/x.json");
+    ASSERT_EQ(per_model.animation.clips.size(), 2u);
+    EXPECT_EQ(clip_of_model(per_model.animation, 0).name, "Walk");
+    EXPECT_EQ(clip_of_model(per_model.animation, 1).index, 0);
+    const LoadedScene scene = load_scene(per_model);
+    // Both move: each model's triangles differ between two times.
+    const TriangleMesh a = pose_scene(scene, 0.2f), b = pose_scene(scene, 0.6f);
+    ASSERT_EQ(a.positions.size(), b.positions.size());
+    const size_t fox_vertices = flatten_posed(scene.models[0], rest_pose(scene.models[0])).positions.size();
+    float fox_moved = 0.0f, man_moved = 0.0f;
+    for (size_t i = 0; i < a.positions.size(); ++i) {
+        float& moved = i < fox_vertices ? fox_moved : man_moved;
+        moved = std::max(moved, glm::length(a.positions[i] - b.positions[i]));
+    }
+    EXPECT_GT(fox_moved, 1.0f);     // the Fox is about 100 units long
+    EXPECT_GT(man_moved, 0.01f);    // CesiumMan about 1.5
+    // The longer of the two clips: CesiumMan's 2 s, the Fox's Walk 0.71 s.
+    EXPECT_EQ(animation_duration(scene), std::max(clip_duration(scene.models[0], find_clip(scene.models[0], "Walk")),
+                                                  clip_duration(scene.models[1], 0)));
+
+    const std::string one = error_of([&] { (void)load_scene(parse_scene_json(both + R"({"clip": "Walk"}})", "scenes/x.json")); });
+    EXPECT_EQ(one.rfind("scenes/x.json: animation.clip: one clip for every model of the scene, and ", 0), 0u) << one;
+    EXPECT_NE(one.find("CesiumMan.glb: no animation clip named \"Walk\""), std::string::npos) << one;
+    EXPECT_NE(one.find("; give one per model, in \"model\" order"), std::string::npos) << one;
+    EXPECT_EQ(scene_error(R"({"model": ["a.glb", "b.glb"], "animation": {"clip": ["Walk"]}})"),
+              "scenes/x.json: animation.clip: 1 clips for 2 models (one per model, in \"model\" order, or one for all)");
+    EXPECT_EQ(scene_error(R"({"model": "a.glb", "animation": {"clip": []}})"),
+              "scenes/x.json: animation.clip: an empty array (give one clip per model, or one for all)");
+    EXPECT_EQ(scene_error(R"({"model": ["a.glb", "b.glb"], "animation": {"clip": ["Walk", true]}})"),
+              "scenes/x.json: animation.clip[1]: expected a clip name, a clip index or \"all\", got boolean true");
+
+    // Written back as it was read.
+    const SceneDesc again = parse_scene_json(scene_json(per_model, scene.camera, "/"), "scenes/y.json");
+    ASSERT_EQ(again.animation.clips.size(), 2u);
+    EXPECT_EQ(again.animation.clips[0].name, "Walk");
+    EXPECT_EQ(again.animation.clips[1].kind, ClipChoice::Kind::Index);
+}
+
+// A model is drawn where its file places it: a second copy would lie on the first.
+TEST(SceneFileAnimation, AModelListedTwiceIsRefused) {
+    EXPECT_EQ(scene_error(R"({"model": ["a.glb", "b.glb", "./a.glb"]})"),
+              "scenes/x.json: model: \"./a.glb\" is listed twice (items 0 and 2); a scene draws each model where its file "
+              "places it, so a second copy would lie on the first");
 }
 
 }  // namespace

@@ -70,6 +70,9 @@ void write_fixtures(const fs::path& tmp) {
     write(tmp / "sethidden.json",
           R"({"model": ")" + spot + R"(", "lines": {"hidden": "dashed"}, "line_sets": [{"name": "rim"}]})");
     write(tmp / "badcolor.json", R"({"model": ")" + spot + R"(", "background": "#ff88"})");
+    write(tmp / "twice.json", R"({"model": [")" + spot + R"(", ")" + spot + R"("]})");
+    const std::string fox = (data / "models/Fox/Fox.glb").string(), man = (data / "models/CesiumMan/CesiumMan.glb").string();
+    write(tmp / "oneclip.json", R"({"model": [")" + fox + R"(", ")" + man + R"("], "animation": {"clip": "Walk"}})");
     write(tmp / "past.obj", "v 0 0 0\nv 1 0 0\nf 1 2 9\n");
     write(tmp / "nan.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n");
     write(tmp / "words.obj", "hello world\n");

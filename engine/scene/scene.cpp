@@ -34,6 +34,31 @@ void append_model_mesh(TriangleMesh& mesh, const TriangleMesh& part, uint32_t mo
     mesh.face_model.resize(mesh.triangle_count(), model);
 }
 
+namespace {
+
+// Every model has the clips "animation" asks of it, checked once here rather than at the
+// first posed frame. One clip for a scene of several models asks each of them for it.
+void check_clips(const LoadedScene& scene) {
+    const AnimationDesc& animation = scene.desc.animation;
+    if (!animation.play) return;
+    const std::string where = (scene.desc.source.empty() ? std::string() : scene.desc.source.string() + ": ") +
+                              "animation.clip: ";
+    if (animation.clips.size() != 1 && animation.clips.size() != scene.models.size())
+        throw Error(where + std::to_string(animation.clips.size()) + " clips for " +
+                    std::to_string(scene.models.size()) + " models (one per model, in \"model\" order, or one for all)");
+    for (size_t m = 0; m < scene.models.size(); ++m) {
+        try {
+            (void)select_clips(scene.models[m], clip_of_model(animation, m));
+        } catch (const Error& e) {
+            if (animation.clips.size() != 1 || scene.models.size() == 1) throw;
+            throw Error(where + "one clip for every model of the scene, and " + e.what() +
+                        "; give one per model, in \"model\" order (\"all\" plays every clip of its model)");
+        }
+    }
+}
+
+}  // namespace
+
 LoadedScene load_scene(const SceneDesc& desc) {
     std::vector<Model> models;
     for (const auto& path : desc.models) models.push_back(load_model(path));
@@ -53,6 +78,7 @@ LoadedScene load_scene(const SceneDesc& desc, std::vector<Model> models) {
         scene.model_triangles.push_back(scene.mesh.triangle_count() - before);
     }
     if (scene.mesh.indices.empty()) throw Error(scene.models.front().path.string() + ": no triangles to draw");
+    check_clips(scene);
     scene.bounds = compute_bounds(scene.mesh.positions);
     const float aspect = float(desc.width) / float(desc.height);
     scene.camera = desc.camera ? *desc.camera : frame_bounds(scene.bounds, aspect, desc.fov_deg);
@@ -64,7 +90,7 @@ TriangleMesh pose_scene(const LoadedScene& scene, float seconds) {
     for (size_t m = 0; m < scene.models.size(); ++m) {
         const Model& model = scene.models[m];
         const std::vector<int> clips =
-            scene.desc.animation.play ? select_clips(model, scene.desc.animation.clip) : std::vector<int>{};
+            scene.desc.animation.play ? select_clips(model, clip_of_model(scene.desc.animation, m)) : std::vector<int>{};
         append_model_mesh(mesh, flatten_posed(model, clips.empty() ? rest_pose(model) : evaluate_pose(model, clips, seconds)),
                           uint32_t(m));
     }
@@ -74,8 +100,10 @@ TriangleMesh pose_scene(const LoadedScene& scene, float seconds) {
 float animation_duration(const LoadedScene& scene) {
     if (!scene.desc.animation.play) return 0.0f;
     float duration = 0.0f;
-    for (const Model& model : scene.models)
-        duration = std::max(duration, clips_duration(model, select_clips(model, scene.desc.animation.clip)));
+    for (size_t m = 0; m < scene.models.size(); ++m) {
+        const Model& model = scene.models[m];
+        duration = std::max(duration, clips_duration(model, select_clips(model, clip_of_model(scene.desc.animation, m))));
+    }
     return duration;
 }
 

@@ -92,26 +92,44 @@ CameraPath read_camera_path(ObjectReader& parent, const std::filesystem::path& f
     return path;
 }
 
-// "animation": {"clip": name | index | "all", "fps": 24, "frames": [first, last]}, all
-// optional. Clip names are checked against the model when it is loaded (select_clips).
-AnimationDesc read_animation(ObjectReader& parent, const std::filesystem::path& file) {
+// One "clip" value: a name, an index or "all". `key` names it in errors ("clip" or "clip[1]").
+ClipChoice read_clip(ObjectReader& r, const json& v, const std::string& key) {
+    ClipChoice clip;
+    if (v.is_string()) {
+        clip.name = v.get<std::string>();
+        if (clip.name.empty()) r.fail_key(key, "empty name (an unnamed clip is chosen by its index)");
+        clip.kind = clip.name == "all" ? ClipChoice::Kind::All : ClipChoice::Kind::Name;
+    } else if (v.is_number_integer()) {
+        const long long index = v.get<long long>();
+        if (index < 0 || index > 1000000) r.fail_key(key, "clip index must be 0 or more, got " + v.dump());
+        clip.kind = ClipChoice::Kind::Index;
+        clip.index = static_cast<int>(index);
+    } else {
+        r.fail_key(key, "expected a clip name, a clip index or \"all\"" + std::string(key == "clip" ? " (or an array of them, one per model)" : "") +
+                            ", got " + std::string(v.type_name()) + " " + v.dump());
+    }
+    return clip;
+}
+
+// "animation": {"clip": name | index | "all" | [one per model], "fps": 24, "frames":
+// [first, last]}, all optional. Clip names are checked against the models when they are
+// loaded (load_scene), the array's length against "model" here.
+AnimationDesc read_animation(ObjectReader& parent, const std::filesystem::path& file, size_t models) {
     ObjectReader r(parent.at("animation"), "animation", file);
     AnimationDesc desc;
     desc.play = true;
     if (r.has("clip")) {
         const json& v = r.at("clip");
-        if (v.is_string()) {
-            desc.clip.name = v.get<std::string>();
-            if (desc.clip.name.empty()) r.fail_key("clip", "empty name (an unnamed clip is chosen by its index)");
-            desc.clip.kind = desc.clip.name == "all" ? ClipChoice::Kind::All : ClipChoice::Kind::Name;
-        } else if (v.is_number_integer()) {
-            const long long index = v.get<long long>();
-            if (index < 0 || index > 1000000) r.fail_key("clip", "clip index must be 0 or more, got " + v.dump());
-            desc.clip.kind = ClipChoice::Kind::Index;
-            desc.clip.index = static_cast<int>(index);
+        if (v.is_array()) {
+            if (v.empty()) r.fail_key("clip", "an empty array (give one clip per model, or one for all)");
+            if (models > 0 && v.size() != models)
+                r.fail_key("clip", std::to_string(v.size()) + " clips for " + std::to_string(models) +
+                                       " models (one per model, in \"model\" order, or one for all)");
+            desc.clips.clear();
+            for (size_t i = 0; i < v.size(); ++i)
+                desc.clips.push_back(read_clip(r, v[i], "clip[" + std::to_string(i) + "]"));
         } else {
-            r.fail_key("clip", "expected a clip name, a clip index or \"all\", got " + std::string(v.type_name()) +
-                                   " " + v.dump());
+            desc.clips = {read_clip(r, v, "clip")};
         }
     }
     if (r.has("fps")) {
@@ -317,7 +335,16 @@ SceneDesc parse_scene_json(const std::string& text, const std::filesystem::path&
         for (const auto& name : names) {
             std::filesystem::path p(name);
             if (!is_model_path(p)) r.fail_key("model", "\"" + name + "\" is not a model file (.gltf, .glb, .obj or .ply)");
-            scene.models.push_back(scene_detail::resolve_against(source, name));
+            const std::filesystem::path resolved = scene_detail::resolve_against(source, name);
+            // A model is drawn where its file places it: a second copy would lie on the first,
+            // its faces fused with the first's into edges of four faces, which break its lines.
+            for (size_t i = 0; i < scene.models.size(); ++i)
+                if (std::filesystem::weakly_canonical(scene.models[i]) == std::filesystem::weakly_canonical(resolved))
+                    r.fail_key("model", "\"" + name + "\" is listed twice (items " + std::to_string(i) + " and " +
+                                            std::to_string(scene.models.size()) +
+                                            "); a scene draws each model where its file places it, so a second copy "
+                                            "would lie on the first");
+            scene.models.push_back(resolved);
         }
     }
     if (r.has("size")) {
@@ -335,7 +362,7 @@ SceneDesc parse_scene_json(const std::string& text, const std::filesystem::path&
         if (r.has("camera")) r.fail_key("camera_path", "cannot be combined with camera (the keyframes set the camera)");
         scene.camera_path = read_camera_path(r, source, scene.fov_deg);
     }
-    if (r.has("animation")) scene.animation = read_animation(r, source);
+    if (r.has("animation")) scene.animation = read_animation(r, source, scene.models.size());
     if (r.has("shading")) {
         const std::string s = r.string_of("shading", {"flat", "toon", "unlit", "none"});
         if (s == "flat") scene.style.shading = Shading::Flat;

@@ -26,13 +26,20 @@ namespace lw {
 // The timeline of an image sequence ("animation" in the scene file).
 struct AnimationDesc {
     bool play = false;                 // the file has "animation": clips play; else the rest pose
-    ClipChoice clip;                   // "clip": a name, an index or "all" (the default); the
-                                       // string "all" means every clip, even if one is named so
+    // "clip": a name, an index or "all" (the default; the string "all" means every clip,
+    // even if one is named so) for every model, or an array of them, one per model in
+    // "model" order (models seldom share clip names). One entry here applies to every model.
+    std::vector<ClipChoice> clips{ClipChoice{}};
     float fps = 24.0f;                 // "fps": frame f is at f / fps seconds, for the clips and
                                        // camera keyframes alike
     std::optional<FrameRange> frames;  // "frames": [first, last], inclusive; absent: the
                                        // renderer's default (frame 0 to the clips' duration)
 };
+
+// The clips model number `model` plays (`animation.clips`: one for all, or one per model).
+inline const ClipChoice& clip_of_model(const AnimationDesc& animation, size_t model) {
+    return animation.clips.size() == 1 ? animation.clips.front() : animation.clips.at(model);
+}
 
 struct SceneDesc {
     std::filesystem::path source;                // the scene file; empty for a bare model

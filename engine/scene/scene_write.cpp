@@ -186,8 +186,19 @@ std::string scene_json(const SceneDesc& desc, const ViewCamera& camera, const st
     }
     if (desc.animation.play) {
         json a{{"fps", round6(desc.animation.fps)}};
-        if (desc.animation.clip.kind == ClipChoice::Kind::Name) a["clip"] = desc.animation.clip.name;
-        if (desc.animation.clip.kind == ClipChoice::Kind::Index) a["clip"] = desc.animation.clip.index;
+        const auto clip_json = [](const ClipChoice& clip) -> json {
+            switch (clip.kind) {
+                case ClipChoice::Kind::Name: return clip.name;
+                case ClipChoice::Kind::Index: return clip.index;
+                case ClipChoice::Kind::All: break;
+            }
+            return "all";
+        };
+        if (desc.animation.clips.size() == 1) {
+            if (desc.animation.clips.front().kind != ClipChoice::Kind::All) a["clip"] = clip_json(desc.animation.clips.front());
+        } else {
+            for (const ClipChoice& clip : desc.animation.clips) a["clip"].push_back(clip_json(clip));
+        }
         if (desc.animation.frames) a["frames"] = json::array({desc.animation.frames->first, desc.animation.frames->last});
         root["animation"] = a;
     }
