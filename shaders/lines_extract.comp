@@ -31,6 +31,8 @@ layout(std430, binding = 7) readonly buffer FaceNeighbors { ivec4 face_neighbors
 LINES_PUSH_CONSTANTS
 
 void append(LineSegment s) {
+    s.other_face = NO_FACE;
+    s.pad = 0u;
     uint index = atomicAdd(out_buf.count, 1u);
     if (index < out_buf.capacity) out_buf.segments[index] = s;
 }
@@ -81,8 +83,8 @@ void edge_segment(uint f, uvec3 corners, int i, uint type, uint key0, uint key1)
     LineSegment s;
     s.p0 = vec4(vertices[corners[j]].position.xyz, 1.0);
     s.p1 = vec4(vertices[corners[k]].position.xyz, 1.0);
-    s.bary0 = vec4(0.0);
-    s.bary1 = vec4(0.0);
+    s.bary0 = vec3(0.0);
+    s.bary1 = vec3(0.0);
     s.bary0[j] = 1.0;
     s.bary1[k] = 1.0;
     s.face = f;
@@ -165,8 +167,8 @@ void face_isoline(uint f, uvec3 corners, vec3 val, vec3 num, vec3 den, bool has_
             precise float d = kind == START ? d1 : kind == END ? d2 : (1.0 - z) * d1 + z * d2;
             precise float alpha = fade > 0.0 ? clamp(n / (d * fade + n), 0.0, 1.0) : 1.0;
             precise vec3 bary = kind == START ? b1 : kind == END ? b2 : (1.0 - z) * b1 + z * b2;
-            if (e == 0) { s.p0 = vec4(x, alpha); s.bary0 = vec4(bary, 0.0); }
-            else        { s.p1 = vec4(x, alpha); s.bary1 = vec4(bary, 0.0); }
+            if (e == 0) { s.p0 = vec4(x, alpha); s.bary0 = bary; }
+            else        { s.p1 = vec4(x, alpha); s.bary1 = bary; }
         }
         s.face = f;
         s.type = type;

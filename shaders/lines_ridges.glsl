@@ -79,8 +79,8 @@ void ridge_segment(StripFace sf, int r, vec3 e, vec3 k, float thresh, bool to_ce
     LineSegment s;
     s.p0 = vec4(p01, alpha01);
     s.p1 = vec4(p12, alpha12);
-    s.bary0 = bary01;
-    s.bary1 = bary12;
+    s.bary0 = bary01.xyz;
+    s.bary1 = bary12.xyz;
     s.face = sf.face;
     s.type = type;
     s.key0 = face_edges[sf.face][sf.corner[c]];

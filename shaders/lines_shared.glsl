@@ -3,6 +3,7 @@
 #ifndef LINES_SHARED_GLSL
 #define LINES_SHARED_GLSL
 
+#define NO_FACE 0xffffffffu
 #define LINE_SILHOUETTE 0u
 #define LINE_SUGGESTIVE 1u
 #define LINE_CREASE 2u
@@ -68,8 +69,10 @@ struct ApparentVertex {
 struct LineSegment {
     vec4 p0;     // xyz world, w alpha
     vec4 p1;
-    vec4 bary0;
-    vec4 bary1;
+    vec3 bary0;
+    uint other_face;  // intersection lines (CPU only): the other surface's face; else NO_FACE
+    vec3 bary1;
+    uint pad;
     uint face;
     uint type;
     uint key0;

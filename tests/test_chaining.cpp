@@ -13,8 +13,8 @@ LineSegment segment(glm::vec3 a, glm::vec3 b, uint32_t key0, uint32_t key1, uint
     LineSegment s{};
     s.p0 = glm::vec4(a, 1.0f);
     s.p1 = glm::vec4(b, 1.0f);
-    s.bary0 = glm::vec4(1, 0, 0, 0);
-    s.bary1 = glm::vec4(0, 1, 0, 0);
+    s.bary0 = glm::vec3(1, 0, 0);
+    s.bary1 = glm::vec3(0, 1, 0);
     s.face = face;
     s.type = uint32_t(type);
     s.key0 = key0;

@@ -7,6 +7,7 @@
 #include "lines/chaining.h"
 #include "lines/intersections.h"
 #include "render/frame_renderer.h"
+#include "render/line_sets.h"
 #include "scene/scene.h"
 #include "test_support.h"
 
@@ -88,11 +89,19 @@ TEST(Intersections, TwoSpheresCrossInTheirCircle) {
         expect_circle(segments, kD);
         for (const LineSegment& s : segments) {
             const glm::uvec3 f = lm.mesh.faces[s.face];
-            const auto at = [&](const glm::vec4& b) {
+            const auto at = [&](const glm::vec3& b) {
                 return b.x * lm.mesh.positions[f.x] + b.y * lm.mesh.positions[f.y] + b.z * lm.mesh.positions[f.z];
             };
             EXPECT_LE(glm::length(at(s.bary0) - glm::vec3(s.p0)), 1e-5f);
             EXPECT_LE(glm::length(at(s.bary1) - glm::vec3(s.p1)), 1e-5f);
+            // The other surface's face holds the segment too: both ends on its plane.
+            ASSERT_LT(s.other_face, lm.mesh.faces.size());
+            const glm::uvec3 g = lm.mesh.faces[s.other_face];
+            const glm::vec3 o = lm.mesh.positions[g.x];
+            const glm::vec3 n = glm::normalize(glm::cross(lm.mesh.positions[g.y] - o, lm.mesh.positions[g.z] - o));
+            EXPECT_LE(std::fabs(glm::dot(glm::vec3(s.p0) - o, n)), 1e-5f);
+            EXPECT_LE(std::fabs(glm::dot(glm::vec3(s.p1) - o, n)), 1e-5f);
+            EXPECT_NE(s.other_face, s.face);
         }
     }
 }
@@ -175,6 +184,40 @@ TEST_F(IntersectionFrames, DrawnAndFoundAgainForANewPose) {
         expect_circle(crossing, d);
         EXPECT_FALSE(frame.screen_paths.empty());
     }
+}
+
+// The crossing of two models belongs to both: a line set selecting either model draws all
+// of it (it was the first model's only, the one whose face the segment was filed under).
+TEST_F(IntersectionFrames, ACrossingBelongsToBothModels) {
+    const TriangleMesh mesh = two_spheres(kD, false);
+    const size_t first_model = make_icosphere(kR1, 4).triangle_count();
+    const glm::vec3 eye(0.3f, 0.5f, 4.0f);
+    const ViewCamera view{.eye = eye, .target = glm::vec3(0.0f), .fov_deg = 40.0f};
+    const CameraMatrices camera = camera_matrices(view, 4.0f / 3.0f, compute_bounds(mesh.positions));
+    FrameRenderer renderer(ctx(), 320, 240);
+    renderer.set_mesh(mesh, true, 45.0f);
+    FaceGroups groups{.model_names = {"big.glb", "small.glb"}, .material_names = {"", ""}};
+    for (const uint32_t source : build_line_mesh(mesh, 45.0f).mesh.source_face)
+        groups.face_group.push_back(source < first_model ? 0u : 1u);
+    LinesDesc lines;
+    set_line_types(lines.params, 1u << uint32_t(LineType::Intersection));
+    const Frame frame = renderer.render(camera, eye, SurfaceStyle{}, lines, FrameOutputs{.color = false});
+    ASSERT_FALSE(frame.screen_paths.empty());
+    for (const ScreenPath& run : frame.screen_paths)
+        for (const ScreenSample& sample : run.samples) {
+            ASSERT_NE(sample.other_face, kNoFace);
+            EXPECT_NE(groups.face_group[sample.face], groups.face_group[sample.other_face]);
+        }
+    LineSetDesc set;
+    set.select.types = 1u << uint32_t(LineType::Intersection);
+    set.select.visibility = Visibility::Any;
+    for (const std::string model : {"big.glb", "small.glb"}) {
+        set.select.models = {model};
+        EXPECT_EQ(select_line_set(frame.screen_paths, set, &groups).size(), frame.screen_paths.size()) << model;
+    }
+    set.select.models = {"big.glb"};
+    set.select.materials = {"Glass"};  // neither side's material
+    EXPECT_TRUE(select_line_set(frame.screen_paths, set, &groups).empty());
 }
 
 }  // namespace

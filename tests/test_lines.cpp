@@ -107,6 +107,10 @@ TEST_P(LinesGpuMatchesCpu, SameSegments) {
             ASSERT_EQ(a.face, b.face) << i;
             EXPECT_EQ(a.key0, b.key0) << i;
             EXPECT_EQ(a.key1, b.key1) << i;
+            EXPECT_EQ(a.other_face, kNoFace) << i;  // no extracted type lies on a second surface
+            EXPECT_EQ(b.other_face, kNoFace) << i;
+            EXPECT_LE(glm::length(glm::vec3(a.bary0) - glm::vec3(b.bary0)), 1e-4f) << i;
+            EXPECT_LE(glm::length(glm::vec3(a.bary1) - glm::vec3(b.bary1)), 1e-4f) << i;
             EXPECT_LE(glm::length(glm::vec3(a.p0) - glm::vec3(b.p0)), 1e-4f) << i << " " << line_type_name(LineType(a.type));
             EXPECT_LE(glm::length(glm::vec3(a.p1) - glm::vec3(b.p1)), 1e-4f) << i << " " << line_type_name(LineType(a.type));
             EXPECT_NEAR(a.p0.w, b.p0.w, 1e-4f) << i;

@@ -13,8 +13,8 @@ namespace {
 
 PathVertex endpoint(const LineSegment& s, int end) {
     const glm::vec4& p = end == 0 ? s.p0 : s.p1;
-    const glm::vec4& b = end == 0 ? s.bary0 : s.bary1;
-    return PathVertex{glm::vec3(p), s.face, glm::vec3(b), p.w};
+    const glm::vec3& b = end == 0 ? s.bary0 : s.bary1;
+    return PathVertex{glm::vec3(p), s.face, b, p.w, s.other_face};
 }
 
 uint32_t key_of(const LineSegment& s, int end) { return end == 0 ? s.key0 : s.key1; }

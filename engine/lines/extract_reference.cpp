@@ -136,7 +136,7 @@ void edge_segment(const LineMesh& lm, uint32_t f, int i, LineType type, uint32_t
                   std::vector<LineSegment>& out) {
     const glm::uvec3 corners = lm.mesh.faces[f];
     const int j = (i + 1) % 3, k = (i + 2) % 3;
-    LineSegment& s = out.emplace_back();  // value-initialized: zeros
+    LineSegment& s = out.emplace_back();  // value-initialized: zeros, other_face kNoFace
     s.p0 = glm::vec4(lm.mesh.positions[corners[j]], 1.0f);
     s.p1 = glm::vec4(lm.mesh.positions[corners[k]], 1.0f);
     s.bary0[j] = 1.0f;
@@ -203,12 +203,8 @@ void face_isoline(const LineMesh& lm, uint32_t f, const float* val, const float*
     const glm::vec3 p2 = (1.0f - s_ac) * xa + s_ac * xc;
     // Their barycentric coordinates in the face's own corner order.
     const float ra = 1.0f - s_ab, rc = 1.0f - s_ac;
-    const glm::vec4 bary1 = a == 0 ? glm::vec4(ra, s_ab, 0.0f, 0.0f)
-                            : a == 1 ? glm::vec4(0.0f, ra, s_ab, 0.0f)
-                                     : glm::vec4(s_ab, 0.0f, ra, 0.0f);
-    const glm::vec4 bary2 = a == 0 ? glm::vec4(rc, 0.0f, s_ac, 0.0f)
-                            : a == 1 ? glm::vec4(s_ac, rc, 0.0f, 0.0f)
-                                     : glm::vec4(0.0f, s_ac, rc, 0.0f);
+    const glm::vec3 bary1 = a == 0 ? glm::vec3(ra, s_ab, 0.0f) : a == 1 ? glm::vec3(0.0f, ra, s_ab) : glm::vec3(s_ab, 0.0f, ra);
+    const glm::vec3 bary2 = a == 0 ? glm::vec3(rc, 0.0f, s_ac) : a == 1 ? glm::vec3(s_ac, rc, 0.0f) : glm::vec3(0.0f, s_ac, rc);
 
     // The test at both ends, numerator and denominator interpolated separately.
     const float n1 = (1.0f - s_ab) * num[ia] + s_ab * num[ib];
@@ -233,12 +229,19 @@ void face_isoline(const LineMesh& lm, uint32_t f, const float* val, const float*
         return fade > 0.0f ? std::clamp(n / (d * fade + n), 0.0f, 1.0f) : 1.0f;
     };
     if (valid1 && z1 == 0.0f) {  // the test holds all along (most faces): P1 to P2
-        out.push_back({glm::vec4(p1, alpha(n1, d1)), glm::vec4(p2, alpha(n2, d2)), bary1, bary2, f, uint32_t(type), edge_ab,
-                       edge_ac});
+        out.push_back({.p0 = glm::vec4(p1, alpha(n1, d1)),
+                       .p1 = glm::vec4(p2, alpha(n2, d2)),
+                       .bary0 = bary1,
+                       .bary1 = bary2,
+                       .face = f,
+                       .type = uint32_t(type),
+                       .key0 = edge_ab,
+                       .key1 = edge_ac});
         return;
     }
     struct Point {
-        glm::vec4 position, bary;
+        glm::vec4 position;
+        glm::vec3 bary;
         uint32_t key;
     };
     std::array<Point, 4> points;
@@ -255,7 +258,14 @@ void face_isoline(const LineMesh& lm, uint32_t f, const float* val, const float*
     for (int i = 0; i + 1 < count; i += 2) {
         const Point& from = points[size_t(i)];
         const Point& to = points[size_t(i + 1)];
-        out.push_back({from.position, to.position, from.bary, to.bary, f, uint32_t(type), from.key, to.key});
+        out.push_back({.p0 = from.position,
+                       .p1 = to.position,
+                       .bary0 = from.bary,
+                       .bary1 = to.bary,
+                       .face = f,
+                       .type = uint32_t(type),
+                       .key0 = from.key,
+                       .key1 = to.key});
     }
 }
 

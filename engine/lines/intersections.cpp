@@ -189,8 +189,9 @@ std::vector<LineSegment> find_intersection_lines(const LineMesh& lm, size_t* can
         const Crossing& c = crossings[i];
         out.push_back(LineSegment{.p0 = glm::vec4(glm::vec3(c.p[0]), 1.0f),
                                   .p1 = glm::vec4(glm::vec3(c.p[1]), 1.0f),
-                                  .bary0 = glm::vec4(glm::vec3(c.bary[0]), 0.0f),
-                                  .bary1 = glm::vec4(glm::vec3(c.bary[1]), 0.0f),
+                                  .bary0 = glm::vec3(c.bary[0]),
+                                  .other_face = c.other,
+                                  .bary1 = glm::vec3(c.bary[1]),
                                   .face = c.face,
                                   .type = uint32_t(LineType::Intersection),
                                   .key0 = keys[2 * i],

@@ -79,12 +79,12 @@ void ridge_segment(const LineMesh& lm, const StripFace& sf, int r, const float* 
         const glm::vec3 perp = glm::cross(normal, p01 - p12);
         if (dot3(tmax[a], perp) <= 0.0f || dot3(tmax[b], perp) >= 0.0f || dot3(tmax[c], perp) <= 0.0f) return;
     }
-    glm::vec4 bary01(0.0f), bary12(1.0f / 3.0f, 1.0f / 3.0f, 1.0f / 3.0f, 0.0f);
+    glm::vec3 bary01(0.0f), bary12(1.0f / 3.0f);
     bary01[sf.corner[a]] = w01;
     bary01[sf.corner[b]] = w10;
     uint32_t key12 = kNoKey;  // the centre
     if (!to_center) {
-        bary12 = glm::vec4(0.0f);
+        bary12 = glm::vec3(0.0f);
         bary12[sf.corner[b]] = w12;
         bary12[sf.corner[c]] = w21;
         key12 = uint32_t(lm.mesh.face_edges[sf.face][sf.corner[a]]);  // edge b–c
@@ -94,8 +94,14 @@ void ridge_segment(const LineMesh& lm, const StripFace& sf, int r, const float* 
         alpha01 = k01 > 0.0f ? k01 / (k01 + thresh) : 0.0f;
         alpha12 = k12 > 0.0f ? k12 / (k12 + thresh) : 0.0f;
     }
-    out.push_back({glm::vec4(p01, alpha01), glm::vec4(p12, alpha12), bary01, bary12, sf.face, uint32_t(type),
-                   uint32_t(lm.mesh.face_edges[sf.face][sf.corner[c]]), key12});  // p01 on edge a–b
+    out.push_back({.p0 = glm::vec4(p01, alpha01),
+                   .p1 = glm::vec4(p12, alpha12),
+                   .bary0 = bary01,
+                   .bary1 = bary12,
+                   .face = sf.face,
+                   .type = uint32_t(type),
+                   .key0 = uint32_t(lm.mesh.face_edges[sf.face][sf.corner[c]]),  // p01 on edge a–b
+                   .key1 = key12});
 }
 
 // The crossings of a ridge-like face: an edge "crosses" where the directions of increase

@@ -66,7 +66,8 @@ std::vector<ScreenSample> resample(const LinePath& path, const CameraMatrices& c
                                            .position = glm::mix(a.position, b.position, t),
                                            .face = nearer.face,
                                            .bary = nearer.bary,
-                                           .alpha = glm::mix(a.alpha, b.alpha, t)});
+                                           .alpha = glm::mix(a.alpha, b.alpha, t),
+                                           .other_face = nearer.other_face});
             next_sample += spacing;
             if (length == 0.0f) break;
         }
@@ -75,8 +76,14 @@ std::vector<ScreenSample> resample(const LinePath& path, const CameraMatrices& c
     // The last vertex of an open path, so that paths end where they end.
     if (!path.closed && n > 0 && projected[n - 1].z > 0.0f && (samples.empty() || samples.back().s < s)) {
         const PathVertex& last = path.vertices[n - 1];
-        samples.push_back(ScreenSample{glm::vec2(projected[n - 1]), projected[n - 1].z, s, last.position, last.face,
-                                       last.bary, last.alpha});
+        samples.push_back(ScreenSample{.pixel = glm::vec2(projected[n - 1]),
+                                       .depth = projected[n - 1].z,
+                                       .s = s,
+                                       .position = last.position,
+                                       .face = last.face,
+                                       .bary = last.bary,
+                                       .alpha = last.alpha,
+                                       .other_face = last.other_face});
     }
     return samples;
 }

@@ -48,15 +48,19 @@ namespace {
 bool path_in_groups(const ScreenPath& path, const LineSelection& select, const FaceGroups& groups) {
     // A path lies on the faces of its samples; it belongs where its first sample's face does
     // (runs are cut at visibility changes, not at group boundaries — a path crossing into
-    // another material stays whole).
+    // another material stays whole). An intersection line lies on two surfaces and belongs
+    // to both: the line where a wall meets the floor is the wall's and the floor's.
     if (path.samples.empty()) return false;
-    const uint32_t face = path.samples.front().face;
-    if (face >= groups.face_group.size()) return false;
-    const uint32_t group = groups.face_group[face];
-    auto listed = [](const std::vector<std::string>& list, const std::string& name) {
+    const auto listed = [](const std::vector<std::string>& list, const std::string& name) {
         return list.empty() || std::find(list.begin(), list.end(), name) != list.end();
     };
-    return listed(select.models, groups.model_names[group]) && listed(select.materials, groups.material_names[group]);
+    const auto in_group_of = [&](uint32_t face) {
+        if (face >= groups.face_group.size()) return false;
+        const uint32_t group = groups.face_group[face];
+        return listed(select.models, groups.model_names[group]) && listed(select.materials, groups.material_names[group]);
+    };
+    const ScreenSample& first = path.samples.front();
+    return in_group_of(first.face) || (first.other_face != kNoFace && in_group_of(first.other_face));
 }
 
 }  // namespace

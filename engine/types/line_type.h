@@ -12,6 +12,9 @@
 
 namespace lw {
 
+// No face: of a sample or segment that lies on one surface only (not an intersection line).
+inline constexpr uint32_t kNoFace = 0xffffffffu;
+
 // The first four are drawn by default; the rest are rtsc's other lines, off by default as in
 // rtsc (docs/research/rtsc-lines.md §6). The numbers are shared with the GPU passes
 // (shaders/lines_shared.glsl) and written in path dumps: append, never renumber.

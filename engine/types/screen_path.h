@@ -24,6 +24,8 @@ struct ScreenSample {
     glm::vec3 bary;
     float alpha;         // the fade alpha of the line (suggestive contours fade in)
     float width = 1.0f;  // stroke width multiplier: the per-point widths of vector strokes
+    uint32_t other_face = kNoFace;  // intersection lines: the other surface's face (the
+                                    // line lies on both, and belongs to both's models)
 };
 
 struct ScreenPath {
