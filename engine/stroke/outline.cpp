@@ -5,6 +5,7 @@
 #include <deque>
 #include <limits>
 #include <map>
+#include <optional>
 
 #include "stroke/modifiers.h"
 
@@ -117,26 +118,19 @@ private:
     std::vector<std::vector<std::pair<uint32_t, uint32_t>>> buckets_;
 };
 
-// The outlines of runs of one occlusion level; runs in no enclosing drawing are kept as they are.
-void trace_level(const std::vector<ScreenPath>& runs, float tolerance, std::vector<ScreenPath>& out) {
+// The runs drawn into a grid of half-pixel cells, coarser on drawings over ~2000 × 2000 px
+// (16 million cells at most), lines `tolerance` wide so that gaps up to that close. None
+// (false) for a drawing whose cells would be wider than half the tolerance (runs far off
+// screen) or whose bounds are not finite: it is left as it is.
+bool draw_runs(const std::vector<ScreenPath>& runs, float tolerance, Grid& g) {
     glm::vec2 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
     for (const ScreenPath& r : runs)
         for (const ScreenSample& s : r.samples) lo = glm::min(lo, s.pixel), hi = glm::max(hi, s.pixel);
-    // Half-pixel cells, coarser on drawings over ~2000 × 2000 px (16 million cells at most);
-    // a drawing whose cells would be wider than the tolerance (runs far off screen) is left
-    // as it is.
-    Grid g;
     const float margin = tolerance + 2.0f;
     const double w = double(hi.x) - double(lo.x) + 2.0 * margin, h = double(hi.y) - double(lo.y) + 2.0 * margin;
-    if (!(w > 0.0 && h > 0.0 && std::isfinite(w * h))) {
-        out.insert(out.end(), runs.begin(), runs.end());
-        return;
-    }
+    if (!(w > 0.0 && h > 0.0 && std::isfinite(w * h))) return false;
     g.cell = float(std::max(0.5, std::sqrt(w * h / 16e6)));
-    if (g.cell > 0.5f * tolerance) {
-        out.insert(out.end(), runs.begin(), runs.end());
-        return;
-    }
+    if (g.cell > 0.5f * tolerance) return false;
     g.origin = lo - margin;
     g.width = int(std::ceil(w / g.cell));
     g.height = int(std::ceil(h / g.cell));
@@ -146,7 +140,11 @@ void trace_level(const std::vector<ScreenPath>& runs, float tolerance, std::vect
         for (size_t i = 0; i + 1 < n + (r.closed && n > 2 ? 1 : 0); ++i)
             draw_segment(g, r.samples[i].pixel, r.samples[(i + 1) % n].pixel, 0.5f * tolerance);
     }
-    // The outside: reached from the border without crossing a line.
+    return true;
+}
+
+// The outside: the cells reached from the border without crossing a line.
+void fill_outside(Grid& g) {
     g.outside.assign(g.line.size(), 0);
     std::deque<glm::ivec2> todo;
     for (int x = 0; x < g.width; ++x) todo.insert(todo.end(), {{x, 0}, {x, g.height - 1}});
@@ -160,20 +158,28 @@ void trace_level(const std::vector<ScreenPath>& runs, float tolerance, std::vect
         g.outside[i] = 1;
         todo.insert(todo.end(), {p + glm::ivec2(1, 0), p - glm::ivec2(1, 0), p + glm::ivec2(0, 1), p - glm::ivec2(0, 1)});
     }
-    // The regions the fill does not reach (8-connected), each from its first cell in row
-    // order. One encloses something when it has cells off the lines, at least a
-    // tolerance-wide square of them: a loose run is all line.
-    std::vector<int32_t> region(g.line.size(), -1);
+}
+
+// The regions the fill does not reach (8-connected), each from its first cell in row order.
+// One encloses something when it has cells off the lines, at least a tolerance-wide square
+// of them: a loose run is all line.
+struct Regions {
+    std::vector<int32_t> of_cell;  // -1: outside
     std::vector<glm::ivec2> first_cell;
     std::vector<bool> encloses;
+};
+
+Regions find_regions(const Grid& g, float tolerance) {
+    Regions out;
+    out.of_cell.assign(g.line.size(), -1);
     const size_t min_enclosed = size_t(std::ceil(tolerance * tolerance / (g.cell * g.cell)));
     for (int y = 0; y < g.height; ++y)
         for (int x = 0; x < g.width; ++x) {
-            if (g.outside[g.at(x, y)] || region[g.at(x, y)] >= 0) continue;
-            const auto id = int32_t(first_cell.size());
+            if (g.outside[g.at(x, y)] || out.of_cell[g.at(x, y)] >= 0) continue;
+            const auto id = int32_t(out.first_cell.size());
             size_t enclosed = 0;
             std::deque<glm::ivec2> cells{{x, y}};
-            region[g.at(x, y)] = id;
+            out.of_cell[g.at(x, y)] = id;
             while (!cells.empty()) {
                 const glm::ivec2 p = cells.front();
                 cells.pop_front();
@@ -183,40 +189,57 @@ void trace_level(const std::vector<ScreenPath>& runs, float tolerance, std::vect
                         const glm::ivec2 q = p + glm::ivec2(dx, dy);
                         if (q.x < 0 || q.y < 0 || q.x >= g.width || q.y >= g.height) continue;
                         const size_t i = g.at(q.x, q.y);
-                        if (!g.outside[i] && region[i] < 0) region[i] = id, cells.push_back(q);
+                        if (!g.outside[i] && out.of_cell[i] < 0) out.of_cell[i] = id, cells.push_back(q);
                     }
             }
-            first_cell.push_back({x, y});
-            encloses.push_back(enclosed >= min_enclosed);
+            out.first_cell.push_back({x, y});
+            out.encloses.push_back(enclosed >= min_enclosed);
         }
+    return out;
+}
+
+// The boundary of the region starting at `first_cell`, snapped onto the runs, a sample per
+// pixel of outline or more, with its arc length; fewer than 3 samples: none.
+std::optional<ScreenPath> snapped_outline(const Grid& g, glm::ivec2 first_cell, const SegmentIndex& index,
+                                          const ScreenPath& like) {
+    ScreenPath path{.type = like.type, .closed = true, .visible = like.visible, .qi = like.qi, .source = like.source};
+    for (const glm::ivec2& c : trace_boundary(g, first_cell)) {
+        const ScreenSample s = index.nearest(g.centre(c.x, c.y));
+        if (!path.samples.empty() && glm::distance(s.pixel, path.samples.back().pixel) < 1.0f) continue;
+        path.samples.push_back(s);
+    }
+    if (path.samples.size() < 3) return std::nullopt;
+    float s = 0.0f;
+    for (size_t i = 0; i < path.samples.size(); ++i) {
+        if (i > 0) s += glm::distance(path.samples[i].pixel, path.samples[i - 1].pixel);
+        path.samples[i].s = s;
+    }
+    return path;
+}
+
+// The outlines of runs of one occlusion level; runs in no enclosing drawing are kept as they are.
+void trace_level(const std::vector<ScreenPath>& runs, float tolerance, std::vector<ScreenPath>& out) {
+    Grid g;
+    if (!draw_runs(runs, tolerance, g)) {
+        out.insert(out.end(), runs.begin(), runs.end());
+        return;
+    }
+    fill_outside(g);
+    const Regions regions = find_regions(g, tolerance);
     // Runs whose region encloses nothing stay as they are.
     for (const ScreenPath& r : runs) {
         if (r.samples.empty()) continue;
         const glm::ivec2 c((r.samples.front().pixel - g.origin) / g.cell);
-        const int32_t id = c.x >= 0 && c.y >= 0 && c.x < g.width && c.y < g.height ? region[g.at(c.x, c.y)] : -1;
-        if (id < 0 || !encloses[size_t(id)]) out.push_back(r);
+        const int32_t id = c.x >= 0 && c.y >= 0 && c.x < g.width && c.y < g.height ? regions.of_cell[g.at(c.x, c.y)] : -1;
+        if (id < 0 || !regions.encloses[size_t(id)]) out.push_back(r);
     }
     // Boundary cells lie within half the tolerance and a cell of a run: its nearest segment
     // is in the cell's bucket or the next.
     const SegmentIndex index(runs, g.origin, glm::vec2(g.width, g.height) * g.cell, tolerance + 2.0f * g.cell);
-    for (size_t id = 0; id < first_cell.size(); ++id) {
-        if (!encloses[id]) continue;
-        // Its boundary, snapped onto the runs, a sample per pixel of outline or more.
-        const ScreenPath& any = runs.front();
-        ScreenPath path{.type = any.type, .closed = true, .visible = any.visible, .qi = any.qi, .source = any.source};
-        for (const glm::ivec2& c : trace_boundary(g, first_cell[id])) {
-            const ScreenSample s = index.nearest(g.centre(c.x, c.y));
-            if (!path.samples.empty() && glm::distance(s.pixel, path.samples.back().pixel) < 1.0f) continue;
-            path.samples.push_back(s);
-        }
-        if (path.samples.size() < 3) continue;
-        float s = 0.0f;
-        for (size_t i = 0; i < path.samples.size(); ++i) {
-            if (i > 0) s += glm::distance(path.samples[i].pixel, path.samples[i - 1].pixel);
-            path.samples[i].s = s;
-        }
-        out.push_back(std::move(path));
-    }
+    for (size_t id = 0; id < regions.first_cell.size(); ++id)
+        if (regions.encloses[id])
+            if (std::optional<ScreenPath> path = snapped_outline(g, regions.first_cell[id], index, runs.front()))
+                out.push_back(std::move(*path));
 }
 
 }  // namespace
