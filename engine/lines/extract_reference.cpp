@@ -113,9 +113,9 @@ void optional_vertex_pass(const LineMesh& lm, const glm::vec3& eye, const LinePa
 void prepare_ridge_cache(const LineMesh& lm, const LineParams& params, int kind, float thresh, size_t block_faces,
                          ExtractWorkspace::RidgeCache& cache) {
     const ExtractWorkspace::RidgeCache::Key key{lm.generation, thresh, params.fade};
-    cache.use = lm.generation != 0 && key == cache.filled;  // 0: a line mesh not built by build_line_mesh
+    cache.use = holds_pose(cache.filled.generation, lm) && key == cache.filled;
     if (cache.use) return;
-    if (lm.generation == 0 || !(key == cache.seen)) {
+    if (!holds_pose(cache.seen.generation, lm) || !(key == cache.seen)) {
         cache.seen = key;
         return;
     }
@@ -372,8 +372,7 @@ void extract_lines_reference(const LineMesh& lm, const glm::vec3& eye, const Lin
         ws.principal_along.resize(nv);
         ws.principal_strength.resize(nv);
         ws.principal_flags.resize(nv);
-        if (lm.generation == 0 || ws.principal_generation != lm.generation ||
-            ws.principal_shapes.size() != lm.mesh.faces.size()) {
+        if (!holds_pose(ws.principal_generation, lm) || ws.principal_shapes.size() != lm.mesh.faces.size()) {
             ws.principal_shapes = principal_highlight_shapes(lm);
             ws.principal_generation = lm.generation;
         }

@@ -201,7 +201,7 @@ std::vector<LineSegment> find_intersection_lines(const LineMesh& lm, size_t* can
 }
 
 const std::vector<LineSegment>& intersection_lines(const LineMesh& mesh, IntersectionCache& cache) {
-    if (cache.generation != mesh.generation || mesh.generation == 0) {
+    if (!holds_pose(cache.generation, mesh)) {
         cache.segments = find_intersection_lines(mesh, &cache.candidate_pairs);
         cache.generation = mesh.generation;
     }

@@ -77,7 +77,7 @@ OcclusionCounter& OcclusionCounter::operator=(OcclusionCounter&&) noexcept = def
 bool OcclusionCounter::empty() const { return !index_ || !index_->scene; }
 
 void OcclusionCounter::set_mesh(const LineMesh& mesh) {
-    if (!empty() && generation_ == mesh.generation && mesh.generation != 0) return;
+    if (!empty() && holds_pose(generation_, mesh)) return;
     // The device is started once and kept; each new pose gets a new scene (an animation
     // asks for one a frame).
     if (!index_) index_ = std::make_unique<Index>();
