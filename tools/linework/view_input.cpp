@@ -46,7 +46,7 @@ std::string numbered(const std::string& dir, const char* stem, int n, const char
 }  // namespace
 
 void save_view_file(ViewerState& s, VkExtent2D extent) {
-    const std::string path = s.save_path == "*" ? numbered(s.output_dir, "linework_view", s.saves_done, "json") : s.save_path;
+    const std::string path = s.save_path == kNumberedFile ? numbered(s.output_dir, "linework_view", s.saves_done, "json") : s.save_path;
     SceneDesc saved = s.desc;
     saved.width = int(extent.width);
     saved.height = int(extent.height);
@@ -61,7 +61,7 @@ void save_view_file(ViewerState& s, VkExtent2D extent) {
 
 void write_screenshot(ViewerState& s, const ImageRGBA8& shot) {
     const std::string path =
-        s.screenshot_path == "*" ? numbered(s.output_dir, "linework_view", s.screenshots_taken, "png") : s.screenshot_path;
+        s.screenshot_path == kNumberedFile ? numbered(s.output_dir, "linework_view", s.screenshots_taken, "png") : s.screenshot_path;
     write_png(path, shot);
     ++s.screenshots_taken;
     s.message = "wrote " + path;

@@ -41,9 +41,9 @@ void play_script(ScriptPlayer& player, Window& window, Input& input, float heigh
 void apply_edits(ViewerState& s, SceneSession& session);
 
 // The current view as a scene file (F5, the panel, the script's `save`): s.save_path, or a
-// numbered file in the output folder for "*".
+// numbered file in the output folder for kNumberedFile.
 void save_view_file(ViewerState& s, VkExtent2D extent);
-// A screenshot to s.screenshot_path (or a numbered file for "*").
+// A screenshot to s.screenshot_path (or a numbered file for kNumberedFile).
 void write_screenshot(ViewerState& s, const ImageRGBA8& shot);
 
 // Frame times and per-stage sums over the timed frames of --benchmark.

@@ -156,8 +156,8 @@ bool apply_key(ViewerState& s, int key) {
         case GLFW_KEY_EQUAL: s.camera.zoom(1.1f); break;
         case GLFW_KEY_MINUS: s.camera.zoom(1.0f / 1.1f); break;
         case GLFW_KEY_F1: s.panel = !s.panel; break;
-        case GLFW_KEY_F5: s.save_path = "*"; break;        // a numbered file in the output folder
-        case GLFW_KEY_F12: s.screenshot_path = "*"; break;
+        case GLFW_KEY_F5: s.save_path = kNumberedFile; break;
+        case GLFW_KEY_F12: s.screenshot_path = kNumberedFile; break;
         default: return false;
     }
     return true;
@@ -267,9 +267,9 @@ void draw_panel(ViewerState& s) {
             s.time_changed = true;
         }
     }
-    if (ImGui::Button("screenshot (F12)")) s.screenshot_path = "*";
+    if (ImGui::Button("screenshot (F12)")) s.screenshot_path = kNumberedFile;
     ImGui::SameLine();
-    if (ImGui::Button("save view (F5)")) s.save_path = "*";
+    if (ImGui::Button("save view (F5)")) s.save_path = kNumberedFile;
     ImGui::SameLine();
     if (ImGui::Button("reset camera (r)")) s.camera = s.home;
     if (!s.message.empty()) ImGui::TextWrapped("%s", s.message.c_str());

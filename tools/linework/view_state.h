@@ -38,6 +38,10 @@ struct OrbitCamera {
     void pan(float dx_px, float dy_px, float height);
 };
 
+// A screenshot or saved view asked for without a path (a key, the panel): the next numbered
+// file in the output folder.
+inline const std::string kNumberedFile = "*";
+
 struct ViewerState {
     SceneDesc desc;                       // lines, styles and surface as edited
     OrbitCamera camera, home;             // home: `r` goes back to it
@@ -56,7 +60,7 @@ struct ViewerState {
     bool playing = false;
     float time_s = 0.0f, duration_s = 0.0f, fps = 24.0f;
     bool time_changed = false;
-    // Requests the loop carries out after this frame is drawn.
+    // Requests the loop carries out after this frame is drawn: a path, or kNumberedFile.
     std::string screenshot_path, save_path;
     std::string output_dir = ".";
     int screenshots_taken = 0, saves_done = 0;
