@@ -27,6 +27,21 @@ inline void pause() {
 #endif
 }
 
+// Waits while `busy()`: first spinning on the CPU (the next phase of a pass comes within
+// microseconds), then yielding it, for 5 ms in all, and only then returns for the caller
+// to sleep: a thread woken by the kernel takes tens of microseconds (more in a virtual
+// machine), as long as a whole pass over a small mesh, and a renderer's next frame
+// comes within milliseconds.
+template <class Busy>
+void spin_while(Busy&& busy) {
+    for (int i = 0; i < 1000; ++i) {
+        if (!busy()) return;
+        pause();
+    }
+    const auto until = std::chrono::steady_clock::now() + std::chrono::milliseconds(5);
+    while (busy() && std::chrono::steady_clock::now() < until) std::this_thread::yield();
+}
+
 // worker_count() − 1 threads started on first use and kept: a per-view pass of a
 // millisecond cannot repay starting threads per call (~0.1 ms, docs/BENCHMARKS.md). The
 // caller works too; chunks are taken from a shared counter, so any chunk count runs on any
@@ -95,21 +110,6 @@ private:
         return ran;
     }
 
-    // Waits while `busy()`: first spinning on the CPU (the next phase of a pass comes within
-    // microseconds), then yielding it, for 5 ms in all, and only then returns for the caller
-    // to sleep: a thread woken by the kernel takes tens of microseconds (more in a virtual
-    // machine), as long as a whole pass over a small mesh, and a renderer's next frame
-    // comes within milliseconds.
-    template <class Busy>
-    static void spin_while(Busy&& busy) {
-        for (int i = 0; i < 1000; ++i) {
-            if (!busy()) return;
-            pause();
-        }
-        const auto until = std::chrono::steady_clock::now() + std::chrono::milliseconds(5);
-        while (busy() && std::chrono::steady_clock::now() < until) std::this_thread::yield();
-    }
-
     void work() {
         uint64_t seen = 0;
         for (;;) {
@@ -171,6 +171,19 @@ size_t parallel_for(size_t count, size_t min_chunk,
         for (size_t c = 0; c < chunks; ++c) body(count * c / chunks, count * (c + 1) / chunks, c);
     }
     return chunks;
+}
+
+void TeamSync::arrive_and_wait() {
+    const uint32_t phase = phase_.load(std::memory_order_acquire);
+    if (arrived_.fetch_add(1, std::memory_order_acq_rel) + 1 == members_) {  // the last: open it
+        arrived_.store(0, std::memory_order_relaxed);
+        phase_.fetch_add(1, std::memory_order_release);
+        phase_.notify_all();  // a system call only when a member sleeps
+        return;
+    }
+    const auto closed = [&] { return phase_.load(std::memory_order_acquire) == phase; };
+    spin_while(closed);
+    while (closed()) phase_.wait(phase, std::memory_order_acquire);
 }
 
 size_t parallel_team(size_t size, const std::function<void(size_t member, size_t members, TeamSync& sync)>& body) {

@@ -54,8 +54,7 @@ struct ExtractWorkspace {
         std::vector<LineSegment> segments;
         std::vector<uint32_t> block_start;
     } ridge_cache[2];
-    std::vector<std::vector<LineSegment>> blocks;
-    std::vector<size_t> offsets;
+    std::vector<std::vector<LineSegment>> blocks;  // a team's blocks taken from the back
 };
 
 // Fills `out` (its capacity reused). Segments come out per block of 1024 faces, in order;
