@@ -226,6 +226,34 @@ TEST(LineSets, SelectByMaterialAndModel) {
     EXPECT_TRUE(ctx.validation_messages().empty());
 }
 
+// Sets select models by file name: a name two models share (each download a scene.gltf)
+// would select both, so it is refused with both paths.
+TEST(LineSets, AModelNameTwoModelsShareIsRefused) {
+    const fs::path dir = test::temp_dir();
+    fs::create_directories(dir / "a");
+    fs::create_directories(dir / "b");
+    fs::copy_file(test::data_dir() / "models/spot/spot.glb", dir / "a/m.glb", fs::copy_options::overwrite_existing);
+    fs::copy_file(test::data_dir() / "models/Fox/Fox.glb", dir / "b/m.glb", fs::copy_options::overwrite_existing);
+    SceneDesc desc = scene_for_model(dir / "a/m.glb");
+    desc.models.push_back(dir / "b/m.glb");
+    desc.width = 64;
+    desc.height = 48;
+    desc.lines.sets = {LineSetDesc{.name = "one", .select = {.models = {"m.glb"}}}};
+    Context ctx({.device = {DeviceChoice::Kind::Cpu}, .validation = true});
+    try {
+        SceneSession session(ctx, desc);
+        ADD_FAILURE() << "an ambiguous model name: no error";
+    } catch (const Error& e) {
+        const std::string message = e.what();
+        EXPECT_NE(message.find("line_sets[0].select.models: \"m.glb\" names more than one of the scene's models ("),
+                  std::string::npos)
+            << message;
+        EXPECT_NE(message.find((dir / "a/m.glb").string()), std::string::npos) << message;
+        EXPECT_NE(message.find((dir / "b/m.glb").string()), std::string::npos) << message;
+    }
+    EXPECT_TRUE(ctx.validation_messages().empty());
+}
+
 // The viewer's "save view" writes the line sets back: reading the saved scene gives the same
 // sets, every key (the viewer test renders such a file headlessly).
 TEST(LineSets, SavedSceneReadsBackEveryKey) {

@@ -128,8 +128,21 @@ void check_line_set_groups(const std::vector<LineSetDesc>& sets, const LoadedSce
                         "\" is none of the scene's " + key + " (" + (list.empty() ? "it has none" : list) + ")");
         }
     };
+    // Sets tell models apart by file name: one that names two models (a folder of downloads
+    // each called scene.gltf) would select both, quietly.
+    const auto check_unique = [&](size_t index, const std::string& name) {
+        std::string paths;
+        size_t count = 0;
+        for (const Model& model : scene.models)
+            if (model.path.filename().string() == name) paths += (count++ == 0 ? "" : ", ") + model.path.string();
+        if (count > 1)
+            throw Error(source + ": line_sets[" + std::to_string(index) + "].select.models: \"" + name +
+                        "\" names more than one of the scene's models (" + paths +
+                        "); sets select models by file name, so give each a name of its own");
+    };
     for (size_t i = 0; i < sets.size(); ++i) {
         check(i, "models", sets[i].select.models, models);
+        for (const std::string& name : sets[i].select.models) check_unique(i, name);
         check(i, "materials", sets[i].select.materials, materials);
     }
 }
