@@ -510,8 +510,11 @@ TEST(SceneFileAnimation, ClipPerModel) {
     EXPECT_EQ(one.rfind("scenes/x.json: animation.clip: one clip for every model of the scene, and ", 0), 0u) << one;
     EXPECT_NE(one.find("CesiumMan.glb: no animation clip named \"Walk\""), std::string::npos) << one;
     EXPECT_NE(one.find("; give one per model, in \"model\" order"), std::string::npos) << one;
-    EXPECT_EQ(scene_error(R"({"model": ["a.glb", "b.glb"], "animation": {"clip": ["Walk"]}})"),
-              "scenes/x.json: animation.clip: 1 clips for 2 models (one per model, in \"model\" order, or one for all)");
+    EXPECT_EQ(scene_error(R"({"model": ["a.glb", "b.glb"], "animation": {"clip": ["Walk", 0, 1]}})"),
+              "scenes/x.json: animation.clip: 3 clips for 2 models (one per model, in \"model\" order, or one for all)");
+    EXPECT_EQ(parse_scene_json(R"({"model": ["a.glb", "b.glb"], "animation": {"clip": ["Walk"]}})", "x.json")
+                  .animation.clips.size(),
+              1u);  // one for all, as a plain "Walk"
     EXPECT_EQ(scene_error(R"({"model": "a.glb", "animation": {"clip": []}})"),
               "scenes/x.json: animation.clip: an empty array (give one clip per model, or one for all)");
     EXPECT_EQ(scene_error(R"({"model": ["a.glb", "b.glb"], "animation": {"clip": ["Walk", true]}})"),

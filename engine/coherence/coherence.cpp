@@ -83,7 +83,8 @@ ScreenPath resample_at_phase(const ScreenPath& path, const PathParam& param, flo
                                            .face = u < 0.5f ? a.face : b.face,
                                            .bary = u < 0.5f ? a.bary : b.bary,
                                            .alpha = glm::mix(a.alpha, b.alpha, u),
-                                           .width = glm::mix(a.width, b.width, u)});
+                                           .width = glm::mix(a.width, b.width, u),
+                                           .other_face = u < 0.5f ? a.other_face : b.other_face});
     }
     return out;
 }

@@ -122,7 +122,7 @@ AnimationDesc read_animation(ObjectReader& parent, const std::filesystem::path& 
         const json& v = r.at("clip");
         if (v.is_array()) {
             if (v.empty()) r.fail_key("clip", "an empty array (give one clip per model, or one for all)");
-            if (models > 0 && v.size() != models)
+            if (models > 0 && v.size() != models && v.size() != 1)
                 r.fail_key("clip", std::to_string(v.size()) + " clips for " + std::to_string(models) +
                                        " models (one per model, in \"model\" order, or one for all)");
             desc.clips.clear();
@@ -338,8 +338,14 @@ SceneDesc parse_scene_json(const std::string& text, const std::filesystem::path&
             const std::filesystem::path resolved = scene_detail::resolve_against(source, name);
             // A model is drawn where its file places it: a second copy would lie on the first,
             // its faces fused with the first's into edges of four faces, which break its lines.
+            const auto same_file = [](const std::filesystem::path& a, const std::filesystem::path& b) {
+                std::error_code error_a, error_b;  // a folder it cannot read: compare as written
+                const std::filesystem::path ca = std::filesystem::weakly_canonical(a, error_a),
+                                            cb = std::filesystem::weakly_canonical(b, error_b);
+                return error_a || error_b ? a.lexically_normal() == b.lexically_normal() : ca == cb;
+            };
             for (size_t i = 0; i < scene.models.size(); ++i)
-                if (std::filesystem::weakly_canonical(scene.models[i]) == std::filesystem::weakly_canonical(resolved))
+                if (same_file(scene.models[i], resolved))
                     r.fail_key("model", "\"" + name + "\" is listed twice (items " + std::to_string(i) + " and " +
                                             std::to_string(scene.models.size()) +
                                             "); a scene draws each model where its file places it, so a second copy "
