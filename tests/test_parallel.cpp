@@ -4,6 +4,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <stdexcept>
 #include <vector>
 
 #include "core/parallel.h"
@@ -42,6 +43,20 @@ TEST(ParallelTeam, ASlowMemberWakesTheSleepers) {
         passed.fetch_add(1);
     });
     EXPECT_GE(passed.load(), 1);
+}
+
+// A member that throws does not leave the others waiting for it: the team ends and the
+// caller gets the exception.
+TEST(ParallelTeam, AMemberThatThrowsEndsTheTeam) {
+    std::atomic<int> past_barrier{0};
+    EXPECT_THROW(parallel_team(worker_count(), [&](size_t member, size_t members, TeamSync& sync) {
+                     if (member + 1 == members) throw std::runtime_error("member failed");
+                     sync.arrive_and_wait();
+                     sync.arrive_and_wait();
+                     past_barrier.fetch_add(1);
+                 }),
+                 std::runtime_error);
+    EXPECT_EQ(size_t(past_barrier.load()), worker_count() - 1);  // every other member went on
 }
 
 }  // namespace

@@ -174,6 +174,7 @@ size_t parallel_for(size_t count, size_t min_chunk,
 }
 
 void TeamSync::arrive_and_wait() {
+    if (abandoned_.load(std::memory_order_acquire)) return;
     const uint32_t phase = phase_.load(std::memory_order_acquire);
     if (arrived_.fetch_add(1, std::memory_order_acq_rel) + 1 == members_) {  // the last: open it
         arrived_.store(0, std::memory_order_relaxed);
@@ -186,11 +187,24 @@ void TeamSync::arrive_and_wait() {
     while (closed()) phase_.wait(phase, std::memory_order_acquire);
 }
 
+void TeamSync::abandon() {
+    abandoned_.store(true, std::memory_order_release);
+    phase_.fetch_add(1, std::memory_order_release);  // opens the barrier members wait at now
+    phase_.notify_all();
+}
+
 size_t parallel_team(size_t size, const std::function<void(size_t member, size_t members, TeamSync& sync)>& body) {
     const size_t members = std::clamp<size_t>(size, 1, worker_count());
     if (members > 1) {
         TeamSync sync(members);
-        const std::function<void(size_t, size_t, size_t)> member = [&](size_t, size_t, size_t m) { body(m, members, sync); };
+        const std::function<void(size_t, size_t, size_t)> member = [&](size_t, size_t, size_t m) {
+            try {
+                body(m, members, sync);
+            } catch (...) {
+                sync.abandon();
+                throw;  // the pool rethrows it in the caller once every member is done
+            }
+        };
         if (pool()->run(members, members, member, true)) return members;
     }
     TeamSync alone(1);

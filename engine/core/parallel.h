@@ -29,11 +29,15 @@ class TeamSync {
 public:
     explicit TeamSync(size_t members) : members_(uint32_t(members)) {}
     void arrive_and_wait();
+    // A member left by an exception: the others' waits return at once from now on (they
+    // would wait for it forever), and parallel_team throws once they are done.
+    void abandon();
 
 private:
     const uint32_t members_;
     std::atomic<uint32_t> arrived_{0};
     std::atomic<uint32_t> phase_{0};  // passed barriers
+    std::atomic<bool> abandoned_{false};
 };
 
 // A team of threads that run `body(member, members, sync)` at the same time, one member
