@@ -242,6 +242,53 @@ TEST(RibbonDp, ClosedCurveEndsWhereItStarts) {
     EXPECT_GE(exact, 2) << "the single-DP cycle should often be the optimal one";
 }
 
+// The bounded row update (most entries never summed) gives the full table's costs and back
+// pointers bit for bit: every generated pattern along a wave, a closed circle, rows whose
+// edges span more than 64 texels (two words of opacity bits), and rows that fell back to
+// looser slicing rules.
+TEST(RibbonDp, BoundedRowsEqualTheFullTable) {
+    struct Case {
+        std::string pattern;
+        Curve2D curve;
+        RibbonParams params;
+        int exemplar_width = 48;
+    };
+    Curve2D wave, circle{{}, true};
+    for (int i = 0; i <= 16; ++i) wave.points.push_back({10.0f + 4.0f * float(i), 60.0f + 20.0f * std::sin(0.3f * float(i))});
+    for (int i = 0; i < 40; ++i) {
+        const float a = 2.0f * float(M_PI) * float(i) / 40.0f;
+        circle.points.push_back({80.0f + 25.0f * std::cos(a), 80.0f + 25.0f * std::sin(a)});
+    }
+    std::vector<Case> cases;
+    for (const std::string& name : exemplar_names()) cases.push_back({name, wave, {.width = 20, .piece = 8, .scale = 24}});
+    cases.push_back({"chain", circle, {.width = 16, .piece = 8, .scale = 20}});
+    cases.push_back({"rope", Curve2D{{{0, 60}, {24, 61}}, false}, {.width = 40, .piece = 8, .scale = 66}, 80});  // C > 64
+    cases.push_back({"zigzag", wave, {.width = 12, .piece = 6, .scale = 3}});   // looser rules
+    size_t compared = 0, widest = 0;
+    bool loosened = false;
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.pattern + " at scale " + std::to_string(c.params.scale));
+        const Exemplar e = make_exemplar(generate_exemplar(c.pattern, c.exemplar_width, 24, 3), c.pattern);
+        const DpProblem p = build_problem(e, build_ribbon(ArclengthCurve(c.curve), c.params));
+        widest = std::max(widest, size_t(p.samples));
+        DpRunOptions keep;
+        keep.keep_cost_tables = true;
+        const DpTables full = run_dp_reference(p, keep), bounded = run_dp_reference(p);
+        ASSERT_EQ(full.back.size(), bounded.back.size());
+        for (size_t row = 0; row < full.back.size(); ++row) {
+            EXPECT_EQ(full.valid[row], bounded.valid[row]) << row;
+            EXPECT_EQ(full.back[row], bounded.back[row]) << row;
+            EXPECT_EQ(full.rules[row], bounded.rules[row]) << row;
+            loosened = loosened || full.rules[row] != ValidityRule::Band;
+        }
+        EXPECT_EQ(full.last_costs, bounded.last_costs);
+        for (size_t row = 1; row < full.cost_tables.size(); ++row) compared += full.cost_tables[row].size();
+    }
+    EXPECT_GT(compared, 300000u);
+    EXPECT_GT(widest, 64u);
+    EXPECT_TRUE(loosened);
+}
+
 TEST(RibbonDp, StraightCurveWithPeriodicExemplarIsAZeroCostChain) {
     const int period = 8;
     const Exemplar e = test::periodic_exemplar(48, 12, period);

@@ -1,6 +1,7 @@
 #include "ribbon/dp_reference.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -135,6 +136,69 @@ void update_table_row(const std::vector<float>& prev_costs, const std::vector<fl
     });
 }
 
+namespace {
+
+// Opacity of each of an edge's C texels as bits, `words` 64-bit words per edge.
+struct OpacityMasks {
+    size_t words = 0;
+    std::vector<uint64_t> bits;
+    OpacityMasks(const std::vector<uint32_t>& texels, size_t samples)
+        : words((samples + 63) / 64), bits(texels.size() / std::max<size_t>(samples, 1) * words, 0) {
+        for (size_t i = 0; i < texels.size(); ++i)
+            bits[i / samples * words + i % samples / 64] |= uint64_t(texel_opaque(texels[i])) << (i % samples % 64);
+    }
+    uint32_t mismatches(const OpacityMasks& other, size_t j, size_t other_j) const {
+        uint32_t n = 0;
+        for (size_t w = 0; w < words; ++w) n += uint32_t(std::popcount(bits[j * words + w] ^ other.bits[other_j * words + w]));
+        return n;
+    }
+};
+
+}  // namespace
+
+void update_table_row_bounded(const DpProblem& problem, const std::vector<uint32_t>& right_edges,
+                              const std::vector<uint32_t>& valid, const std::vector<float>& prev_costs,
+                              std::vector<float>& costs, std::vector<uint32_t>& back) {
+    const size_t C = size_t(problem.samples), count = valid.size();
+    std::vector<uint32_t> left(count * C);  // L̄ of each new position, as compute_cost_table reads it
+    for (size_t u = 0; u < count; ++u) {
+        const glm::ivec2 p = problem.position(valid[u]);
+        for (size_t k = 0; k < C; ++k) left[u * C + k] = problem.exemplar->at(p.x, p.y + problem.left_dy[k]);
+    }
+    const OpacityMasks right_opaque(right_edges, C), left_opaque(left, C);
+    // The previous positions by their cost so far: a scan stops at the first that alone costs
+    // more than the best found. (A NaN cost never wins a strict <: left out.)
+    std::vector<uint32_t> order;
+    for (uint32_t v = 0; v < prev_costs.size(); ++v)
+        if (!std::isnan(prev_costs[v])) order.push_back(v);
+    std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return prev_costs[a] < prev_costs[b]; });
+    costs.assign(count, std::numeric_limits<float>::infinity());
+    back.assign(count, 0u);
+    parallel_for(count, 64, [&](size_t begin, size_t end, size_t) {
+        for (size_t u = begin; u < end; ++u) {
+            float best = std::numeric_limits<float>::infinity();
+            uint32_t best_v = 0;  // of equal costs the lowest v, as update_table_row's strict <
+            for (const uint32_t v : order) {
+                const float base = prev_costs[v];
+                if (base > best) break;
+                const float bound = base + kRibbonGamma * float(right_opaque.mismatches(left_opaque, v, u));
+                if (bound > best || (bound == best && v > best_v)) continue;
+                // The entry as compute_cost_table sums it: ξ of each k in order, from 0.
+                const uint32_t *q = right_edges.data() + size_t(v) * C, *l = left.data() + u * C;
+                float entry = 0.0f;
+                for (size_t k = 0; k < C; ++k) entry += xi(q[k], l[k]);
+                const float c = base + entry;
+                if (c < best || (c == best && v < best_v)) {
+                    best = c;
+                    best_v = v;
+                }
+            }
+            costs[u] = best;
+            back[u] = best_v;
+        }
+    });
+}
+
 std::string no_valid_position_message(const DpProblem& problem, size_t row) {
     const bool terminal = problem.closed && row + 1 == problem.rows.size();
     return "ribbon piece " + std::to_string(row) + (terminal ? " (terminal)" : "") + " of " +
@@ -165,10 +229,13 @@ DpTables run_dp_reference(const DpProblem& problem, const DpRunOptions& options)
         Timer timer;
         const std::vector<uint32_t> right = extract_columns(problem, i - 1, t.valid[i - 1]);
         t.valid[i] = valid_positions(problem, i, t.rules[i]);
-        std::vector<float> table = compute_cost_table(problem, right, t.valid[i]);
-        update_table_row(costs, table, t.valid[i].size(), next, t.back[i]);
+        if (options.keep_cost_tables) {
+            t.cost_tables[i] = compute_cost_table(problem, right, t.valid[i]);
+            update_table_row(costs, t.cost_tables[i], t.valid[i].size(), next, t.back[i]);
+        } else {
+            update_table_row_bounded(problem, right, t.valid[i], costs, next, t.back[i]);
+        }
         costs.swap(next);
-        if (options.keep_cost_tables) t.cost_tables[i] = std::move(table);
         t.row_ms.push_back(timer.elapsed_ms());
         if (options.progress) options.progress(i, rows, uint32_t(t.valid[i].size()));
     }
