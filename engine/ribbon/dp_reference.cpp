@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <tuple>
 
 #include "core/error.h"
 #include "core/parallel.h"
@@ -138,64 +139,85 @@ void update_table_row(const std::vector<float>& prev_costs, const std::vector<fl
 
 namespace {
 
-// Opacity of each of an edge's C texels as bits, `words` 64-bit words per edge.
-struct OpacityMasks {
-    size_t words = 0;
-    std::vector<uint64_t> bits;
-    OpacityMasks(const std::vector<uint32_t>& texels, size_t samples)
-        : words((samples + 63) / 64), bits(texels.size() / std::max<size_t>(samples, 1) * words, 0) {
-        for (size_t i = 0; i < texels.size(); ++i)
-            bits[i / samples * words + i % samples / 64] |= uint64_t(texel_opaque(texels[i])) << (i % samples % 64);
-    }
-    uint32_t mismatches(const OpacityMasks& other, size_t j, size_t other_j) const {
-        uint32_t n = 0;
-        for (size_t w = 0; w < words; ++w) n += uint32_t(std::popcount(bits[j * words + w] ^ other.bits[other_j * words + w]));
-        return n;
-    }
+// A row of the bounded update: the previous positions in order of their cost so far, each
+// with its cost, its right edge's opacity bits (`words` 64-bit words) and its index v; the
+// new positions' left edges and their opacity bits.
+struct BoundedRow {
+    size_t samples = 0, words = 0;
+    std::vector<float> cost;          // P_prev, ascending
+    std::vector<uint32_t> v;          // the previous position of each
+    std::vector<uint64_t> right_bits;  // by the same order
+    const uint32_t* right_edges = nullptr;  // extract_columns' texels, by v
+    std::vector<uint32_t> left;       // L̄ of each new position u, as compute_cost_table reads it
+    std::vector<uint64_t> left_bits;
 };
+
+void opacity_bits(const uint32_t* texels, size_t samples, size_t words, uint64_t* bits) {
+    std::fill(bits, bits + words, 0);
+    for (size_t k = 0; k < samples; ++k) bits[k / 64] |= uint64_t(texel_opaque(texels[k])) << (k % 64);
+}
+
+// u's minimum over the previous positions: (P[u], its v), the lowest v of equal costs as
+// update_table_row's strict <. Cloned for CPUs with POPCNT: without it a popcount is a call.
+__attribute__((target_clones("popcnt", "default"))) std::pair<float, uint32_t> best_predecessor(const BoundedRow& row,
+                                                                                                size_t u) {
+    const size_t C = row.samples, words = row.words;
+    const uint64_t* left_bits = row.left_bits.data() + u * words;
+    const uint32_t* l = row.left.data() + u * C;
+    float best = std::numeric_limits<float>::infinity();
+    uint32_t best_v = 0;
+    for (size_t i = 0; i < row.cost.size(); ++i) {
+        const float base = row.cost[i];
+        if (base > best) break;  // every later one costs this much before its entry
+        uint32_t mismatched = 0;
+        for (size_t w = 0; w < words; ++w) mismatched += uint32_t(std::popcount(row.right_bits[i * words + w] ^ left_bits[w]));
+        const uint32_t v = row.v[i];
+        const float bound = base + kRibbonGamma * float(mismatched);
+        if (bound > best || (bound == best && v > best_v)) continue;
+        // The entry as compute_cost_table sums it: ξ of each k in order, from 0.
+        const uint32_t* q = row.right_edges + size_t(v) * C;
+        float entry = 0.0f;
+        for (size_t k = 0; k < C; ++k) entry += xi(q[k], l[k]);
+        const float c = base + entry;
+        if (c < best || (c == best && v < best_v)) {
+            best = c;
+            best_v = v;
+        }
+    }
+    return {best, best_v};
+}
 
 }  // namespace
 
 void update_table_row_bounded(const DpProblem& problem, const std::vector<uint32_t>& right_edges,
                               const std::vector<uint32_t>& valid, const std::vector<float>& prev_costs,
                               std::vector<float>& costs, std::vector<uint32_t>& back) {
-    const size_t C = size_t(problem.samples), count = valid.size();
-    std::vector<uint32_t> left(count * C);  // L̄ of each new position, as compute_cost_table reads it
+    BoundedRow row;
+    row.samples = size_t(problem.samples);
+    row.words = (row.samples + 63) / 64;
+    const size_t C = row.samples, count = valid.size();
+    row.right_edges = right_edges.data();
+    row.left.resize(count * C);
+    row.left_bits.resize(count * row.words);
     for (size_t u = 0; u < count; ++u) {
         const glm::ivec2 p = problem.position(valid[u]);
-        for (size_t k = 0; k < C; ++k) left[u * C + k] = problem.exemplar->at(p.x, p.y + problem.left_dy[k]);
+        for (size_t k = 0; k < C; ++k) row.left[u * C + k] = problem.exemplar->at(p.x, p.y + problem.left_dy[k]);
+        opacity_bits(row.left.data() + u * C, C, row.words, row.left_bits.data() + u * row.words);
     }
-    const OpacityMasks right_opaque(right_edges, C), left_opaque(left, C);
-    // The previous positions by their cost so far: a scan stops at the first that alone costs
-    // more than the best found. (A NaN cost never wins a strict <: left out.)
-    std::vector<uint32_t> order;
+    // The previous positions by their cost so far (a NaN cost never wins a strict <: left out).
     for (uint32_t v = 0; v < prev_costs.size(); ++v)
-        if (!std::isnan(prev_costs[v])) order.push_back(v);
-    std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return prev_costs[a] < prev_costs[b]; });
-    costs.assign(count, std::numeric_limits<float>::infinity());
-    back.assign(count, 0u);
+        if (!std::isnan(prev_costs[v])) row.v.push_back(v);
+    std::stable_sort(row.v.begin(), row.v.end(), [&](uint32_t a, uint32_t b) { return prev_costs[a] < prev_costs[b]; });
+    row.cost.resize(row.v.size());
+    row.right_bits.resize(row.v.size() * row.words);
+    for (size_t i = 0; i < row.v.size(); ++i) {
+        row.cost[i] = prev_costs[row.v[i]];
+        opacity_bits(right_edges.data() + size_t(row.v[i]) * C, C, row.words, row.right_bits.data() + i * row.words);
+    }
+    costs.resize(count);
+    back.resize(count);
     parallel_for(count, 64, [&](size_t begin, size_t end, size_t) {
-        for (size_t u = begin; u < end; ++u) {
-            float best = std::numeric_limits<float>::infinity();
-            uint32_t best_v = 0;  // of equal costs the lowest v, as update_table_row's strict <
-            for (const uint32_t v : order) {
-                const float base = prev_costs[v];
-                if (base > best) break;
-                const float bound = base + kRibbonGamma * float(right_opaque.mismatches(left_opaque, v, u));
-                if (bound > best || (bound == best && v > best_v)) continue;
-                // The entry as compute_cost_table sums it: ξ of each k in order, from 0.
-                const uint32_t *q = right_edges.data() + size_t(v) * C, *l = left.data() + u * C;
-                float entry = 0.0f;
-                for (size_t k = 0; k < C; ++k) entry += xi(q[k], l[k]);
-                const float c = base + entry;
-                if (c < best || (c == best && v < best_v)) {
-                    best = c;
-                    best_v = v;
-                }
-            }
-            costs[u] = best;
-            back[u] = best_v;
-        }
+        for (size_t u = begin; u < end; ++u) std::tie(costs[u], back[u]) = best_predecessor(row, u);
     });
 }
 
