@@ -4,6 +4,7 @@
 #include <bit>
 #include <cmath>
 #include <limits>
+#include <span>
 #include <string>
 #include <tuple>
 
@@ -139,17 +140,19 @@ void update_table_row(const std::vector<float>& prev_costs, const std::vector<fl
 
 namespace {
 
-// A row of the bounded update: the previous positions in order of their cost so far, each
-// with its cost, its right edge's opacity bits (`words` 64-bit words) and its index v; the
-// new positions' left edges and their opacity bits.
+// A row of the bounded update. The previous positions are grouped by their right edge's
+// opacity bits (a few hundred groups of 1,300-1,900 positions on spot_ribbons.json), so that
+// one popcount bounds a whole group; within a group they are in order of their cost so far.
 struct BoundedRow {
     size_t samples = 0, words = 0;
-    std::vector<float> cost;          // P_prev, ascending
-    std::vector<uint32_t> v;          // the previous position of each
-    std::vector<uint64_t> right_bits;  // by the same order
+    std::vector<uint64_t> group_bits;     // per group, `words` words
+    std::vector<uint32_t> group_begin;    // per group, its first member; one past the last at the end
+    std::vector<float> cost;              // per member, P_prev (ascending within its group)
+    std::vector<uint32_t> v;              // per member, the previous position
     const uint32_t* right_edges = nullptr;  // extract_columns' texels, by v
-    std::vector<uint32_t> left;       // L̄ of each new position u, as compute_cost_table reads it
+    std::vector<uint32_t> left;           // L̄ of each new position u, as compute_cost_table reads it
     std::vector<uint64_t> left_bits;
+    size_t groups() const { return group_begin.size() - 1; }
 };
 
 void opacity_bits(const uint32_t* texels, size_t samples, size_t words, uint64_t* bits) {
@@ -157,33 +160,53 @@ void opacity_bits(const uint32_t* texels, size_t samples, size_t words, uint64_t
     for (size_t k = 0; k < samples; ++k) bits[k / 64] |= uint64_t(texel_opaque(texels[k])) << (k % 64);
 }
 
+// Scratch of one thread: per group, its mismatch count against u and its lowest bound.
+struct GroupScratch {
+    std::vector<uint32_t> mismatched;
+    std::vector<float> bound;
+};
+
 // u's minimum over the previous positions: (P[u], its v), the lowest v of equal costs as
-// update_table_row's strict <. Cloned for CPUs with POPCNT: without it a popcount is a call.
-__attribute__((target_clones("popcnt", "default"))) std::pair<float, uint32_t> best_predecessor(const BoundedRow& row,
-                                                                                                size_t u) {
-    const size_t C = row.samples, words = row.words;
+// update_table_row's strict <. The group with the lowest bound is searched first, for a low
+// best early; a group (or the rest of one) whose bound exceeds the best is passed over.
+// Cloned for CPUs with POPCNT: without it a popcount is a library call.
+__attribute__((target_clones("popcnt", "default"))) std::pair<float, uint32_t> best_predecessor(
+    const BoundedRow& row, size_t u, GroupScratch& scratch) {
+    const size_t C = row.samples, words = row.words, groups = row.groups();
     const uint64_t* left_bits = row.left_bits.data() + u * words;
     const uint32_t* l = row.left.data() + u * C;
     float best = std::numeric_limits<float>::infinity();
     uint32_t best_v = 0;
-    for (size_t i = 0; i < row.cost.size(); ++i) {
-        const float base = row.cost[i];
-        if (base > best) break;  // every later one costs this much before its entry
+    if (groups == 0) return {best, best_v};
+    size_t first = 0;
+    for (size_t g = 0; g < groups; ++g) {
         uint32_t mismatched = 0;
-        for (size_t w = 0; w < words; ++w) mismatched += uint32_t(std::popcount(row.right_bits[i * words + w] ^ left_bits[w]));
-        const uint32_t v = row.v[i];
-        const float bound = base + kRibbonGamma * float(mismatched);
-        if (bound > best || (bound == best && v > best_v)) continue;
-        // The entry as compute_cost_table sums it: ξ of each k in order, from 0.
-        const uint32_t* q = row.right_edges + size_t(v) * C;
-        float entry = 0.0f;
-        for (size_t k = 0; k < C; ++k) entry += xi(q[k], l[k]);
-        const float c = base + entry;
-        if (c < best || (c == best && v < best_v)) {
-            best = c;
-            best_v = v;
-        }
+        for (size_t w = 0; w < words; ++w) mismatched += uint32_t(std::popcount(row.group_bits[g * words + w] ^ left_bits[w]));
+        scratch.mismatched[g] = mismatched;
+        scratch.bound[g] = row.cost[row.group_begin[g]] + kRibbonGamma * float(mismatched);
+        if (scratch.bound[g] < scratch.bound[first]) first = g;
     }
+    const auto search = [&](size_t g) {
+        const float gamma_m = kRibbonGamma * float(scratch.mismatched[g]);
+        for (uint32_t i = row.group_begin[g]; i < row.group_begin[g + 1]; ++i) {
+            const float base = row.cost[i], bound = base + gamma_m;
+            const uint32_t v = row.v[i];
+            if (bound > best) break;  // the group's later members cost at least this much
+            if (bound == best && v > best_v) continue;
+            // The entry as compute_cost_table sums it: ξ of each k in order, from 0.
+            const uint32_t* q = row.right_edges + size_t(v) * C;
+            float entry = 0.0f;
+            for (size_t k = 0; k < C; ++k) entry += xi(q[k], l[k]);
+            const float c = base + entry;
+            if (c < best || (c == best && v < best_v)) {
+                best = c;
+                best_v = v;
+            }
+        }
+    };
+    search(first);
+    for (size_t g = 0; g < groups; ++g)
+        if (g != first && !(scratch.bound[g] > best)) search(g);
     return {best, best_v};
 }
 
@@ -195,29 +218,42 @@ void update_table_row_bounded(const DpProblem& problem, const std::vector<uint32
     BoundedRow row;
     row.samples = size_t(problem.samples);
     row.words = (row.samples + 63) / 64;
-    const size_t C = row.samples, count = valid.size();
+    const size_t C = row.samples, words = row.words, count = valid.size();
     row.right_edges = right_edges.data();
     row.left.resize(count * C);
-    row.left_bits.resize(count * row.words);
+    row.left_bits.resize(count * words);
     for (size_t u = 0; u < count; ++u) {
         const glm::ivec2 p = problem.position(valid[u]);
         for (size_t k = 0; k < C; ++k) row.left[u * C + k] = problem.exemplar->at(p.x, p.y + problem.left_dy[k]);
-        opacity_bits(row.left.data() + u * C, C, row.words, row.left_bits.data() + u * row.words);
+        opacity_bits(row.left.data() + u * C, C, words, row.left_bits.data() + u * words);
     }
-    // The previous positions by their cost so far (a NaN cost never wins a strict <: left out).
+    // The previous positions (a NaN cost never wins a strict <: left out) by their opacity
+    // bits, then by cost.
+    std::vector<uint64_t> bits(prev_costs.size() * words);
+    for (size_t v = 0; v < prev_costs.size(); ++v) opacity_bits(right_edges.data() + v * C, C, words, bits.data() + v * words);
+    const auto bits_of = [&](uint32_t v) { return std::span<const uint64_t>(bits.data() + size_t(v) * words, words); };
     for (uint32_t v = 0; v < prev_costs.size(); ++v)
         if (!std::isnan(prev_costs[v])) row.v.push_back(v);
-    std::stable_sort(row.v.begin(), row.v.end(), [&](uint32_t a, uint32_t b) { return prev_costs[a] < prev_costs[b]; });
+    std::stable_sort(row.v.begin(), row.v.end(), [&](uint32_t a, uint32_t b) {
+        const auto x = bits_of(a), y = bits_of(b);
+        if (!std::equal(x.begin(), x.end(), y.begin())) return std::lexicographical_compare(x.begin(), x.end(), y.begin(), y.end());
+        return prev_costs[a] < prev_costs[b];
+    });
     row.cost.resize(row.v.size());
-    row.right_bits.resize(row.v.size() * row.words);
     for (size_t i = 0; i < row.v.size(); ++i) {
         row.cost[i] = prev_costs[row.v[i]];
-        opacity_bits(right_edges.data() + size_t(row.v[i]) * C, C, row.words, row.right_bits.data() + i * row.words);
+        const auto b = bits_of(row.v[i]);
+        if (i == 0 || !std::equal(b.begin(), b.end(), bits_of(row.v[i - 1]).begin())) {
+            row.group_begin.push_back(uint32_t(i));
+            row.group_bits.insert(row.group_bits.end(), b.begin(), b.end());
+        }
     }
+    row.group_begin.push_back(uint32_t(row.v.size()));
     costs.resize(count);
     back.resize(count);
     parallel_for(count, 64, [&](size_t begin, size_t end, size_t) {
-        for (size_t u = begin; u < end; ++u) std::tie(costs[u], back[u]) = best_predecessor(row, u);
+        GroupScratch scratch{std::vector<uint32_t>(row.groups()), std::vector<float>(row.groups())};
+        for (size_t u = begin; u < end; ++u) std::tie(costs[u], back[u]) = best_predecessor(row, u, scratch);
     });
 }
 

@@ -39,8 +39,9 @@ void update_table_row(const std::vector<float>& prev_costs, const std::vector<fl
 // without summing most of the table: every term of an entry is ≥ 0 and an opacity mismatch
 // costs γ, so P_prev[v] + γ·(mismatched opacities of the two edges, a popcount) bounds
 // P_prev[v] + entry from below (rounded float addition is monotone), and an entry is summed
-// only where that bound can still beat the best found for u. On spot_ribbons.json 0.5 % of
-// the entries can (docs/BENCHMARKS.md "Ribbons").
+// only where that bound can still beat the best found for u (positions with the same
+// opacity bits share one bound). On spot_ribbons.json 0.5 % of the entries can
+// (docs/BENCHMARKS.md "The DP's rows bounded").
 void update_table_row_bounded(const DpProblem& problem, const std::vector<uint32_t>& right_edges,
                               const std::vector<uint32_t>& valid, const std::vector<float>& prev_costs,
                               std::vector<float>& costs, std::vector<uint32_t>& back);
