@@ -1,5 +1,6 @@
 // Ribbon patterns (Zhou et al. 2013), the plain C++ side: curves, slicing, the matching cost,
 // the DP against brute force, periodic exemplars, closed curves, stitching.
+#include <bit>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -287,6 +288,50 @@ TEST(RibbonDp, BoundedRowsEqualTheFullTable) {
     EXPECT_GT(compared, 300000u);
     EXPECT_GT(widest, 64u);
     EXPECT_TRUE(loosened);
+}
+
+// One row, bounded and full, from previous costs the DP itself never hands over: equal
+// costs with exact ties in the table (a periodic exemplar: many v match a u equally well),
+// infinities, NaN, all infinite, all NaN, and no previous position.
+TEST(RibbonDp, BoundedRowHandlesTiesInfinitiesAndNaN) {
+    const Exemplar e = test::periodic_exemplar(48, 12, 8);
+    const ArclengthCurve line(Curve2D{{{0, 30}, {40, 34}}, false});
+    const DpProblem p = build_problem(e, build_ribbon(line, {.width = 12, .piece = 4, .scale = 12}));
+    const DpTables t = run_dp_reference(p);
+    const std::vector<uint32_t> right = extract_columns(p, 0, t.valid[0]);
+    const std::vector<uint32_t>& valid = t.valid[1];
+    const size_t n = t.valid[0].size();
+    const std::vector<float> table = compute_cost_table(p, right, valid);
+    size_t ties = 0;  // u whose lowest entry two or more v reach
+    for (size_t u = 0; u < valid.size(); ++u) {
+        float lowest = std::numeric_limits<float>::infinity();
+        size_t reach = 0;
+        for (size_t v = 0; v < n; ++v) {
+            const float c = table[v * valid.size() + u];
+            if (c < lowest) lowest = c, reach = 0;
+            reach += c == lowest;
+        }
+        ties += reach > 1;
+    }
+    EXPECT_GT(ties, valid.size() / 2);
+    const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
+    std::vector<std::vector<float>> prevs = {std::vector<float>(n, 0.0f), std::vector<float>(n, inf),
+                                             std::vector<float>(n, nan), std::vector<float>(n, 0.0f)};
+    for (size_t v = 0; v < n; ++v) prevs[3][v] = v % 3 == 0 ? inf : v % 3 == 1 ? nan : float(v % 5) * 512.0f;
+    for (const std::vector<float>& prev : prevs) {
+        std::vector<float> full, bounded;
+        std::vector<uint32_t> full_back, bounded_back;
+        update_table_row(prev, table, valid.size(), full, full_back);
+        update_table_row_bounded(p, right, valid, prev, bounded, bounded_back);
+        EXPECT_EQ(bounded_back, full_back);
+        ASSERT_EQ(bounded.size(), full.size());
+        for (size_t u = 0; u < full.size(); ++u) ASSERT_EQ(std::bit_cast<uint32_t>(bounded[u]), std::bit_cast<uint32_t>(full[u])) << u;
+    }
+    std::vector<float> none_costs;
+    std::vector<uint32_t> none_back;
+    update_table_row_bounded(p, {}, valid, {}, none_costs, none_back);  // no previous position
+    EXPECT_EQ(none_back, std::vector<uint32_t>(valid.size(), 0u));
+    for (float c : none_costs) EXPECT_EQ(c, inf);
 }
 
 TEST(RibbonDp, StraightCurveWithPeriodicExemplarIsAZeroCostChain) {

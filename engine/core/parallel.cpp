@@ -173,9 +173,20 @@ size_t parallel_for(size_t count, size_t min_chunk,
     return chunks;
 }
 
+namespace {
+
+// Thrown out of a wait once a member has left the team by an exception: the others stop
+// where they wait instead of running on into a phase over data the failed member never
+// wrote. parallel_team catches it; the caller gets the failed member's exception.
+struct TeamAbandoned {};
+
+}  // namespace
+
 void TeamSync::arrive_and_wait() {
-    if (abandoned_.load(std::memory_order_acquire)) return;
+    // The phase before the flag: an abandon after this load changes the phase (so the wait
+    // below ends and sees the flag), one before it is seen here.
     const uint32_t phase = phase_.load(std::memory_order_acquire);
+    if (abandoned_.load(std::memory_order_acquire)) throw TeamAbandoned{};
     if (arrived_.fetch_add(1, std::memory_order_acq_rel) + 1 == members_) {  // the last: open it
         arrived_.store(0, std::memory_order_relaxed);
         phase_.fetch_add(1, std::memory_order_release);
@@ -185,6 +196,7 @@ void TeamSync::arrive_and_wait() {
     const auto closed = [&] { return phase_.load(std::memory_order_acquire) == phase; };
     spin_while(closed);
     while (closed()) phase_.wait(phase, std::memory_order_acquire);
+    if (abandoned_.load(std::memory_order_acquire)) throw TeamAbandoned{};
 }
 
 void TeamSync::abandon() {
@@ -200,6 +212,8 @@ size_t parallel_team(size_t size, const std::function<void(size_t member, size_t
         const std::function<void(size_t, size_t, size_t)> member = [&](size_t, size_t, size_t m) {
             try {
                 body(m, members, sync);
+            } catch (const TeamAbandoned&) {
+                // Stopped at a barrier by another member's exception, which the caller gets.
             } catch (...) {
                 sync.abandon();
                 throw;  // the pool rethrows it in the caller once every member is done

@@ -29,8 +29,9 @@ class TeamSync {
 public:
     explicit TeamSync(size_t members) : members_(uint32_t(members)) {}
     void arrive_and_wait();
-    // A member left by an exception: the others' waits return at once from now on (they
-    // would wait for it forever), and parallel_team throws once they are done.
+    // A member left by an exception: the others stop at their next (or current) wait, which
+    // would otherwise last for ever, and parallel_team throws the member's exception once
+    // they have stopped. Members never run on past a barrier the failed member missed.
     void abandon();
 
 private:
