@@ -60,6 +60,18 @@ std::vector<uint32_t> extract_columns(const DpProblem& problem, size_t row, cons
 
 namespace {
 
+// L̄ of every valid position of a row's piece: column x of E from row y, at the left-edge
+// offsets; V × C texels, row-major (extract_columns' layout for the right edges).
+std::vector<uint32_t> left_edges(const DpProblem& problem, const std::vector<uint32_t>& valid) {
+    const size_t C = size_t(problem.samples);
+    std::vector<uint32_t> texels(valid.size() * C);
+    for (size_t u = 0; u < valid.size(); ++u) {
+        const glm::ivec2 p = problem.position(valid[u]);
+        for (size_t k = 0; k < C; ++k) texels[u * C + k] = problem.exemplar->at(p.x, p.y + problem.left_dy[k]);
+    }
+    return texels;
+}
+
 // Texels of edges unpacked for ξ, by sample k then edge j (index k·count + j), so that the
 // cost table's inner loop runs over positions with unit stride and the compiler vectorizes
 // it (sqrt without errno: CMakeLists.txt). Each table entry still sums its C terms in k
@@ -86,13 +98,11 @@ std::vector<float> compute_cost_table(const DpProblem& problem, const std::vecto
                                       const std::vector<uint32_t>& valid) {
     const size_t C = size_t(problem.samples);
     const size_t prev_count = right_edges.size() / C, count = valid.size();
-    // Left edges L̄ of the new piece: column x of E from row y, at the left-edge offsets.
+    const std::vector<uint32_t> left_texels = left_edges(problem, valid);
     EdgeTexels left;
     left.resize(count, C);
-    for (size_t u = 0; u < count; ++u) {
-        const glm::ivec2 p = problem.position(valid[u]);
-        for (size_t k = 0; k < C; ++k) left.set(k, u, problem.exemplar->at(p.x, p.y + problem.left_dy[k]));
-    }
+    for (size_t u = 0; u < count; ++u)
+        for (size_t k = 0; k < C; ++k) left.set(k, u, left_texels[u * C + k]);
     std::vector<float> table(prev_count * count, 0.0f);
     parallel_for(prev_count, 16, [&](size_t begin, size_t end, size_t) {
         for (size_t v = begin; v < end; ++v) {
@@ -150,7 +160,7 @@ struct BoundedRow {
     std::vector<float> cost;              // per member, P_prev (ascending within its group)
     std::vector<uint32_t> v;              // per member, the previous position
     const uint32_t* right_edges = nullptr;  // extract_columns' texels, by v
-    std::vector<uint32_t> left;           // L̄ of each new position u, as compute_cost_table reads it
+    std::vector<uint32_t> left;           // L̄ of each new position u (left_edges)
     std::vector<uint64_t> left_bits;
     size_t groups() const { return group_begin.size() - 1; }
 };
@@ -220,13 +230,9 @@ void update_table_row_bounded(const DpProblem& problem, const std::vector<uint32
     row.words = (row.samples + 63) / 64;
     const size_t C = row.samples, words = row.words, count = valid.size();
     row.right_edges = right_edges.data();
-    row.left.resize(count * C);
+    row.left = left_edges(problem, valid);
     row.left_bits.resize(count * words);
-    for (size_t u = 0; u < count; ++u) {
-        const glm::ivec2 p = problem.position(valid[u]);
-        for (size_t k = 0; k < C; ++k) row.left[u * C + k] = problem.exemplar->at(p.x, p.y + problem.left_dy[k]);
-        opacity_bits(row.left.data() + u * C, C, words, row.left_bits.data() + u * words);
-    }
+    for (size_t u = 0; u < count; ++u) opacity_bits(row.left.data() + u * C, C, words, row.left_bits.data() + u * words);
     // The previous positions (a NaN cost never wins a strict <: left out) by their opacity
     // bits, then by cost.
     std::vector<uint64_t> bits(prev_costs.size() * words);
