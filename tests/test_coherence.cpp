@@ -4,6 +4,7 @@
 #include <cstring>
 #include <fstream>
 #include <numbers>
+#include <optional>
 
 #include <nlohmann/json.hpp>
 
@@ -201,6 +202,79 @@ TEST_F(CoherenceGpu, StillPathsKeepTheirScaleAndFragmentsAreDropped) {
     // T's scale is the set's (a SLAM's starts at ρ0/√2, ρ0 = 1/64), in the octave of the tiling scale.
     EXPECT_GE(std::abs(last[0].rho), 0.5f / 64.0f);
     EXPECT_LE(std::abs(last[0].rho), 2.0f / 64.0f);
+}
+
+// Three paths of one frame joined into one path the next (Bénard et al. 2010 §4.2: "popping
+// can occur when two paths merge"). The two first pieces lie side by side, so they are one
+// run of votes the longest piece's fit rejects; that run, fitted on its own, still holds two
+// phases and is split again. Every sample keeps the T of the piece it came from.
+TEST_F(CoherenceGpu, PathsMergedFromThreePiecesKeepEachPiecesPhase) {
+    const int width = 400, height = 64;
+    auto on_screen = [&](ScreenPath path) {
+        for (auto& sample : path.samples)
+            sample.position = glm::vec3(sample.pixel / glm::vec2(float(width), float(height)) * 2.0f - 1.0f, 0.5f);
+        return path;
+    };
+    for (const ComputeSite site : {ComputeSite::Host, ComputeSite::Device}) {
+        CoherenceTracker tracker(ctx(), width, height, site);
+        const CoherenceParams params{.slam_length_px = 64.0f};
+        // Frame 1: pieces of 60, 80 and 228 px, 6 px apart; with no votes each starts at
+        // phase 0, so T jumps between them by ρ·60 and ρ·80 (0.66 and 0.88 of a period).
+        std::vector<ScreenPath> pieces{on_screen(straight_path({10.0f, 32.0f}, {70.0f, 32.0f}, 2.0f)),
+                                       on_screen(straight_path({76.0f, 32.0f}, {156.0f, 32.0f}, 2.0f)),
+                                       on_screen(straight_path({162.0f, 32.0f}, {390.0f, 32.0f}, 2.0f))};
+        const std::vector<PathParam> before = tracker.update(pieces, CameraMatrices{}, {}, params);
+        ASSERT_EQ(pieces.size(), 3u);
+        auto t_before = [&](float x) -> std::optional<double> {
+            for (size_t p = 0; p < pieces.size(); ++p) {
+                const float x0 = pieces[p].samples.front().pixel.x, x1 = pieces[p].samples.back().pixel.x;
+                if (x >= x0 + 8.0f && x <= x1 - 8.0f) return double(before[p].rho) * (x - x0) + before[p].phi;
+            }
+            return std::nullopt;  // near a piece's end, or between pieces
+        };
+        // Frame 2: one path over all three.
+        std::vector<ScreenPath> merged{on_screen(straight_path({10.0f, 32.0f}, {390.0f, 32.0f}, 2.0f))};
+        const std::vector<PathParam> after = tracker.update(merged, CameraMatrices{}, {}, params);
+        EXPECT_GE(merged.size(), 3u);
+        size_t compared = 0, popped = 0;
+        for (size_t p = 0; p < merged.size(); ++p)
+            for (size_t k = 0; k < merged[p].samples.size(); ++k) {
+                const std::optional<double> t0 = t_before(merged[p].samples[k].pixel.x);
+                if (!t0) continue;
+                double dt = double(after[p].rho) * path_arclength(merged[p], k) + after[p].phi - *t0;
+                dt -= std::round(dt);
+                ++compared;
+                popped += std::abs(dt) > 0.05;
+            }
+        EXPECT_GT(compared, 140u);
+        EXPECT_EQ(popped, 0u) << (site == ComputeSite::Host ? "host" : "device") << " site, of " << compared;
+    }
+}
+
+// The seam between the pieces of a merged path stays where the earlier paths met, frame after
+// frame: a still view of two paths joined into one keeps its split at the middle of their gap
+// (where the splat's blend of the two phases is even), not at the first vote the kept fit
+// rejects, which lies a sprite radius towards the kept piece and would move the seam by that
+// much every frame.
+TEST_F(CoherenceGpu, AMergedPathsSeamStaysWhereThePathsMet) {
+    const int width = 400, height = 64;
+    auto on_screen = [&](ScreenPath path) {
+        for (auto& sample : path.samples)
+            sample.position = glm::vec3(sample.pixel / glm::vec2(float(width), float(height)) * 2.0f - 1.0f, 0.5f);
+        return path;
+    };
+    CoherenceTracker tracker(ctx(), width, height, ComputeSite::Host);
+    const CoherenceParams params{.slam_length_px = 64.0f};
+    std::vector<ScreenPath> apart{on_screen(straight_path({10.0f, 32.0f}, {150.0f, 32.0f}, 2.0f)),
+                                  on_screen(straight_path({156.0f, 32.0f}, {390.0f, 32.0f}, 2.0f))};
+    (void)tracker.update(apart, CameraMatrices{}, {}, params);
+    for (int frame = 0; frame < 6; ++frame) {
+        std::vector<ScreenPath> merged{on_screen(straight_path({10.0f, 32.0f}, {390.0f, 32.0f}, 2.0f))};
+        (void)tracker.update(merged, CameraMatrices{}, {}, params);
+        ASSERT_EQ(merged.size(), 2u) << "frame " << frame;
+        EXPECT_NEAR(merged[0].samples.back().pixel.x, 153.0f, 2.0f) << "frame " << frame;
+        EXPECT_EQ(merged[1].samples.front().pixel.x, merged[0].samples.back().pixel.x);
+    }
 }
 
 // A camera that scales the image about its centre by `zoom`.

@@ -500,8 +500,74 @@ std::vector<glm::vec4> CoherenceTracker::splat_buffer() const {
     return out;
 }
 
-void CoherenceTracker::split_merged_paths(std::vector<ScreenPath>& paths, VoteSet& votes, std::vector<PathFit>& fits,
-                                          const RansacParams& ransac) const {
+namespace {
+
+// The runs of at least `min_run` consecutive votes of [first, last) that `fit` rejects (farther
+// than inlier_px along the path), as inclusive vote ranges. Where a run borders accepted
+// votes and joins them at a seam between two phases, its end is moved to the middle of the
+// seam. The splat blends the two earlier paths' T over the sprite radius there, so the first
+// rejected vote lies a few pixels before the seam, on the fit's side; cutting there moves
+// the seam along the path by up to a sprite radius each frame, and the samples it passes jump
+// between the two phases. The run's own residual near the seam is a line in s through
+// kPlateau votes (within inlier_px) starting within kBlendVotes of the end: a constant for a
+// piece that ran the same way a frame earlier, a ramp for one that ran the other way. The
+// seam is the vote whose residual is nearest half of that line's value there. (Not half the
+// run's median: a run may join several earlier paths, and the one at its end is what the
+// seam divides from the fit.) Without such a line the end stays.
+std::vector<std::pair<uint32_t, uint32_t>> rejected_runs(const VoteSet& votes, uint32_t first, uint32_t last,
+                                                         const PathFit& fit, float inlier_px, uint32_t min_run) {
+    constexpr int64_t kPlateau = 4, kBlendVotes = 6;
+    auto residual = [&](int64_t v) { return votes.votes[size_t(v)].t - (fit.rho * votes.votes[size_t(v)].s + fit.phi); };
+    const float limit = inlier_px * std::abs(fit.rho);
+    // The seam at the run's end `end` (next to accepted votes), the run going on to `inner`.
+    auto seam = [&](int64_t end, int64_t inner) {
+        const int64_t step = inner >= end ? 1 : -1;
+        const int64_t starts = std::min(kBlendVotes, std::abs(inner - end) - kPlateau + 2);
+        auto s_of = [&](int64_t v) { return votes.votes[size_t(v)].s; };
+        for (int64_t i = 0; i < starts; ++i) {
+            // The run's own residual from u on: kPlateau votes on one line in s (a constant
+            // for a piece that ran the same way, a ramp for one that ran the other way).
+            const int64_t u = end + step * i, u_far = u + step * (kPlateau - 1);
+            const float ds = s_of(u_far) - s_of(u);
+            if (ds == 0.0f) continue;
+            const float slope = (residual(u_far) - residual(u)) / ds;
+            auto own = [&](int64_t w) { return residual(u) + slope * (s_of(w) - s_of(u)); };
+            bool straight = true;
+            for (int64_t j = 1; j + 1 < kPlateau && straight; ++j)
+                straight = std::abs(residual(u + step * j) - own(u + step * j)) <= limit;
+            if (!straight) continue;
+            // Where the blend is even, the residual is half the run's own there.
+            auto share = [&](int64_t w) { return residual(w) / own(w); };
+            int64_t cut = end;
+            while (cut != u && share(cut) < 0.5f) cut += step;
+            // The pieces share the seam's sample and both splat it: the vote whose blend is
+            // the most even is where the next frame finds the seam again.
+            if (std::abs(share(cut - step) - 0.5f) < std::abs(share(cut) - 0.5f)) cut -= step;
+            return cut;
+        }
+        return end;
+    };
+    std::vector<std::pair<uint32_t, uint32_t>> runs;
+    uint32_t run_start = last;
+    for (uint32_t v = first; v <= last; ++v) {
+        const bool outlier = v < last && std::abs(residual(v)) > limit;
+        if (outlier && run_start == last) run_start = v;
+        if (outlier || run_start == last) continue;
+        int64_t a = run_start, b = int64_t(v) - 1;
+        run_start = last;
+        if (b + 1 - a < int64_t(min_run)) continue;
+        const int64_t a_seam = a > int64_t(first) ? seam(a, b) : a;
+        const int64_t b_seam = b + 1 < int64_t(last) ? seam(b, a) : b;
+        if (b_seam > a_seam) runs.push_back({uint32_t(a_seam), uint32_t(b_seam)});
+    }
+    return runs;
+}
+
+}  // namespace
+
+std::vector<bool> CoherenceTracker::split_merged_paths(std::vector<ScreenPath>& paths, VoteSet& votes,
+                                                       std::vector<PathFit>& fits, const RansacParams& ransac,
+                                                       const std::vector<bool>& examine) const {
     constexpr uint32_t kMinRun = 8;  // consecutive rejected votes that make a piece of their own
     std::vector<ScreenPath> out_paths;
     VoteSet out_votes;
@@ -534,18 +600,9 @@ void CoherenceTracker::split_merged_paths(std::vector<ScreenPath>& paths, VoteSe
         const uint32_t first = votes.offsets[p], last = votes.offsets[p + 1];
         // Runs of consecutive votes the fit rejects, as sample ranges.
         std::vector<std::pair<size_t, size_t>> runs;
-        if (fit.fitted && last - first >= 2 * kMinRun) {
-            const float limit = ransac.inlier_px * std::abs(fit.rho);
-            uint32_t run_start = last;
-            for (uint32_t v = first; v <= last; ++v) {
-                const bool outlier = v < last && std::abs(votes.votes[v].t - (fit.rho * votes.votes[v].s + fit.phi)) > limit;
-                if (outlier && run_start == last) run_start = v;
-                if (!outlier && run_start != last) {
-                    if (v - run_start >= kMinRun) runs.push_back({votes.sample[run_start], votes.sample[v - 1]});
-                    run_start = last;
-                }
-            }
-        }
+        if (examine[p] && fit.fitted && last - first >= 2 * kMinRun)
+            for (const auto& [a, b] : rejected_runs(votes, first, last, fit, ransac.inlier_px, kMinRun))
+                runs.push_back({votes.sample[a], votes.sample[b]});
         if (runs.empty()) {
             add_piece(paths[p], p, 0, paths[p].samples.size() - 1, &fit);
             out_fits.back() = fit;  // unchanged (also when it has no fit)
@@ -572,6 +629,9 @@ void CoherenceTracker::split_merged_paths(std::vector<ScreenPath>& paths, VoteSe
     paths = std::move(out_paths);
     votes = std::move(out_votes);
     fits = std::move(out_fits);
+    std::vector<bool> fitted_alone(paths.size(), false);
+    for (size_t i : refit) fitted_alone[i] = true;
+    return fitted_alone;
 }
 
 std::vector<PathParam> CoherenceTracker::update(std::vector<ScreenPath>& paths, const CameraMatrices& camera,
@@ -592,7 +652,12 @@ std::vector<PathParam> CoherenceTracker::update(std::vector<ScreenPath>& paths, 
         // RANSAC's fit finds each path's direction along the previous parameterization and the
         // runs of votes that disagree with it (pieces of paths that were apart a frame earlier).
         fits = fitter_.fit(votes, params.ransac);
-        split_merged_paths(paths, votes, fits, params.ransac);
+        // A piece fitted on its own may itself join pieces of two earlier paths (three or
+        // more merged into one): its own fit's rejected runs split it again.
+        std::vector<bool> examine(paths.size(), true);
+        for (int round = 0; round < kSplitRounds && std::find(examine.begin(), examine.end(), true) != examine.end();
+             ++round)
+            examine = split_merged_paths(paths, votes, fits, params.ransac, examine);
     } else {
         view_rho_ = 0.0f;  // back to the coherent policy, the scale starts afresh with the splat's T
     }

@@ -9,7 +9,9 @@
 //      the view's zoom along itself; a suggestive contour stays where it is, moved by the
 //      zoom alone (gather_votes says why);
 //   2. fit: RANSAC per path (ransac_gpu.h) finds each path's direction and the runs of votes
-//      that disagree (merged paths, split there); ρ is not the path's own, as in §4.2, but
+//      that disagree (merged paths, split there at the middle of each seam, and the pieces
+//      fitted and split again, so that a path joining three earlier ones keeps all three
+//      phases: §4.2's merge popping); ρ is not the path's own, as in §4.2, but
 //      one scale for the set carried through the view's zoom, and each path fits its phase φ
 //      to its votes (fit_phase; no votes: φ = 0). Why: update_view_scale in coherence.cpp;
 //   3. splat: every sample writes t = T(s) as a sprite of radius δ,
@@ -144,9 +146,13 @@ public:
 private:
     // Where a long run of a path's votes disagrees with its fit, the path merged pieces that
     // were separate paths a frame earlier (the popping §4.2 notes): split it there, keep the
-    // fit on the agreeing pieces and fit the others on their own (RANSAC again).
-    void split_merged_paths(std::vector<ScreenPath>& paths, VoteSet& votes, std::vector<PathFit>& fits,
-                            const RansacParams& ransac) const;
+    // fit on the agreeing pieces and fit the others on their own (RANSAC again). Only the
+    // paths with `examine` set are looked at; returns, per path after, whether it is such a
+    // piece fitted on its own (update() looks at those again, up to kSplitRounds times).
+    [[nodiscard]] std::vector<bool> split_merged_paths(std::vector<ScreenPath>& paths, VoteSet& votes,
+                                                       std::vector<PathFit>& fits, const RansacParams& ransac,
+                                                       const std::vector<bool>& examine) const;
+    static constexpr int kSplitRounds = 8;
     // Each visible sample's surface point a frame earlier (moved with its face), projected
     // with the previous camera: its pixel and clip w, and its NDC depth.
     struct Carried {
