@@ -277,6 +277,26 @@ TEST_F(CoherenceGpu, AMergedPathsSeamStaysWhereThePathsMet) {
     }
 }
 
+// Two paths that share an end (a chain cut at a vertex) have two samples at that pixel, each
+// with its own path's phase. A still frame slides nowhere: each sample is compared with its
+// own path's, not with whichever of the two the search happened to visit last.
+TEST(Coherence, SlidingComparesASharedEndWithItsOwnPath) {
+    auto frame = [](int f) {
+        PathDump dump{.frame = f};
+        DumpPath a{.type = "silhouette", .line_set = "silhouette", .rho = 0.1f, .samples = {}};
+        DumpPath b = a;
+        for (int x = 0; x <= 20; x += 2) a.samples.push_back({{float(x), 5.0f}, float(x), 0.1f * float(x), 0.1f * float(x)});
+        for (int x = 20; x <= 40; x += 2)
+            b.samples.push_back({{float(x), 5.0f}, float(x - 20), 0.45f + 0.1f * float(x - 20), 0.0f});
+        dump.paths = {a, b};
+        return dump;
+    };
+    const SlidingMeasure still = measure_sliding({frame(0), frame(1), frame(2)});
+    EXPECT_EQ(still.pairs, 2u * 22u);
+    EXPECT_EQ(still.pops, 0.0);
+    EXPECT_EQ(still.p90_dt, 0.0);
+}
+
 // A camera that scales the image about its centre by `zoom`.
 CameraMatrices zoomed_camera(float zoom) {
     CameraMatrices camera;

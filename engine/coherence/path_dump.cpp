@@ -78,6 +78,12 @@ PathDump parse_path_dump(const std::string& text, const std::string& name) {
 
 namespace {
 
+// |a − b| wrapped to half a period.
+double wrapped_dt(double a, double b) {
+    const double dt = a - b;
+    return std::abs(dt - std::round(dt));
+}
+
 // Samples of a frame in a grid of `cell`-pixel buckets for neighbour queries.
 struct SampleGrid {
     struct Entry {
@@ -106,17 +112,27 @@ struct SampleGrid {
                     if (glm::length(e.sample().pixel - p) <= radius) f(e);
             }
     }
-    // The nearest sample of line set `line_set` within `radius` (of equally near ones, the
-    // last visited).
-    std::optional<Entry> nearest(glm::vec2 p, float radius, const std::string& line_set) const {
-        std::optional<Entry> best;
-        float best_d = radius;
+    // Of the samples of `line_set` within `radius` (by `distance(entry)`), those as near as
+    // the nearest to 0.05 px, and of those the one with the least `score(entry)`. Equally
+    // near samples are the ends two paths share (a chain cut at a vertex: one point ends a
+    // path and starts the next, each with its own phase) or a run in two pieces; the
+    // callers score by phase difference, so that the point's own path is the one compared.
+    template <class Distance, class Score>
+    std::optional<Entry> nearest(glm::vec2 p, float radius, const std::string& line_set, Distance distance,
+                                 Score score) const {
+        constexpr float kTie = 0.05f;
+        float nearest_d = radius;
         for_each_within(p, radius, [&](const Entry& e) {
-            if (e.path->line_set != line_set) return;
-            const float d = glm::length(e.sample().pixel - p);
-            if (d <= best_d) {
-                best_d = d;
+            if (e.path->line_set == line_set) nearest_d = std::min(nearest_d, distance(e));
+        });
+        std::optional<Entry> best;
+        double best_score = 0.0;
+        for_each_within(p, radius, [&](const Entry& e) {
+            if (e.path->line_set != line_set || distance(e) > nearest_d + kTie) return;
+            const double sc = score(e);
+            if (!best || sc < best_score) {
                 best = e;
+                best_score = sc;
             }
         });
         return best;
@@ -173,12 +189,13 @@ SlidingMeasure measure_sliding(const std::vector<PathDump>& frames, float match_
         const SampleGrid previous(frames[f - 1], std::max(match_px, 1.0f));
         for (const auto& path : frames[f].paths)
             for (const auto& s : path.samples) {
-                const std::optional<SampleGrid::Entry> match = previous.nearest(s.pixel, match_px, path.line_set);
+                auto distance = [&](const SampleGrid::Entry& e) { return glm::length(e.sample().pixel - s.pixel); };
+                auto phase = [&](const SampleGrid::Entry& e) { return wrapped_dt(s.t, e.sample().t); };
+                const std::optional<SampleGrid::Entry> match = previous.nearest(s.pixel, match_px, path.line_set, distance, phase);
                 if (!match) continue;
-                double dt = double(s.t) - double(match->sample().t);
-                dt -= std::round(dt);  // wrapped to half a period
-                dts.push_back(std::abs(dt));
-                if (path.rho != 0.0f) pixels.push_back(std::abs(dt) / std::abs(double(path.rho)));
+                const double dt = phase(*match);
+                dts.push_back(dt);
+                if (path.rho != 0.0f) pixels.push_back(dt / std::abs(double(path.rho)));
             }
     }
     const Quantiles periods = quantiles(dts), along = quantiles(pixels);
@@ -191,21 +208,12 @@ PhaseError measure_phase_error(const PathDump& frame, const PathDump& reference,
     const SampleGrid grid(reference, std::max(match_px, 1.0f));
     for (const auto& path : frame.paths)
         for (const auto& s : path.samples) {
-            // The nearest reference path of the same set; where paths meet (shared ends, a run
-            // in two pieces) several lie as near, and the closest phase among them counts.
-            float best_d = match_px;
-            double best_dt = -1.0;
-            grid.for_each_within(s.pixel, match_px, [&](const SampleGrid::Entry& e) {
-                if (e.path->line_set != path.line_set) return;
-                const PathPoint q = point_on_path(e, s.pixel);
-                double dt = double(s.t) - q.t;
-                dt = std::abs(dt - std::round(dt));
-                if (q.distance < best_d - 0.05f || (q.distance < best_d + 0.05f && (best_dt < 0.0 || dt < best_dt))) {
-                    best_d = std::min(best_d, q.distance);
-                    best_dt = dt;
-                }
-            });
-            if (best_dt >= 0.0) dts.push_back(best_dt);
+            // The nearest reference path of the same set; where several lie as near (shared
+            // ends, a run in two pieces), the closest phase among them counts.
+            auto distance = [&](const SampleGrid::Entry& e) { return point_on_path(e, s.pixel).distance; };
+            auto phase = [&](const SampleGrid::Entry& e) { return wrapped_dt(s.t, point_on_path(e, s.pixel).t); };
+            const std::optional<SampleGrid::Entry> match = grid.nearest(s.pixel, match_px, path.line_set, distance, phase);
+            if (match) dts.push_back(phase(*match));
         }
     const Quantiles q = quantiles(dts);
     return {.median = q.median, .p90 = q.p90, .max = q.max, .over_quarter = q.over_quarter, .pairs = dts.size()};

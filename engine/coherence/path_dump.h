@@ -9,7 +9,9 @@
 //
 // Measures (the coherence issue's acceptance, computed from dumps so outside tools agree):
 //   sliding — for consecutive frames, |Δt| (wrapped to half a period) between samples of the
-//             two frames lying within 1.5 px of each other on screen, each matched in its own
+//             two frames lying within 1.5 px of each other on screen (the nearest; of samples
+//             as near to 0.05 px, such as the end one path shares with the next, the nearest
+//             in phase), each matched in its own
 //             line set (each set has its own texture and tracker, so T of a crease and T of a
 //             silhouette crossing it are not comparable): its median, its 90th
 //             percentile (the tail a viewer sees), and the share of "pops" (|Δt| > 0.25);
