@@ -94,6 +94,14 @@ ScreenPath straight_path(glm::vec2 from, glm::vec2 to, float spacing) {
     return path;
 }
 
+// A straight path whose surface points the identity camera projects back onto its samples
+// (a still 2D view of a `size` image: each vote lands where its sample is).
+ScreenPath still_path(glm::vec2 from, glm::vec2 to, float spacing, glm::vec2 size) {
+    ScreenPath path = straight_path(from, to, spacing);
+    for (auto& sample : path.samples) sample.position = glm::vec3(sample.pixel / size * 2.0f - 1.0f, 0.5f);
+    return path;
+}
+
 TEST(Coherence, ResampleAtPhaseSitsOnMultiplesOfTheStep) {
     const ScreenPath path = straight_path({10, 10}, {110, 60}, 2.0f);
     const PathParam param{.rho = 0.013f, .phi = 0.37f};
@@ -181,16 +189,11 @@ TEST_F(CoherenceGpu, StillPathsKeepTheirScaleAndFragmentsAreDropped) {
     // shrinks frame after frame; a 5 px fragment is below the minimum stroke length.
     CoherenceTracker tracker(ctx(), 96, 64);
     const CoherenceParams params{.slam_length_px = 64.0f};
-    // Surface points that the identity camera projects back onto the samples.
-    auto on_screen = [](ScreenPath path) {
-        for (auto& sample : path.samples)
-            sample.position = glm::vec3(sample.pixel / glm::vec2(96.0f, 64.0f) * 2.0f - 1.0f, 0.5f);
-        return path;
-    };
+    const glm::vec2 size(96.0f, 64.0f);
     std::vector<PathParam> first, last;
     for (int frame = 0; frame < 6; ++frame) {
-        std::vector<ScreenPath> paths{on_screen(straight_path({10.0f, 20.0f}, {40.0f, 24.0f}, 2.0f)),
-                                      on_screen(straight_path({10.0f, 50.0f}, {15.0f, 50.0f}, 1.0f))};
+        std::vector<ScreenPath> paths{still_path({10.0f, 20.0f}, {40.0f, 24.0f}, 2.0f, size),
+                                      still_path({10.0f, 50.0f}, {15.0f, 50.0f}, 1.0f, size)};
         last = tracker.update(paths, CameraMatrices{}, {}, params);
         ASSERT_EQ(paths.size(), 1u);
         ASSERT_EQ(last.size(), 1u);
@@ -210,19 +213,15 @@ TEST_F(CoherenceGpu, StillPathsKeepTheirScaleAndFragmentsAreDropped) {
 // phases and is split again. Every sample keeps the T of the piece it came from.
 TEST_F(CoherenceGpu, PathsMergedFromThreePiecesKeepEachPiecesPhase) {
     const int width = 400, height = 64;
-    auto on_screen = [&](ScreenPath path) {
-        for (auto& sample : path.samples)
-            sample.position = glm::vec3(sample.pixel / glm::vec2(float(width), float(height)) * 2.0f - 1.0f, 0.5f);
-        return path;
-    };
+    const glm::vec2 size(width, height);
     for (const ComputeSite site : {ComputeSite::Host, ComputeSite::Device}) {
         CoherenceTracker tracker(ctx(), width, height, site);
         const CoherenceParams params{.slam_length_px = 64.0f};
         // Frame 1: pieces of 60, 80 and 228 px, 6 px apart; with no votes each starts at
         // phase 0, so T jumps between them by ρ·60 and ρ·80 (0.66 and 0.88 of a period).
-        std::vector<ScreenPath> pieces{on_screen(straight_path({10.0f, 32.0f}, {70.0f, 32.0f}, 2.0f)),
-                                       on_screen(straight_path({76.0f, 32.0f}, {156.0f, 32.0f}, 2.0f)),
-                                       on_screen(straight_path({162.0f, 32.0f}, {390.0f, 32.0f}, 2.0f))};
+        std::vector<ScreenPath> pieces{still_path({10.0f, 32.0f}, {70.0f, 32.0f}, 2.0f, size),
+                                       still_path({76.0f, 32.0f}, {156.0f, 32.0f}, 2.0f, size),
+                                       still_path({162.0f, 32.0f}, {390.0f, 32.0f}, 2.0f, size)};
         const std::vector<PathParam> before = tracker.update(pieces, CameraMatrices{}, {}, params);
         ASSERT_EQ(pieces.size(), 3u);
         auto t_before = [&](float x) -> std::optional<double> {
@@ -233,7 +232,7 @@ TEST_F(CoherenceGpu, PathsMergedFromThreePiecesKeepEachPiecesPhase) {
             return std::nullopt;  // near a piece's end, or between pieces
         };
         // Frame 2: one path over all three.
-        std::vector<ScreenPath> merged{on_screen(straight_path({10.0f, 32.0f}, {390.0f, 32.0f}, 2.0f))};
+        std::vector<ScreenPath> merged{still_path({10.0f, 32.0f}, {390.0f, 32.0f}, 2.0f, size)};
         const std::vector<PathParam> after = tracker.update(merged, CameraMatrices{}, {}, params);
         EXPECT_GE(merged.size(), 3u);
         size_t compared = 0, popped = 0;
@@ -258,18 +257,14 @@ TEST_F(CoherenceGpu, PathsMergedFromThreePiecesKeepEachPiecesPhase) {
 // much every frame.
 TEST_F(CoherenceGpu, AMergedPathsSeamStaysWhereThePathsMet) {
     const int width = 400, height = 64;
-    auto on_screen = [&](ScreenPath path) {
-        for (auto& sample : path.samples)
-            sample.position = glm::vec3(sample.pixel / glm::vec2(float(width), float(height)) * 2.0f - 1.0f, 0.5f);
-        return path;
-    };
+    const glm::vec2 size(width, height);
     CoherenceTracker tracker(ctx(), width, height, ComputeSite::Host);
     const CoherenceParams params{.slam_length_px = 64.0f};
-    std::vector<ScreenPath> apart{on_screen(straight_path({10.0f, 32.0f}, {150.0f, 32.0f}, 2.0f)),
-                                  on_screen(straight_path({156.0f, 32.0f}, {390.0f, 32.0f}, 2.0f))};
+    std::vector<ScreenPath> apart{still_path({10.0f, 32.0f}, {150.0f, 32.0f}, 2.0f, size),
+                                  still_path({156.0f, 32.0f}, {390.0f, 32.0f}, 2.0f, size)};
     (void)tracker.update(apart, CameraMatrices{}, {}, params);
     for (int frame = 0; frame < 6; ++frame) {
-        std::vector<ScreenPath> merged{on_screen(straight_path({10.0f, 32.0f}, {390.0f, 32.0f}, 2.0f))};
+        std::vector<ScreenPath> merged{still_path({10.0f, 32.0f}, {390.0f, 32.0f}, 2.0f, size)};
         (void)tracker.update(merged, CameraMatrices{}, {}, params);
         ASSERT_EQ(merged.size(), 2u) << "frame " << frame;
         EXPECT_NEAR(merged[0].samples.back().pixel.x, 153.0f, 2.0f) << "frame " << frame;
