@@ -5,6 +5,7 @@
 #include <fstream>
 #include <numbers>
 #include <optional>
+#include <string>
 
 #include <nlohmann/json.hpp>
 
@@ -251,25 +252,34 @@ TEST_F(CoherenceGpu, PathsMergedFromThreePiecesKeepEachPiecesPhase) {
 }
 
 // The seam between the pieces of a merged path stays where the earlier paths met, frame after
-// frame: a still view of two paths joined into one keeps its split at the middle of their gap
-// (where the splat's blend of the two phases is even), not at the first vote the kept fit
-// rejects, which lies a sprite radius towards the kept piece and would move the seam by that
-// much every frame.
+// frame: a still view of two paths joined into one keeps its split at the same sample, in the
+// middle of their gap (where the splat's blend of the two phases is even), not at the first
+// vote the kept fit rejects, which lies a sprite radius towards the kept piece and would move
+// the seam by a sample every frame. The longer piece keeps the fit: on the right (the run's
+// end is the seam) and on the left (its start is), on both compute sites.
 TEST_F(CoherenceGpu, AMergedPathsSeamStaysWhereThePathsMet) {
     const int width = 400, height = 64;
     const glm::vec2 size(width, height);
-    CoherenceTracker tracker(ctx(), width, height, ComputeSite::Host);
-    const CoherenceParams params{.slam_length_px = 64.0f};
-    std::vector<ScreenPath> apart{still_path({10.0f, 32.0f}, {150.0f, 32.0f}, 2.0f, size),
-                                  still_path({156.0f, 32.0f}, {390.0f, 32.0f}, 2.0f, size)};
-    (void)tracker.update(apart, CameraMatrices{}, {}, params);
-    for (int frame = 0; frame < 6; ++frame) {
-        std::vector<ScreenPath> merged{still_path({10.0f, 32.0f}, {390.0f, 32.0f}, 2.0f, size)};
-        (void)tracker.update(merged, CameraMatrices{}, {}, params);
-        ASSERT_EQ(merged.size(), 2u) << "frame " << frame;
-        EXPECT_NEAR(merged[0].samples.back().pixel.x, 153.0f, 2.0f) << "frame " << frame;
-        EXPECT_EQ(merged[1].samples.front().pixel.x, merged[0].samples.back().pixel.x);
-    }
+    for (const ComputeSite site : {ComputeSite::Host, ComputeSite::Device})
+        for (const float gap : {150.0f, 230.0f}) {
+            const std::string where = std::string(site == ComputeSite::Host ? "host" : "device") + ", gap at " +
+                                      std::to_string(int(gap) + 3);
+            CoherenceTracker tracker(ctx(), width, height, site);
+            const CoherenceParams params{.slam_length_px = 64.0f};
+            std::vector<ScreenPath> apart{still_path({10.0f, 32.0f}, {gap, 32.0f}, 2.0f, size),
+                                          still_path({gap + 6.0f, 32.0f}, {390.0f, 32.0f}, 2.0f, size)};
+            (void)tracker.update(apart, CameraMatrices{}, {}, params);
+            float seam = 0.0f;
+            for (int frame = 0; frame < 6; ++frame) {
+                std::vector<ScreenPath> merged{still_path({10.0f, 32.0f}, {390.0f, 32.0f}, 2.0f, size)};
+                (void)tracker.update(merged, CameraMatrices{}, {}, params);
+                ASSERT_EQ(merged.size(), 2u) << where << ", frame " << frame;
+                EXPECT_EQ(merged[1].samples.front().pixel.x, merged[0].samples.back().pixel.x) << where;
+                if (frame == 0) seam = merged[0].samples.back().pixel.x;
+                EXPECT_NEAR(seam, gap + 3.0f, 2.0f) << where;
+                EXPECT_EQ(merged[0].samples.back().pixel.x, seam) << where << ", frame " << frame;
+            }
+        }
 }
 
 // Two paths that share an end (a chain cut at a vertex) have two samples at that pixel, each

@@ -510,10 +510,12 @@ namespace {
 // the seam along the path by up to a sprite radius each frame, and the samples it passes jump
 // between the two phases. The run's own residual near the seam is a line in s through
 // kPlateau votes (within inlier_px) starting within kBlendVotes of the end: a constant for a
-// piece that ran the same way a frame earlier, a ramp for one that ran the other way. The
-// seam is the vote whose residual is nearest half of that line's value there. (Not half the
+// piece that ran the same way a frame earlier, a ramp for one that ran the other way. Going
+// in from the end, the seam is the first vote whose residual is at least half of that
+// line's value there, or the vote before it if that one's is nearer half. (Not half the
 // run's median: a run may join several earlier paths, and the one at its end is what the
-// seam divides from the fit.) Without such a line the end stays.
+// seam divides from the fit.) Without such a line, or if moving both ends would leave no
+// run, the ends stay where the fit's rejection put them.
 std::vector<std::pair<uint32_t, uint32_t>> rejected_runs(const VoteSet& votes, uint32_t first, uint32_t last,
                                                          const PathFit& fit, float inlier_px, uint32_t min_run) {
     constexpr int64_t kPlateau = 4, kBlendVotes = 6;
@@ -535,6 +537,10 @@ std::vector<std::pair<uint32_t, uint32_t>> rejected_runs(const VoteSet& votes, u
             bool straight = true;
             for (int64_t j = 1; j + 1 < kPlateau && straight; ++j)
                 straight = std::abs(residual(u + step * j) - own(u + step * j)) <= limit;
+            // Extended back to the end (and the accepted vote before it), the line stays
+            // clear of 0 on one side, so that the shares below are finite and mean a blend.
+            for (int64_t w = end - step; w != u && straight; w += step)
+                straight = std::abs(own(w)) > limit && (own(w) > 0.0f) == (own(u) > 0.0f);
             if (!straight) continue;
             // Where the blend is even, the residual is half the run's own there.
             auto share = [&](int64_t w) { return residual(w) / own(w); };
@@ -542,7 +548,7 @@ std::vector<std::pair<uint32_t, uint32_t>> rejected_runs(const VoteSet& votes, u
             while (cut != u && share(cut) < 0.5f) cut += step;
             // The pieces share the seam's sample and both splat it: the vote whose blend is
             // the most even is where the next frame finds the seam again.
-            if (std::abs(share(cut - step) - 0.5f) < std::abs(share(cut) - 0.5f)) cut -= step;
+            if (cut != end && std::abs(share(cut - step) - 0.5f) < std::abs(share(cut) - 0.5f)) cut -= step;
             return cut;
         }
         return end;
@@ -555,10 +561,15 @@ std::vector<std::pair<uint32_t, uint32_t>> rejected_runs(const VoteSet& votes, u
         if (outlier || run_start == last) continue;
         int64_t a = run_start, b = int64_t(v) - 1;
         run_start = last;
-        if (b + 1 - a < int64_t(min_run)) continue;
+        // Fewer than min_run rejected votes are noise; all of them, a fit that explains none
+        // of its own votes (splitting would give the same piece back).
+        if (b + 1 - a < int64_t(min_run) || (a == int64_t(first) && b + 1 == int64_t(last))) continue;
         const int64_t a_seam = a > int64_t(first) ? seam(a, b) : a;
         const int64_t b_seam = b + 1 < int64_t(last) ? seam(b, a) : b;
-        if (b_seam > a_seam) runs.push_back({uint32_t(a_seam), uint32_t(b_seam)});
+        if (b_seam > a_seam)
+            runs.push_back({uint32_t(a_seam), uint32_t(b_seam)});
+        else
+            runs.push_back({uint32_t(a), uint32_t(b)});
     }
     return runs;
 }
@@ -603,9 +614,15 @@ std::vector<bool> CoherenceTracker::split_merged_paths(std::vector<ScreenPath>& 
         if (examine[p] && fit.fitted && last - first >= 2 * kMinRun)
             for (const auto& [a, b] : rejected_runs(votes, first, last, fit, ransac.inlier_px, kMinRun))
                 runs.push_back({votes.sample[a], votes.sample[b]});
-        if (runs.empty()) {
-            add_piece(paths[p], p, 0, paths[p].samples.size() - 1, &fit);
-            out_fits.back() = fit;  // unchanged (also when it has no fit)
+        if (runs.empty()) {  // whole: moved with its votes and fit (also when it has no fit)
+            for (uint32_t v = first; v < last; ++v) {
+                out_votes.votes.push_back(votes.votes[v]);
+                out_votes.sample.push_back(votes.sample[v]);
+            }
+            out_votes.offsets.push_back(uint32_t(out_votes.votes.size()));
+            paths[p].closed = false;  // as every piece leaves (add_piece), since 65e4264
+            out_paths.push_back(std::move(paths[p]));
+            out_fits.push_back(fit);
             continue;
         }
         // Alternate kept and rejected pieces; neighbours share their boundary sample.

@@ -152,6 +152,8 @@ private:
     [[nodiscard]] std::vector<bool> split_merged_paths(std::vector<ScreenPath>& paths, VoteSet& votes,
                                                        std::vector<PathFit>& fits, const RansacParams& ransac,
                                                        const std::vector<bool>& examine) const;
+    // A path joining n earlier ones needs at most n − 1 rounds; more than 9 pieces of
+    // different earlier paths in one path is rarer than the cost of looking again.
     static constexpr int kSplitRounds = 8;
     // Each visible sample's surface point a frame earlier (moved with its face), projected
     // with the previous camera: its pixel and clip w, and its NDC depth.

@@ -112,8 +112,9 @@ struct SampleGrid {
                     if (glm::length(e.sample().pixel - p) <= radius) f(e);
             }
     }
-    // Of the samples of `line_set` within `radius` (by `distance(entry)`), those as near as
-    // the nearest to 0.05 px, and of those the one with the least `score(entry)`. Equally
+    // Of the samples of `line_set` whose pixel lies within `radius`, those whose
+    // `distance(entry)` is within 0.05 px of the least, and of those the one with the least
+    // `score(entry)`. Equally
     // near samples are the ends two paths share (a chain cut at a vertex: one point ends a
     // path and starts the next, each with its own phase) or a run in two pieces; the
     // callers score by phase difference, so that the point's own path is the one compared.

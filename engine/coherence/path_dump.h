@@ -11,10 +11,10 @@
 //   sliding — for consecutive frames, |Δt| (wrapped to half a period) between samples of the
 //             two frames lying within 1.5 px of each other on screen (the nearest; of samples
 //             as near to 0.05 px, such as the end one path shares with the next, the nearest
-//             in phase), each matched in its own
-//             line set (each set has its own texture and tracker, so T of a crease and T of a
-//             silhouette crossing it are not comparable): its median, its 90th
-//             percentile (the tail a viewer sees), and the share of "pops" (|Δt| > 0.25);
+//             in phase), each matched in its own line set (each set has its own texture and
+//             tracker, so T of a crease and T of a silhouette crossing it are not
+//             comparable): its median, its 90th percentile (the tail a viewer sees), and the
+//             share of "pops" (|Δt| > 0.25);
 //   stretch — per sample, the on-screen length of one period of the sampled texture,
 //             ds/du, and the share of samples inside the best factor-of-2 band [x, 2x).
 #pragma once
