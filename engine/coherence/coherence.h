@@ -11,7 +11,7 @@
 //   2. fit: RANSAC per path (ransac_gpu.h) finds each path's direction and the runs of votes
 //      that disagree (merged paths, split there at the middle of each seam, and the pieces
 //      fitted and split again, so that a path joining three earlier ones keeps all three
-//      phases: §4.2's merge popping); ρ is not the path's own, as in §4.2, but
+//      phases: §4.2's merge popping; path_split.h); ρ is not the path's own, as in §4.2, but
 //      one scale for the set carried through the view's zoom, and each path fits its phase φ
 //      to its votes (fit_phase; no votes: φ = 0). Why: update_view_scale in coherence.cpp;
 //   3. splat: every sample writes t = T(s) as a sprite of radius δ,
@@ -111,7 +111,7 @@ public:
     // splats them for the next frame. Visible paths shorter than min_stroke_length_px are
     // removed, closed loops may be rotated to start at the seam they
     // inherited, and paths that merged pieces of different earlier paths split (see
-    // coherence.cpp), so `paths` may change; the result has one entry per path after.
+    // path_split.h), so `paths` may change; the result has one entry per path after.
     // `votes_out` (optional) receives the votes used. `timer` (optional) gets "ransac" and
     // "splat" on the device site; on the host site, and for an empty splat, it is not used.
     [[nodiscard]] std::vector<PathParam> update(std::vector<ScreenPath>& paths, const CameraMatrices& camera,
@@ -144,17 +144,6 @@ public:
     [[nodiscard]] std::vector<glm::vec4> splat_buffer() const;
 
 private:
-    // Where a long run of a path's votes disagrees with its fit, the path merged pieces that
-    // were separate paths a frame earlier (the popping §4.2 notes): split it there, keep the
-    // fit on the agreeing pieces and fit the others on their own (RANSAC again). Only the
-    // paths with `examine` set are looked at; returns, per path after, whether it is such a
-    // piece fitted on its own (update() looks at those again, up to kSplitRounds times).
-    [[nodiscard]] std::vector<bool> split_merged_paths(std::vector<ScreenPath>& paths, VoteSet& votes,
-                                                       std::vector<PathFit>& fits, const RansacParams& ransac,
-                                                       const std::vector<bool>& examine) const;
-    // A path joining n earlier ones needs at most n − 1 rounds; more than 9 pieces of
-    // different earlier paths in one path is rarer than the cost of looking again.
-    static constexpr int kSplitRounds = 8;
     // Each visible sample's surface point a frame earlier (moved with its face), projected
     // with the previous camera: its pixel and clip w, and its NDC depth.
     struct Carried {

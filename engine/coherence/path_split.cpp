@@ -1,0 +1,172 @@
+#include "coherence/path_split.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <utility>
+
+namespace lw {
+
+namespace {
+
+// The runs of at least `min_run` consecutive votes of [first, last) that `fit` rejects (farther
+// than inlier_px along the path), as inclusive vote ranges. Where a run borders accepted
+// votes and joins them at a seam between two phases, its end is moved to the middle of the
+// seam. The splat blends the two earlier paths' T over the sprite radius there, so the first
+// rejected vote lies a few pixels before the seam, on the fit's side; cutting there moves
+// the seam along the path by up to a sprite radius each frame, and the samples it passes jump
+// between the two phases. The run's own residual near the seam is a line in s through
+// kPlateau votes (within inlier_px) starting within kBlendVotes of the end: a constant for a
+// piece that ran the same way a frame earlier, a ramp for one that ran the other way. Going
+// in from the end, the seam is the first vote whose residual is at least half of that
+// line's value there, or the vote before it if that one's is nearer half. (Not half the
+// run's median: a run may join several earlier paths, and the one at its end is what the
+// seam divides from the fit.) Without such a line, or if moving both ends would leave no
+// run, the ends stay where the fit's rejection put them.
+std::vector<std::pair<uint32_t, uint32_t>> rejected_runs(const VoteSet& votes, uint32_t first, uint32_t last,
+                                                         const PathFit& fit, float inlier_px, uint32_t min_run) {
+    constexpr int64_t kPlateau = 4, kBlendVotes = 6;
+    auto residual = [&](int64_t v) { return votes.votes[size_t(v)].t - (fit.rho * votes.votes[size_t(v)].s + fit.phi); };
+    const float limit = inlier_px * std::abs(fit.rho);
+    // The seam at the run's end `end` (next to accepted votes), the run going on to `inner`.
+    auto seam = [&](int64_t end, int64_t inner) {
+        const int64_t step = inner >= end ? 1 : -1;
+        const int64_t starts = std::min(kBlendVotes, std::abs(inner - end) - kPlateau + 2);
+        auto s_of = [&](int64_t v) { return votes.votes[size_t(v)].s; };
+        for (int64_t i = 0; i < starts; ++i) {
+            // The run's own residual from u on: kPlateau votes on one line in s (a constant
+            // for a piece that ran the same way, a ramp for one that ran the other way).
+            const int64_t u = end + step * i, u_far = u + step * (kPlateau - 1);
+            const float ds = s_of(u_far) - s_of(u);
+            if (ds == 0.0f) continue;
+            const float slope = (residual(u_far) - residual(u)) / ds;
+            auto own = [&](int64_t w) { return residual(u) + slope * (s_of(w) - s_of(u)); };
+            bool straight = true;
+            for (int64_t j = 1; j + 1 < kPlateau && straight; ++j)
+                straight = std::abs(residual(u + step * j) - own(u + step * j)) <= limit;
+            // Extended back to the end (and the accepted vote before it), the line stays
+            // clear of 0 on one side, so that the shares below are finite and mean a blend.
+            for (int64_t w = end - step; w != u && straight; w += step)
+                straight = std::abs(own(w)) > limit && (own(w) > 0.0f) == (own(u) > 0.0f);
+            if (!straight) continue;
+            // Where the blend is even, the residual is half the run's own there.
+            auto share = [&](int64_t w) { return residual(w) / own(w); };
+            int64_t cut = end;
+            while (cut != u && share(cut) < 0.5f) cut += step;
+            // The pieces share the seam's sample and both splat it: the vote whose blend is
+            // the most even is where the next frame finds the seam again.
+            if (cut != end && std::abs(share(cut - step) - 0.5f) < std::abs(share(cut) - 0.5f)) cut -= step;
+            return cut;
+        }
+        return end;
+    };
+    std::vector<std::pair<uint32_t, uint32_t>> runs;
+    uint32_t run_start = last;
+    for (uint32_t v = first; v <= last; ++v) {
+        const bool outlier = v < last && std::abs(residual(v)) > limit;
+        if (outlier && run_start == last) run_start = v;
+        if (outlier || run_start == last) continue;
+        int64_t a = run_start, b = int64_t(v) - 1;
+        run_start = last;
+        // Fewer than min_run rejected votes are noise; all of them, a fit that explains none
+        // of its own votes (splitting would give the same piece back).
+        if (b + 1 - a < int64_t(min_run) || (a == int64_t(first) && b + 1 == int64_t(last))) continue;
+        const int64_t a_seam = a > int64_t(first) ? seam(a, b) : a;
+        const int64_t b_seam = b + 1 < int64_t(last) ? seam(b, a) : b;
+        if (b_seam > a_seam)
+            runs.push_back({uint32_t(a_seam), uint32_t(b_seam)});
+        else
+            runs.push_back({uint32_t(a), uint32_t(b)});
+    }
+    return runs;
+}
+
+// One round: the paths with `examine` set are looked at; returns, per path after, whether it
+// is a piece fitted on its own (the next round looks at those).
+std::vector<bool> split_round(std::vector<ScreenPath>& paths, VoteSet& votes, std::vector<PathFit>& fits,
+                              const RansacParams& ransac, const std::vector<bool>& examine, const RansacFitter& fitter) {
+    constexpr uint32_t kMinRun = 8;  // consecutive rejected votes that make a piece of their own
+    std::vector<ScreenPath> out_paths;
+    VoteSet out_votes;
+    std::vector<PathFit> out_fits;
+    std::vector<size_t> refit;  // pieces fitted on their own below
+    auto add_piece = [&](const ScreenPath& path, size_t p, size_t from, size_t to, const PathFit* keep) {
+        ScreenPath piece{.type = path.type, .closed = false, .visible = path.visible, .qi = path.qi, .source = path.source};
+        piece.samples.assign(path.samples.begin() + std::ptrdiff_t(from), path.samples.begin() + std::ptrdiff_t(to + 1));
+        const float shift = path.samples[from].s - path.samples.front().s;  // new arclength origin
+        for (uint32_t v = votes.offsets[p]; v < votes.offsets[p + 1]; ++v)
+            if (votes.sample[v] >= from && votes.sample[v] <= to) {
+                out_votes.votes.push_back({votes.votes[v].t, votes.votes[v].s - shift});
+                out_votes.sample.push_back(uint32_t(votes.sample[v] - from));
+            }
+        out_votes.offsets.push_back(uint32_t(out_votes.votes.size()));
+        PathFit fit;
+        fit.votes = out_votes.offsets.back() - out_votes.offsets[out_votes.offsets.size() - 2];
+        if (keep) {
+            fit = *keep;
+            fit.votes = out_votes.offsets.back() - out_votes.offsets[out_votes.offsets.size() - 2];
+            fit.phi = keep->phi + keep->rho * shift;
+        } else {
+            refit.push_back(out_paths.size());
+        }
+        out_paths.push_back(std::move(piece));
+        out_fits.push_back(fit);
+    };
+    for (size_t p = 0; p < paths.size(); ++p) {
+        const PathFit& fit = fits[p];
+        const uint32_t first = votes.offsets[p], last = votes.offsets[p + 1];
+        // Runs of consecutive votes the fit rejects, as sample ranges.
+        std::vector<std::pair<size_t, size_t>> runs;
+        if (examine[p] && fit.fitted && last - first >= 2 * kMinRun)
+            for (const auto& [a, b] : rejected_runs(votes, first, last, fit, ransac.inlier_px, kMinRun))
+                runs.push_back({votes.sample[a], votes.sample[b]});
+        if (runs.empty()) {  // whole: moved with its votes and fit (also when it has no fit)
+            for (uint32_t v = first; v < last; ++v) {
+                out_votes.votes.push_back(votes.votes[v]);
+                out_votes.sample.push_back(votes.sample[v]);
+            }
+            out_votes.offsets.push_back(uint32_t(out_votes.votes.size()));
+            paths[p].closed = false;  // as every piece leaves (add_piece), since 65e4264
+            out_paths.push_back(std::move(paths[p]));
+            out_fits.push_back(fit);
+            continue;
+        }
+        // Alternate kept and rejected pieces; neighbours share their boundary sample.
+        size_t from = 0;
+        for (const auto& [a, b] : runs) {
+            if (a > from) add_piece(paths[p], p, from, a, &fit);
+            add_piece(paths[p], p, a, b, nullptr);
+            from = b;
+        }
+        if (from + 1 < paths[p].samples.size()) add_piece(paths[p], p, from, paths[p].samples.size() - 1, &fit);
+    }
+    if (!refit.empty()) {
+        VoteSet pieces;
+        for (size_t i : refit) {
+            for (uint32_t v = out_votes.offsets[i]; v < out_votes.offsets[i + 1]; ++v) pieces.votes.push_back(out_votes.votes[v]);
+            pieces.offsets.push_back(uint32_t(pieces.votes.size()));
+        }
+        const std::vector<PathFit> piece_fits = fitter.fit(pieces, ransac);
+        for (size_t k = 0; k < refit.size(); ++k) out_fits[refit[k]] = piece_fits[k];
+    }
+    paths = std::move(out_paths);
+    votes = std::move(out_votes);
+    fits = std::move(out_fits);
+    std::vector<bool> fitted_alone(paths.size(), false);
+    for (size_t i : refit) fitted_alone[i] = true;
+    return fitted_alone;
+}
+
+}  // namespace
+
+void split_merged_paths(std::vector<ScreenPath>& paths, VoteSet& votes, std::vector<PathFit>& fits,
+                        const RansacParams& ransac, const RansacFitter& fitter) {
+    // A path joining n earlier ones needs at most n − 1 rounds; more than 9 pieces of
+    // different earlier paths in one path is rarer than the cost of looking again.
+    constexpr int kRounds = 8;
+    std::vector<bool> examine(paths.size(), true);
+    for (int round = 0; round < kRounds && std::ranges::find(examine, true) != examine.end(); ++round)
+        examine = split_round(paths, votes, fits, ransac, examine, fitter);
+}
+
+}  // namespace lw

@@ -1,0 +1,24 @@
+// engine/coherence/path_split.h — paths that merged pieces of different earlier paths, split.
+//
+// Bénard et al. 2010 §4.2 notes that "popping can occur when two paths merge": one (ρ, φ) per
+// path cannot keep the phases of several earlier paths. Input: this frame's paths, their votes
+// (with the sample each came from) and RANSAC's fits. Where a run of at least 8 consecutive
+// votes disagrees with a path's fit, the path is cut there, at the middle of each seam; the
+// agreeing pieces keep the fit and the others are fitted on their own (RANSAC again) and looked
+// at again, so that a path joining three or more earlier ones keeps all their phases. Output:
+// the pieces, their votes and fits, in place (neighbouring pieces share their seam's sample;
+// every piece leaves open).
+#pragma once
+
+#include <vector>
+
+#include "coherence/ransac.h"
+#include "coherence/ransac_gpu.h"
+#include "types/screen_path.h"
+
+namespace lw {
+
+void split_merged_paths(std::vector<ScreenPath>& paths, VoteSet& votes, std::vector<PathFit>& fits,
+                        const RansacParams& ransac, const RansacFitter& fitter);
+
+}  // namespace lw
