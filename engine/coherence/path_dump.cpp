@@ -113,28 +113,24 @@ struct SampleGrid {
             }
     }
     // Of the samples of `line_set` whose pixel lies within `radius`, those whose
-    // `distance(entry)` is within 0.05 px of the least, and of those the one with the least
-    // `score(entry)`. Equally
-    // near samples are the ends two paths share (a chain cut at a vertex: one point ends a
-    // path and starts the next, each with its own phase) or a run in two pieces; the
-    // callers score by phase difference, so that the point's own path is the one compared.
+    // `distance(entry)` is within 0.05 px of the least: the least `score(entry)` among them
+    // (none: no sample within `radius`). Equally near samples are the ends two paths share (a
+    // chain cut at a vertex: one point ends a path and starts the next, each with its own
+    // phase) or a run in two pieces; the callers score by phase difference, so that the
+    // point's own path is the one compared.
     template <class Distance, class Score>
-    std::optional<Entry> nearest(glm::vec2 p, float radius, const std::string& line_set, Distance distance,
-                                 Score score) const {
+    std::optional<double> least_score_of_nearest(glm::vec2 p, float radius, const std::string& line_set,
+                                                 Distance distance, Score score) const {
         constexpr float kTie = 0.05f;
         float nearest_d = radius;
         for_each_within(p, radius, [&](const Entry& e) {
             if (e.path->line_set == line_set) nearest_d = std::min(nearest_d, distance(e));
         });
-        std::optional<Entry> best;
-        double best_score = 0.0;
+        std::optional<double> best;
         for_each_within(p, radius, [&](const Entry& e) {
             if (e.path->line_set != line_set || distance(e) > nearest_d + kTie) return;
             const double sc = score(e);
-            if (!best || sc < best_score) {
-                best = e;
-                best_score = sc;
-            }
+            if (!best || sc < *best) best = sc;
         });
         return best;
     }
@@ -192,11 +188,11 @@ SlidingMeasure measure_sliding(const std::vector<PathDump>& frames, float match_
             for (const auto& s : path.samples) {
                 auto distance = [&](const SampleGrid::Entry& e) { return glm::length(e.sample().pixel - s.pixel); };
                 auto phase = [&](const SampleGrid::Entry& e) { return wrapped_dt(s.t, e.sample().t); };
-                const std::optional<SampleGrid::Entry> match = previous.nearest(s.pixel, match_px, path.line_set, distance, phase);
-                if (!match) continue;
-                const double dt = phase(*match);
-                dts.push_back(dt);
-                if (path.rho != 0.0f) pixels.push_back(dt / std::abs(double(path.rho)));
+                const std::optional<double> dt =
+                    previous.least_score_of_nearest(s.pixel, match_px, path.line_set, distance, phase);
+                if (!dt) continue;
+                dts.push_back(*dt);
+                if (path.rho != 0.0f) pixels.push_back(*dt / std::abs(double(path.rho)));
             }
     }
     const Quantiles periods = quantiles(dts), along = quantiles(pixels);
@@ -213,8 +209,8 @@ PhaseError measure_phase_error(const PathDump& frame, const PathDump& reference,
             // ends, a run in two pieces), the closest phase among them counts.
             auto distance = [&](const SampleGrid::Entry& e) { return point_on_path(e, s.pixel).distance; };
             auto phase = [&](const SampleGrid::Entry& e) { return wrapped_dt(s.t, point_on_path(e, s.pixel).t); };
-            const std::optional<SampleGrid::Entry> match = grid.nearest(s.pixel, match_px, path.line_set, distance, phase);
-            if (match) dts.push_back(phase(*match));
+            if (const std::optional<double> dt = grid.least_score_of_nearest(s.pixel, match_px, path.line_set, distance, phase))
+                dts.push_back(*dt);
         }
     const Quantiles q = quantiles(dts);
     return {.median = q.median, .p90 = q.p90, .max = q.max, .over_quarter = q.over_quarter, .pairs = dts.size()};

@@ -90,10 +90,14 @@ std::vector<bool> split_round(std::vector<ScreenPath>& paths, VoteSet& votes, st
     VoteSet out_votes;
     std::vector<PathFit> out_fits;
     std::vector<size_t> refit;  // pieces fitted on their own below
-    auto add_piece = [&](const ScreenPath& path, size_t p, size_t from, size_t to, const PathFit* keep) {
-        ScreenPath piece{.type = path.type, .closed = false, .visible = path.visible, .qi = path.qi, .source = path.source};
-        piece.samples.assign(path.samples.begin() + std::ptrdiff_t(from), path.samples.begin() + std::ptrdiff_t(to + 1));
+    // Samples [from, to] of path p (every piece leaves open); a whole path's samples are moved.
+    auto add_piece = [&](ScreenPath& path, size_t p, size_t from, size_t to, const PathFit* keep) {
         const float shift = path.samples[from].s - path.samples.front().s;  // new arclength origin
+        ScreenPath piece{.type = path.type, .closed = false, .visible = path.visible, .qi = path.qi, .source = path.source};
+        if (from == 0 && to + 1 == path.samples.size())
+            piece.samples = std::move(path.samples);
+        else
+            piece.samples.assign(path.samples.begin() + std::ptrdiff_t(from), path.samples.begin() + std::ptrdiff_t(to + 1));
         for (uint32_t v = votes.offsets[p]; v < votes.offsets[p + 1]; ++v)
             if (votes.sample[v] >= from && votes.sample[v] <= to) {
                 out_votes.votes.push_back({votes.votes[v].t, votes.votes[v].s - shift});
@@ -120,15 +124,9 @@ std::vector<bool> split_round(std::vector<ScreenPath>& paths, VoteSet& votes, st
         if (examine[p] && fit.fitted && last - first >= 2 * kMinRun)
             for (const auto& [a, b] : rejected_runs(votes, first, last, fit, ransac.inlier_px, kMinRun))
                 runs.push_back({votes.sample[a], votes.sample[b]});
-        if (runs.empty()) {  // whole: moved with its votes and fit (also when it has no fit)
-            for (uint32_t v = first; v < last; ++v) {
-                out_votes.votes.push_back(votes.votes[v]);
-                out_votes.sample.push_back(votes.sample[v]);
-            }
-            out_votes.offsets.push_back(uint32_t(out_votes.votes.size()));
-            paths[p].closed = false;  // as every piece leaves (add_piece), since 65e4264
-            out_paths.push_back(std::move(paths[p]));
-            out_fits.push_back(fit);
+        if (runs.empty()) {
+            add_piece(paths[p], p, 0, paths[p].samples.size() - 1, &fit);
+            out_fits.back() = fit;  // unchanged (also when it has no fit)
             continue;
         }
         // Alternate kept and rejected pieces; neighbours share their boundary sample.
