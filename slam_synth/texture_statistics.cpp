@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "core/error.h"
+#include "enclosed_ink.h"
 
 namespace lw::synth {
 
@@ -77,6 +78,7 @@ TextureStatistics analyze_texture(const Plane& image, const PyramidGeometry& g, 
     t.neighborhood = neighborhood;
     t.pixel = moments(image.v.data(), image.size());
     row_moments(image, t.row_mean, t.row_variance);
+    t.enclosed_deficit = enclosed_deficit(image);
 
     const Complexes x = real_spectrum(image);
     Pyramid pyr;

@@ -42,6 +42,7 @@ struct TextureStatistics {
     std::vector<Matrix> parent_magnitude;   // [s], s < scales − 1: orientations × orientations
     std::vector<Matrix> parent_real;        // [s], s < scales − 1: orientations × 2·orientations
     double highpass_variance = 0;
+    double enclosed_deficit = 0;  // enclosed_ink.h: paper enclosed by ink
 };
 
 [[nodiscard]] TextureStatistics analyze_texture(const Plane& image, const PyramidGeometry& g, int neighborhood = 9);

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "enclosed_ink.h"
 
 namespace lw::synth {
 
@@ -69,8 +70,10 @@ void impose_lowpass(Complexes& spectrum, int s, const TextureStatistics& t, cons
 // the rows' means and variances by up to 10 % on inky exemplars (the range clamp most), so
 // three alternations of range and per-row mean/variance follow, ending on the rows (within
 // 5 % of the exemplar's, measured in tests/test_slam_synth.cpp); the last clamp is left to
-// the caller (slam_builder stores ink clamped to [0, 1]).
-void impose_pixel_statistics(Plane& im, const TextureStatistics& t, StatisticsScope scope) {
+// the caller (slam_builder stores ink clamped to [0, 1]). On the last iteration the
+// enclosed paper (enclosed_ink.h) is imposed after the first clamp, so that the alternations
+// put back the rows' means it raises (by a fifth on the sparse edge rows of a row of dots).
+void impose_pixel_statistics(Plane& im, const TextureStatistics& t, StatisticsScope scope, bool last) {
     const auto clamp_range = [&] {
         for (float& v : im.v) v = std::clamp(v, float(t.pixel.min), float(t.pixel.max));
     };
@@ -84,6 +87,7 @@ void impose_pixel_statistics(Plane& im, const TextureStatistics& t, StatisticsSc
     impose_skewness(im.v.data(), im.size(), t.pixel.skewness);
     impose_kurtosis(im.v.data(), im.size(), t.pixel.kurtosis);
     clamp_range();
+    if (last) impose_enclosed_deficit(im, t.enclosed_deficit);
     if (scope == StatisticsScope::Rows)
         for (int k = 0; k < 3; ++k) {
             if (k > 0) clamp_range();
@@ -109,9 +113,9 @@ void add_highpass(const Complexes& x, const TextureStatistics& t, const PyramidG
     for (size_t i = 0; i < result.size(); ++i) result[i] += x[i] * (high[i] * high[i] * hp_scale);
 }
 
-// One iteration (textureSynth's main loop body). `keep_highpass`: the last iteration only
-// (texture_synthesis.h says why).
-void iterate(Plane& im, const TextureStatistics& t, const PyramidGeometry& g, StatisticsScope scope, bool keep_highpass) {
+// One iteration (textureSynth's main loop body). The last one keeps the high-pass residual
+// and imposes the enclosed paper (texture_synthesis.h says why).
+void iterate(Plane& im, const TextureStatistics& t, const PyramidGeometry& g, StatisticsScope scope, bool last) {
     const int scales = g.scales, n = g.orientations;
     const Complexes x = real_spectrum(im);
     Pyramid pyr;
@@ -194,11 +198,11 @@ void iterate(Plane& im, const TextureStatistics& t, const PyramidGeometry& g, St
     }
 
     Complexes result = real_spectrum(lowpass);
-    if (keep_highpass) add_highpass(x, t, g, result);
+    if (last) add_highpass(x, t, g, result);
     fft_inverse_real(g.rows, g.cols, result.data(), im.v.data());
     const float inv = 1.0f / float(g.grids[0].pixels());
     for (float& v : im.v) v *= inv;
-    impose_pixel_statistics(im, t, scope);
+    impose_pixel_statistics(im, t, scope, last);
 }
 
 }  // namespace

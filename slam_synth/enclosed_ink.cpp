@@ -1,0 +1,60 @@
+#include "enclosed_ink.h"
+
+#include <algorithm>
+#include <functional>
+#include <queue>
+#include <utility>
+#include <vector>
+
+namespace lw::synth {
+
+namespace {
+
+double mean_difference(const Plane& fill, const Plane& ink) {
+    double sum = 0.0;
+    for (size_t i = 0; i < ink.size(); ++i) sum += double(fill.v[i]) - double(ink.v[i]);
+    return ink.size() ? sum / double(ink.size()) : 0.0;
+}
+
+}  // namespace
+
+Plane fill_enclosed(const Plane& ink) {
+    Plane fill = ink;
+    if (ink.rows < 3) return fill;  // every texel is on the first or last row
+    const int cols = ink.cols;
+    std::vector<uint8_t> done(ink.size(), 0);
+    // Least level first; ties by texel index, so that the flood is the same on every run.
+    using Entry = std::pair<float, int>;
+    std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+    for (int i : {0, (ink.rows - 1) * cols})
+        for (int x = 0; x < cols; ++x) {
+            done[size_t(i + x)] = 1;
+            queue.push({fill.v[size_t(i + x)], i + x});
+        }
+    while (!queue.empty()) {
+        const auto [level, i] = queue.top();
+        queue.pop();
+        const int r = i / cols, x = i % cols;
+        const int left = x > 0 ? i - 1 : i + cols - 1, right = x + 1 < cols ? i + 1 : i - cols + 1;
+        for (int j : {left, right, r > 0 ? i - cols : -1, r + 1 < ink.rows ? i + cols : -1}) {
+            if (j < 0 || done[size_t(j)]) continue;
+            done[size_t(j)] = 1;
+            // Reached from a texel filled to `level`: a basin below it fills to it.
+            fill.v[size_t(j)] = std::max(fill.v[size_t(j)], level);
+            queue.push({fill.v[size_t(j)], j});
+        }
+    }
+    return fill;
+}
+
+double enclosed_deficit(const Plane& ink) { return mean_difference(fill_enclosed(ink), ink); }
+
+void impose_enclosed_deficit(Plane& ink, double target) {
+    const Plane fill = fill_enclosed(ink);
+    const double deficit = mean_difference(fill, ink);
+    if (deficit <= std::max(target, 0.0)) return;
+    const float lambda = float(1.0 - std::max(target, 0.0) / deficit);
+    for (size_t i = 0; i < ink.size(); ++i) ink.v[i] += lambda * (fill.v[i] - ink.v[i]);
+}
+
+}  // namespace lw::synth
