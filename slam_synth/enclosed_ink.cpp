@@ -1,6 +1,7 @@
 #include "enclosed_ink.h"
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <queue>
 #include <utility>
@@ -23,7 +24,8 @@ Plane fill_enclosed(const Plane& ink) {
     if (ink.rows < 3) return fill;  // every texel is on the first or last row
     const int cols = ink.cols;
     std::vector<uint8_t> done(ink.size(), 0);
-    // Least level first; ties by texel index, so that the flood is the same on every run.
+    // Least level first. (Ties may pop in any order: a texel's fill is its minimax path
+    // value whichever way the flood reaches it.)
     using Entry = std::pair<float, int>;
     std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
     for (int i : {0, (ink.rows - 1) * cols})
@@ -50,11 +52,15 @@ Plane fill_enclosed(const Plane& ink) {
 double enclosed_deficit(const Plane& ink) { return mean_difference(fill_enclosed(ink), ink); }
 
 void impose_enclosed_deficit(Plane& ink, double target) {
+    // The flood orders texels by value, which NaN would break; a plane with non-finite ink
+    // is left for the caller's checks to report.
+    if (!std::all_of(ink.v.begin(), ink.v.end(), [](float v) { return std::isfinite(v); })) return;
     const Plane fill = fill_enclosed(ink);
     const double deficit = mean_difference(fill, ink);
-    if (deficit <= std::max(target, 0.0)) return;
-    const float lambda = float(1.0 - std::max(target, 0.0) / deficit);
-    for (size_t i = 0; i < ink.size(); ++i) ink.v[i] += lambda * (fill.v[i] - ink.v[i]);
+    if (!(deficit > std::max(target, 0.0))) return;
+    // fill − μ (fill − x): a target of 0 gives the fill exactly.
+    const float keep = float(std::max(target, 0.0) / deficit);
+    for (size_t i = 0; i < ink.size(); ++i) ink.v[i] = fill.v[i] - keep * (fill.v[i] - ink.v[i]);
 }
 
 }  // namespace lw::synth

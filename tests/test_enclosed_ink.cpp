@@ -2,6 +2,7 @@
 // reference on random planes, fills whose answer is known (a hollow dot, a diagonal gap, a
 // ring across the seam), and the step that imposes a deficit.
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <random>
 
@@ -84,12 +85,15 @@ TEST(EnclosedInk, PaperDoesNotLeakThroughADiagonalGapButDoesThroughAnOpenSide) {
 
 TEST(EnclosedInk, ColumnsWrap) {
     Plane p(9, 12);
-    ring(p, 4, 0, 0.0f);  // straddles the first and last columns
-    const Plane f = fill_enclosed(p);
-    EXPECT_EQ(f.at(4, 0), 1.0f);
-    EXPECT_EQ(f.at(4, 11), 1.0f);
-    EXPECT_EQ(f.at(4, 1), 1.0f);
-    EXPECT_EQ(f.at(4, 5), 0.0f);
+    ring(p, 4, 0, 0.0f);  // straddles the first and last columns: enclosed only if they join
+    EXPECT_EQ(fill_enclosed(p).at(4, 0), 1.0f);
+    EXPECT_EQ(fill_enclosed(p).at(4, 11), 1.0f);
+    // Open on the far side of the seam: the centre's paper leaks across it to column 5.
+    Plane open(9, 12);
+    ring(open, 4, 1, 0.0f);
+    open.at(4, 11) = 0.0f;  // the ring's left side lies in column 11
+    EXPECT_EQ(fill_enclosed(open).at(4, 1), 0.0f);
+    EXPECT_EQ(fill_enclosed(open).at(4, 0), 0.0f);
 }
 
 TEST(EnclosedInk, ImposingADeficitMovesTowardTheFillAndStopsAtTheTarget) {
@@ -113,4 +117,14 @@ TEST(EnclosedInk, ImposingADeficitMovesTowardTheFillAndStopsAtTheTarget) {
     }
     impose_enclosed_deficit(moved, 0.0);
     EXPECT_NEAR(enclosed_deficit(moved), 0.0, 1e-6);
+}
+
+TEST(EnclosedInk, NonFiniteInkIsLeftAsItIs) {
+    Plane p(9, 12);
+    ring(p, 4, 5, 0.0f);
+    p.at(0, 0) = std::numeric_limits<float>::quiet_NaN();
+    Plane q = p;
+    impose_enclosed_deficit(q, 0.0);
+    for (size_t i = 0; i < p.size(); ++i)
+        EXPECT_TRUE(q.v[i] == p.v[i] || (std::isnan(q.v[i]) && std::isnan(p.v[i])));
 }

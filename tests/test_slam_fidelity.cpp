@@ -145,6 +145,7 @@ TEST(SlamFidelitySynthesis, ExemplarIsAFixedPointOfTheLastIteration) {
 struct ExemplarCase {
     const char* name;
     double ratio_before;  // RMSE(1)/RMSE(16) at 17 levels, seed 1, before (commit 00e9fc5)
+    int holes_before = 0;  // level 1.0's holes before the enclosed-paper step (commit 5d7e61b)
 };
 // Printed by name (gtest's default prints the bytes, a pointer among them, into test names).
 void PrintTo(const ExemplarCase& c, std::ostream* os) { *os << c.name; }
@@ -197,13 +198,18 @@ TEST_P(SlamFidelityExemplar, ResemblesItsExemplar) {
         for (size_t i = 0; i < s.levels.size(); ++i)
             EXPECT_EQ(element_statistics(s.levels[i], true).holes, 0) << "level " << s.reports[i].level;
     }
+    // Exemplars that enclose paper keep it: level 1.0's holes against those measured before
+    // the enclosed-paper step (lattice 40, scribble 14, spatter 106; with it 40, 14, 106).
+    if (c.holes_before > 0) {
+        EXPECT_GE(top.elements.holes, 0.9 * c.holes_before);
+    }
 }
 
 INSTANTIATE_TEST_SUITE_P(Exemplars, SlamFidelityExemplar,
                          ::testing::Values(ExemplarCase{"beads", 0.392}, ExemplarCase{"brush", 0.185},
                                            ExemplarCase{"dashes", 0.352}, ExemplarCase{"dots", 0.318},
-                                           ExemplarCase{"lattice", 0.396}, ExemplarCase{"pencil", 0.242},
-                                           ExemplarCase{"scribble", 0.366}, ExemplarCase{"spatter", 0.254},
+                                           ExemplarCase{"lattice", 0.396, 40}, ExemplarCase{"pencil", 0.242},
+                                           ExemplarCase{"scribble", 0.366, 14}, ExemplarCase{"spatter", 0.254, 106},
                                            ExemplarCase{"wedges", 0.201}, ExemplarCase{"wobble", 0.453}),
                          [](const ::testing::TestParamInfo<ExemplarCase>& p) { return std::string(p.param.name); });
 
