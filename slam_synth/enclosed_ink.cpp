@@ -1,6 +1,7 @@
 #include "enclosed_ink.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <queue>
@@ -15,6 +16,13 @@ double mean_difference(const Plane& fill, const Plane& ink) {
     double sum = 0.0;
     for (size_t i = 0; i < ink.size(); ++i) sum += double(fill.v[i]) - double(ink.v[i]);
     return ink.size() ? sum / double(ink.size()) : 0.0;
+}
+
+// The texel's four neighbours (columns wrap); -1 past the first or last row.
+std::array<int, 4> neighbours(int i, int rows, int cols) {
+    const int r = i / cols, x = i % cols;
+    return {x > 0 ? i - 1 : i + cols - 1, x + 1 < cols ? i + 1 : i - cols + 1, r > 0 ? i - cols : -1,
+            r + 1 < rows ? i + cols : -1};
 }
 
 }  // namespace
@@ -36,9 +44,7 @@ Plane fill_enclosed(const Plane& ink) {
     while (!queue.empty()) {
         const auto [level, i] = queue.top();
         queue.pop();
-        const int r = i / cols, x = i % cols;
-        const int left = x > 0 ? i - 1 : i + cols - 1, right = x + 1 < cols ? i + 1 : i - cols + 1;
-        for (int j : {left, right, r > 0 ? i - cols : -1, r + 1 < ink.rows ? i + cols : -1}) {
+        for (int j : neighbours(i, ink.rows, cols)) {
             if (j < 0 || done[size_t(j)]) continue;
             done[size_t(j)] = 1;
             // Reached from a texel filled to `level`: a basin below it fills to it.
@@ -49,13 +55,42 @@ Plane fill_enclosed(const Plane& ink) {
     return fill;
 }
 
-double enclosed_deficit(const Plane& ink) { return mean_difference(fill_enclosed(ink), ink); }
+Plane fill_small_basins(const Plane& ink, int max_texels) {
+    const Plane fill = fill_enclosed(ink);
+    Plane out = ink;
+    std::vector<uint8_t> seen(ink.size(), 0);
+    std::vector<int> stack, basin;
+    for (int start = 0; start < int(ink.size()); ++start) {
+        if (seen[size_t(start)] || !(fill.v[size_t(start)] > ink.v[size_t(start)])) continue;
+        // One basin: the 4-connected texels that the fill raises.
+        basin.clear();
+        stack.assign(1, start);
+        seen[size_t(start)] = 1;
+        while (!stack.empty()) {
+            const int i = stack.back();
+            stack.pop_back();
+            basin.push_back(i);
+            for (int j : neighbours(i, ink.rows, ink.cols))
+                if (j >= 0 && !seen[size_t(j)] && fill.v[size_t(j)] > ink.v[size_t(j)]) {
+                    seen[size_t(j)] = 1;
+                    stack.push_back(j);
+                }
+        }
+        if (int(basin.size()) <= max_texels)
+            for (int i : basin) out.v[size_t(i)] = fill.v[size_t(i)];
+    }
+    return out;
+}
 
-void impose_enclosed_deficit(Plane& ink, double target) {
+double enclosed_deficit(const Plane& ink, int max_texels) {
+    return mean_difference(fill_small_basins(ink, max_texels), ink);
+}
+
+void impose_enclosed_deficit(Plane& ink, double target, int max_texels) {
     // The flood orders texels by value, which NaN would break; a plane with non-finite ink
     // is left for the caller's checks to report.
     if (!std::all_of(ink.v.begin(), ink.v.end(), [](float v) { return std::isfinite(v); })) return;
-    const Plane fill = fill_enclosed(ink);
+    const Plane fill = fill_small_basins(ink, max_texels);
     const double deficit = mean_difference(fill, ink);
     if (!(deficit > std::max(target, 0.0))) return;
     // fill − μ (fill − x): a target of 0 gives the fill exactly.

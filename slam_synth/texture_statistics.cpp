@@ -78,7 +78,7 @@ TextureStatistics analyze_texture(const Plane& image, const PyramidGeometry& g, 
     t.neighborhood = neighborhood;
     t.pixel = moments(image.v.data(), image.size());
     row_moments(image, t.row_mean, t.row_variance);
-    t.enclosed_deficit = enclosed_deficit(image);
+    t.enclosed_deficit = enclosed_deficit(image, enclosed_basin_texels(neighborhood));
 
     const Complexes x = real_spectrum(image);
     Pyramid pyr;

@@ -42,8 +42,11 @@ struct TextureStatistics {
     std::vector<Matrix> parent_magnitude;   // [s], s < scales − 1: orientations × orientations
     std::vector<Matrix> parent_real;        // [s], s < scales − 1: orientations × 2·orientations
     double highpass_variance = 0;
-    double enclosed_deficit = 0;  // enclosed_ink.h: paper enclosed by ink
+    double enclosed_deficit = 0;  // enclosed_ink.h: paper enclosed by ink, basins of at most Na² texels
 };
+
+// The largest basin of enclosed paper that the statistic counts (enclosed_ink.h says why).
+constexpr int enclosed_basin_texels(int neighborhood) { return neighborhood * neighborhood; }
 
 [[nodiscard]] TextureStatistics analyze_texture(const Plane& image, const PyramidGeometry& g, int neighborhood = 9);
 

@@ -87,7 +87,7 @@ void impose_pixel_statistics(Plane& im, const TextureStatistics& t, StatisticsSc
     impose_skewness(im.v.data(), im.size(), t.pixel.skewness);
     impose_kurtosis(im.v.data(), im.size(), t.pixel.kurtosis);
     clamp_range();
-    if (last) impose_enclosed_deficit(im, t.enclosed_deficit);
+    if (last) impose_enclosed_deficit(im, t.enclosed_deficit, enclosed_basin_texels(t.neighborhood));
     if (scope == StatisticsScope::Rows)
         for (int k = 0; k < 3; ++k) {
             if (k > 0) clamp_range();

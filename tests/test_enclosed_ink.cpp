@@ -1,6 +1,6 @@
 // Enclosed paper (slam_synth/enclosed_ink.h): the priority flood against a plain fixed-point
 // reference on random planes, fills whose answer is known (a hollow dot, a diagonal gap, a
-// ring across the seam), and the step that imposes a deficit.
+// ring across the seam), the bound on basin size, and the step that imposes a deficit.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -71,7 +71,7 @@ TEST(EnclosedInk, AHollowDotFillsToTheLowestInkOnItsRim) {
             EXPECT_EQ(f.v[i], p.v[i]);  // the rim and the open paper are as they were
         }
     }
-    EXPECT_NEAR(enclosed_deficit(p), 9 * 0.7 / double(p.size()), 1e-6);
+    EXPECT_NEAR(enclosed_deficit(p, 81), 9 * 0.7 / double(p.size()), 1e-6);
 }
 
 TEST(EnclosedInk, PaperDoesNotLeakThroughADiagonalGapButDoesThroughAnOpenSide) {
@@ -101,22 +101,41 @@ TEST(EnclosedInk, ImposingADeficitMovesTowardTheFillAndStopsAtTheTarget) {
     std::mt19937 rng(3);
     for (float& v : p.v) v = float(rng() % 1000) / 1000.0f;
     for (int c = 0; c < p.cols; ++c) p.at(0, c) = p.at(p.rows - 1, c) = 0.0f;
-    const double deficit = enclosed_deficit(p);
+    constexpr int kAll = 16 * 40;
+    const double deficit = enclosed_deficit(p, kAll);
     ASSERT_GT(deficit, 0.01);
     Plane same = p;
-    impose_enclosed_deficit(same, deficit * 1.01);  // already under the target: untouched
+    impose_enclosed_deficit(same, deficit * 1.01, kAll);  // already under the target: untouched
     EXPECT_EQ(same.v, p.v);
     Plane moved = p;
-    impose_enclosed_deficit(moved, deficit / 4);
-    EXPECT_NEAR(enclosed_deficit(moved), deficit / 4, 1e-6);
+    impose_enclosed_deficit(moved, deficit / 4, kAll);
+    EXPECT_NEAR(enclosed_deficit(moved, kAll), deficit / 4, 1e-6);
     const Plane f = fill_enclosed(p), g = fill_enclosed(moved);
     for (size_t i = 0; i < p.size(); ++i) {
-        EXPECT_NEAR(g.v[i], f.v[i], 1e-6);                    // the fill is the same
-        EXPECT_GE(moved.v[i], p.v[i] - 1e-7f);                 // ink only raised,
-        EXPECT_LE(moved.v[i], f.v[i] + 1e-7f);                 // and never past the fill
+        EXPECT_NEAR(g.v[i], f.v[i], 1e-6);     // the fill is the same
+        EXPECT_GE(moved.v[i], p.v[i] - 1e-7f);  // ink only raised,
+        EXPECT_LE(moved.v[i], f.v[i] + 1e-7f);  // and never past the fill
     }
-    impose_enclosed_deficit(moved, 0.0);
-    EXPECT_NEAR(enclosed_deficit(moved), 0.0, 1e-6);
+    impose_enclosed_deficit(moved, 0.0, kAll);
+    EXPECT_NEAR(enclosed_deficit(moved, kAll), 0.0, 1e-6);
+    EXPECT_EQ(moved.v, f.v);
+}
+
+// Basins larger than the bound are neither counted nor filled; smaller ones are, and the
+// deficit of the result is measured over the same basins.
+TEST(EnclosedInk, OnlyBasinsWithinTheBoundTakePart) {
+    Plane p(20, 40);
+    ring(p, 4, 5, 0.0f);  // a 3 × 3 hollow: 9 texels
+    for (int r = 8; r <= 18; ++r)  // a box of ink around an 9 × 9 hollow: 81 texels
+        for (int c = 20; c <= 30; ++c) p.at(r, c) = (r == 8 || r == 18 || c == 20 || c == 30) ? 1.0f : 0.0f;
+    const Plane small = fill_small_basins(p, 80);
+    EXPECT_EQ(small.at(4, 5), 1.0f);   // the small hollow filled
+    EXPECT_EQ(small.at(13, 25), 0.0f); // the large one, one texel over the bound, not
+    EXPECT_NEAR(enclosed_deficit(p, 80), 9.0 / double(p.size()), 1e-9);
+    EXPECT_NEAR(enclosed_deficit(p, 81), 90.0 / double(p.size()), 1e-9);
+    Plane q = p;
+    impose_enclosed_deficit(q, 0.0, 80);
+    EXPECT_EQ(q.v, small.v);
 }
 
 TEST(EnclosedInk, NonFiniteInkIsLeftAsItIs) {
@@ -124,7 +143,7 @@ TEST(EnclosedInk, NonFiniteInkIsLeftAsItIs) {
     ring(p, 4, 5, 0.0f);
     p.at(0, 0) = std::numeric_limits<float>::quiet_NaN();
     Plane q = p;
-    impose_enclosed_deficit(q, 0.0);
+    impose_enclosed_deficit(q, 0.0, 81);
     for (size_t i = 0; i < p.size(); ++i)
         EXPECT_TRUE(q.v[i] == p.v[i] || (std::isnan(q.v[i]) && std::isnan(p.v[i])));
 }

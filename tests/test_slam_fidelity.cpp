@@ -199,7 +199,7 @@ TEST_P(SlamFidelityExemplar, ResemblesItsExemplar) {
             EXPECT_EQ(element_statistics(s.levels[i], true).holes, 0) << "level " << s.reports[i].level;
     }
     // Exemplars that enclose paper keep it: level 1.0's holes against those measured before
-    // the enclosed-paper step (lattice 40, scribble 14, spatter 106; with it 40, 14, 106).
+    // the enclosed-paper step (lattice 40, scribble 14, spatter 106; with it the same).
     if (c.holes_before > 0) {
         EXPECT_GE(top.elements.holes, 0.9 * c.holes_before);
     }
