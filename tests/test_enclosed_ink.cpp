@@ -138,6 +138,43 @@ TEST(EnclosedInk, OnlyBasinsWithinTheBoundTakePart) {
     EXPECT_EQ(q.v, small.v);
 }
 
+// The bound on a random plane: basins over it keep their ink while the small ones move,
+// and the deficit over the small ones reaches the target.
+TEST(EnclosedInk, ImposingWithABoundLeavesLargeBasinsAsTheyAre) {
+    Plane p(16, 40);
+    std::mt19937 rng(5);
+    for (float& v : p.v) v = float(rng() % 1000) / 1000.0f;
+    for (int c = 0; c < p.cols; ++c) p.at(0, c) = p.at(p.rows - 1, c) = 0.0f;
+    constexpr int kBound = 4;
+    const Plane all = fill_enclosed(p), small = fill_small_basins(p, kBound);
+    size_t large = 0;  // texels of basins over the bound
+    for (size_t i = 0; i < p.size(); ++i) large += all.v[i] > p.v[i] && small.v[i] == p.v[i];
+    ASSERT_GT(large, 20u);
+    const double deficit = enclosed_deficit(p, kBound);
+    ASSERT_GT(deficit, 0.0);
+    Plane moved = p;
+    impose_enclosed_deficit(moved, deficit / 3, kBound);
+    EXPECT_NEAR(enclosed_deficit(moved, kBound), deficit / 3, 1e-6);
+    for (size_t i = 0; i < p.size(); ++i) {
+        if (small.v[i] == p.v[i]) {
+            EXPECT_EQ(moved.v[i], p.v[i]);  // outside the small basins: as it was
+        } else {
+            EXPECT_GT(moved.v[i], p.v[i]);
+            EXPECT_LT(moved.v[i], small.v[i]);
+        }
+    }
+}
+
+// A basin across the seam is one basin: 81 texels, over a bound of 80 and within 81.
+TEST(EnclosedInk, BasinsAreCountedAcrossTheSeam) {
+    Plane p(20, 40);
+    for (int r = 8; r <= 18; ++r)
+        for (int c = -5; c <= 5; ++c) p.at(r, (c + 40) % 40) = (r == 8 || r == 18 || c == -5 || c == 5) ? 1.0f : 0.0f;
+    EXPECT_EQ(fill_small_basins(p, 80).at(13, 0), 0.0f);
+    EXPECT_EQ(fill_small_basins(p, 81).at(13, 0), 1.0f);
+    EXPECT_EQ(fill_small_basins(p, 81).at(13, 38), 1.0f);
+}
+
 TEST(EnclosedInk, NonFiniteInkIsLeftAsItIs) {
     Plane p(9, 12);
     ring(p, 4, 5, 0.0f);
