@@ -71,8 +71,10 @@ void impose_lowpass(Complexes& spectrum, int s, const TextureStatistics& t, cons
 // three alternations of range and per-row mean/variance follow, ending on the rows (within
 // 5 % of the exemplar's, measured in tests/test_slam_synth.cpp); the last clamp is left to
 // the caller (slam_builder stores ink clamped to [0, 1]). On the last iteration the
-// enclosed paper (enclosed_ink.h) is imposed after the first clamp, so that the alternations
-// put back the rows' means it raises (by a fifth on the sparse edge rows of a row of dots).
+// enclosed paper (enclosed_ink.h) joins the alternations, after each clamp: the rows then
+// put back the means it raises (by a fifth on the sparse edge rows of a row of dots), and
+// it fills again what a row step reopened (2 hollow dashes on one seed of six with the
+// step taken once, 0 this way).
 void impose_pixel_statistics(Plane& im, const TextureStatistics& t, StatisticsScope scope, bool last) {
     const auto clamp_range = [&] {
         for (float& v : im.v) v = std::clamp(v, float(t.pixel.min), float(t.pixel.max));
@@ -86,11 +88,17 @@ void impose_pixel_statistics(Plane& im, const TextureStatistics& t, StatisticsSc
     }
     impose_skewness(im.v.data(), im.size(), t.pixel.skewness);
     impose_kurtosis(im.v.data(), im.size(), t.pixel.kurtosis);
+    const auto enclosed_paper = [&] {
+        if (last) impose_enclosed_deficit(im, t.enclosed_deficit, enclosed_basin_texels(t.neighborhood));
+    };
     clamp_range();
-    if (last) impose_enclosed_deficit(im, t.enclosed_deficit, enclosed_basin_texels(t.neighborhood));
+    enclosed_paper();
     if (scope == StatisticsScope::Rows)
         for (int k = 0; k < 3; ++k) {
-            if (k > 0) clamp_range();
+            if (k > 0) {
+                clamp_range();
+                enclosed_paper();
+            }
             impose_row_statistics(im, t.row_mean, t.row_variance);
         }
 }

@@ -17,8 +17,8 @@
 //   (at most the target; it ends below it, softer edges) and gives 0.76–1.31× the
 //   exemplar's grain at level 1.0 (at most 1.40× over all levels).
 // - The last iteration also bounds the paper that ink encloses, in basins of at most Na²
-//   texels, by the exemplar's (enclosed_ink.h), before the pixel step's row alternations
-//   (which then move it a little): hollow dots are fixed points of the model's statistics,
+//   texels, by the exemplar's (enclosed_ink.h), in each of the pixel step's range/row
+//   alternations: hollow dots are fixed points of the model's statistics,
 //   and no number of iterations removed them (10–19 over 17 levels of identical dots,
 //   seeds 1–6; now 0). Only the last iteration, and only small basins, because a basin's
 //   fill follows its lowest rim texel: taken every iteration the unbounded step raised the
