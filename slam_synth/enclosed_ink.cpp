@@ -8,6 +8,8 @@
 #include <utility>
 #include <vector>
 
+#include "components.h"
+
 namespace lw::synth {
 
 namespace {
@@ -57,28 +59,13 @@ Plane fill_enclosed(const Plane& ink) {
 
 Plane fill_small_basins(const Plane& ink, int max_texels) {
     const Plane fill = fill_enclosed(ink);
+    // The basins: 4-connected texels that the fill raises, across the seam as the flood goes.
+    std::vector<int> label;
+    const std::vector<Component> basins =
+        components(ink, true, false, [&](size_t i) { return fill.v[i] > ink.v[i]; }, &label);
     Plane out = ink;
-    std::vector<uint8_t> seen(ink.size(), 0);
-    std::vector<int> stack, basin;
-    for (int start = 0; start < int(ink.size()); ++start) {
-        if (seen[size_t(start)] || !(fill.v[size_t(start)] > ink.v[size_t(start)])) continue;
-        // One basin: the 4-connected texels that the fill raises.
-        basin.clear();
-        stack.assign(1, start);
-        seen[size_t(start)] = 1;
-        while (!stack.empty()) {
-            const int i = stack.back();
-            stack.pop_back();
-            basin.push_back(i);
-            for (int j : neighbours(i, ink.rows, ink.cols))
-                if (j >= 0 && !seen[size_t(j)] && fill.v[size_t(j)] > ink.v[size_t(j)]) {
-                    seen[size_t(j)] = 1;
-                    stack.push_back(j);
-                }
-        }
-        if (int(basin.size()) <= max_texels)
-            for (int i : basin) out.v[size_t(i)] = fill.v[size_t(i)];
-    }
+    for (size_t i = 0; i < ink.size(); ++i)
+        if (label[i] >= 0 && basins[size_t(label[i])].area <= max_texels) out.v[i] = fill.v[i];
     return out;
 }
 

@@ -4,69 +4,10 @@
 #include <cmath>
 #include <vector>
 
+#include "components.h"
 #include "core/error.h"
 
 namespace lw::synth {
-
-namespace {
-
-struct Component {
-    int area = 0;
-    bool touches_ends = false;   // first or last column of a non-periodic plane
-    bool touches_edges = false;  // first or last row
-    bool wraps = false;          // periodic: goes all the way round the length (a band, not a blob)
-};
-
-// Connected components of the texels where `inside` holds, by flood fill; 8- or
-// 4-connected, wrapping along the length when periodic. Each texel keeps the unwrapped
-// column it was reached at: a component that reaches a texel again a whole length away
-// goes round the strip.
-template <class Inside>
-std::vector<Component> components(const Plane& p, bool periodic, bool diagonal, Inside inside) {
-    std::vector<int> label(p.size(), -1), unwrapped(p.size(), 0);
-    std::vector<Component> out;
-    std::vector<int> stack;
-    for (int start = 0; start < int(p.size()); ++start) {
-        if (label[size_t(start)] >= 0 || !inside(p.v[size_t(start)])) continue;
-        const int id = int(out.size());
-        Component c;
-        label[size_t(start)] = id;
-        unwrapped[size_t(start)] = start % p.cols;
-        stack.assign(1, start);
-        while (!stack.empty()) {
-            const int i = stack.back();
-            stack.pop_back();
-            const int r = i / p.cols, x = i % p.cols, u = unwrapped[size_t(i)];
-            ++c.area;
-            c.touches_edges = c.touches_edges || r == 0 || r == p.rows - 1;
-            c.touches_ends = c.touches_ends || (!periodic && (x == 0 || x == p.cols - 1));
-            for (int dr = -1; dr <= 1; ++dr)
-                for (int dx = -1; dx <= 1; ++dx) {
-                    if ((dr == 0 && dx == 0) || (!diagonal && dr != 0 && dx != 0)) continue;
-                    const int rr = r + dr;
-                    int xx = x + dx;
-                    if (rr < 0 || rr >= p.rows) continue;
-                    if (xx < 0 || xx >= p.cols) {
-                        if (!periodic) continue;
-                        xx = (xx + p.cols) % p.cols;
-                    }
-                    const int j = rr * p.cols + xx;
-                    if (!inside(p.v[size_t(j)])) continue;
-                    if (label[size_t(j)] >= 0) {
-                        c.wraps = c.wraps || unwrapped[size_t(j)] != u + dx;
-                        continue;
-                    }
-                    label[size_t(j)] = id;
-                    unwrapped[size_t(j)] = u + dx;
-                    stack.push_back(j);
-                }
-        }
-        out.push_back(c);
-    }
-    return out;
-}
-
-}  // namespace
 
 double grain(const Plane& ink, bool periodic) {
     const int n = ink.cols;
@@ -84,7 +25,7 @@ double grain(const Plane& ink, bool periodic) {
 ElementStatistics element_statistics(const Plane& ink, bool periodic) {
     ElementStatistics e;
     std::vector<double> areas;
-    for (const Component& c : components(ink, periodic, true, [](float v) { return v > kElementInk; }))
+    for (const Component& c : components(ink, periodic, true, [&](size_t i) { return ink.v[i] > kElementInk; }))
         if (!c.touches_ends && !c.wraps) areas.push_back(double(c.area));  // cut by the ends, or a line: not an element
     e.count = int(areas.size());
     e.per_100_texels = 100.0 * double(e.count) / double(ink.cols);
@@ -95,7 +36,7 @@ ElementStatistics element_statistics(const Plane& ink, bool periodic) {
         const double variance = std::max(0.0, squares / double(areas.size()) - e.mean_area * e.mean_area);
         e.area_cv = std::sqrt(variance) / e.mean_area;
     }
-    for (const Component& c : components(ink, periodic, false, [](float v) { return v <= kElementInk; }))
+    for (const Component& c : components(ink, periodic, false, [&](size_t i) { return ink.v[i] <= kElementInk; }))
         e.holes += !c.touches_edges && !c.touches_ends && !c.wraps;
     return e;
 }
