@@ -104,15 +104,12 @@ std::vector<bool> split_round(std::vector<ScreenPath>& paths, VoteSet& votes, st
                 out_votes.sample.push_back(uint32_t(votes.sample[v] - from));
             }
         out_votes.offsets.push_back(uint32_t(out_votes.votes.size()));
-        PathFit fit;
+        PathFit fit = keep ? *keep : PathFit{};
         fit.votes = out_votes.offsets.back() - out_votes.offsets[out_votes.offsets.size() - 2];
-        if (keep) {
-            fit = *keep;
-            fit.votes = out_votes.offsets.back() - out_votes.offsets[out_votes.offsets.size() - 2];
+        if (keep)
             fit.phi = keep->phi + keep->rho * shift;
-        } else {
+        else
             refit.push_back(out_paths.size());
-        }
         out_paths.push_back(std::move(piece));
         out_fits.push_back(fit);
     };
