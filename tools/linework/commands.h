@@ -46,6 +46,11 @@ glm::ivec2 parse_size(const std::string& text, const std::string& option);
 // or every line set selecting either) as SLAM strokes of width W, tapered over 2W
 // (replacing any ribbon style).
 void use_slam_strokes(LinesDesc& lines, const std::string& slam, float width);
+// For options that name a file to write (-o FILE.exr, --svg, --preview ...): its folder must
+// exist, checked when the command line is parsed, so that a run does not fail at its last
+// step after minutes of work (the message names the folder). Folders named by -o of
+// render, view and farm are made instead.
+[[nodiscard]] CLI::Validator output_file();
 // 1 (after one line on stderr) when validation was on and reported anything, else 0.
 int exit_code_after_validation(const Context& ctx, bool validation);
 // The "bounds:" line render and view print: the model's box in scene units (what a camera

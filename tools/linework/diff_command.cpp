@@ -49,7 +49,7 @@ Runner add_diff_command(CLI::App& app) {
         "exits 1 when any threshold is passed.");
     cmd->add_option("a", o->a, "First image")->required();
     cmd->add_option("b", o->b, "Second image")->required();
-    cmd->add_option("--out", o->out, "Write the amplified difference (|A-B| x 8) as PNG");
+    cmd->add_option("--out", o->out, "Write the amplified difference (|A-B| x 8) as PNG")->check(output_file());
     cmd->add_option("--max-error", o->max_error, "Largest per-channel difference allowed (0-255)")
         ->check(CLI::Range(0, 255))
         ->capture_default_str();

@@ -95,7 +95,8 @@ Runner add_hatch_command(CLI::App& app) {
                     "Training strokes in drawing order (SVG or JSON stroke file, as for `linework pattern`)")
         ->required();
     cmd->add_option("-o,--output", o->output, "Output strokes: .svg (one <polyline>/<path> per stroke) or .json")
-        ->required();
+        ->required()
+        ->check(output_file());
     cmd->add_option("--count", o->count, "Strokes to generate (with --along: at most this many per path)")
         ->required()
         ->check(CLI::Range(1, 1000000));

@@ -1,6 +1,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <sstream>
 
 #include "commands.h"
@@ -20,6 +21,18 @@ bool parse_float(const std::string& text, float* out) {
     return true;
 }
 }  // namespace
+
+CLI::Validator output_file() {
+    return CLI::Validator(
+        [](const std::string& text) -> std::string {
+            const std::filesystem::path folder = std::filesystem::path(text).parent_path();
+            std::error_code error;
+            if (folder.empty() || std::filesystem::is_directory(folder, error)) return {};
+            if (std::filesystem::exists(folder, error)) return text + ": " + folder.string() + " is not a folder";
+            return text + ": the folder " + folder.string() + " does not exist";
+        },
+        "", "output file");
+}
 
 glm::vec3 parse_vec3(const std::string& text, const std::string& option) {
     std::stringstream stream(text);

@@ -102,7 +102,8 @@ Runner add_pattern_command(CLI::App& app) {
                     "or JSON {\"strokes\": [{\"points\": [[x, y], ...], \"width\": w, \"color\": [r, g, b]}]}")
         ->required();
     cmd->add_option("-o,--output", o->output, "Output strokes: .svg (one <polyline>/<path> per stroke) or .json")
-        ->required();
+        ->required()
+        ->check(output_file());
     cmd->add_option("--path", o->path,
                     "Synthesize along this path (1D): JSON {\"points\": [[x, y], ...], \"closed\": bool} or an SVG\n"
                     "file whose first <path> uses M/L/C/Z (as for `linework ribbon --curve`)");

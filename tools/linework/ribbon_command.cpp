@@ -187,7 +187,7 @@ Runner add_ribbon_command(CLI::App& app) {
                     "Curve in output pixels: JSON {\"points\": [[x, y], ...], \"closed\": bool} or an SVG\n"
                     "file whose first <path> uses M/L/C/Z")
         ->required();
-    cmd->add_option("-o,--output", o->output, "Output PNG")->required();
+    cmd->add_option("-o,--output", o->output, "Output PNG")->required()->check(output_file());
     cmd->add_flag("--closed", o->closed, "Close the curve: the last piece connects back to the first (§1.5)");
     cmd->add_flag("--stitch", o->stitch, "Deform pieces so that their edges align better (§3.2, P = 32)");
     cmd->add_option("--piece", o->piece, "Piece length δ along the curve, output pixels (default: b / 2; much shorter pieces\n"
@@ -205,7 +205,8 @@ Runner add_ribbon_command(CLI::App& app) {
     cmd->add_option("--size", o->size, "Output size WxH (default: the ribbon's extent from the origin)");
     cmd->add_option("--dump-dp", o->dump,
                     "Write the DP result as JSON: pieces, positions [[u, v], ...], seam_costs, total_cost,\n"
-                    "greedy_cost, random_cost, valid_counts, row_ms");
+                    "greedy_cost, random_cost, valid_counts, row_ms")
+        ->check(output_file());
     cmd->add_option("--avoid", o->avoid, "Avoidance map (PNG of the output size): alpha >= 128 is forbidden (§3.1)");
     cmd->add_flag("--transparent", o->transparent, "Keep the transparent background (default: over white)");
     cmd->add_option("--compute", o->compute,
@@ -229,7 +230,7 @@ Runner add_ribbon_exemplar_command(CLI::App& app) {
         "Generate a structured-pattern exemplar for `linework ribbon` from signed distances:\n"
         "chain, lace, zigzag, beads or rope (sizes and spacings vary with the seed).");
     cmd->add_option("name", o->name, "Pattern")->required()->check(CLI::IsMember(exemplar_names()));
-    cmd->add_option("-o,--output", o->output, "Output PNG")->required();
+    cmd->add_option("-o,--output", o->output, "Output PNG")->required()->check(output_file());
     cmd->add_option("--size", o->size, "Size WxH")->capture_default_str();
     cmd->add_option("--seed", o->seed, "Variation seed")->capture_default_str();
     return [o] { return run_exemplar(*o); };
