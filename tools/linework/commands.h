@@ -48,8 +48,8 @@ glm::ivec2 parse_size(const std::string& text, const std::string& option);
 void use_slam_strokes(LinesDesc& lines, const std::string& slam, float width);
 // For options that name a file to write (-o FILE.exr, --svg, --preview ...): its folder must
 // exist, checked when the command line is parsed, so that a run does not fail at its last
-// step after minutes of work (the message names the folder). Folders named by -o of
-// render, view and farm are made instead.
+// step after minutes of work (the message names the folder). render, view and farm make
+// their folders instead (render's -o, --svg and --dump-paths).
 [[nodiscard]] CLI::Validator output_file();
 // 1 (after one line on stderr) when validation was on and reported anything, else 0.
 int exit_code_after_validation(const Context& ctx, bool validation);

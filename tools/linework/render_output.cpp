@@ -54,6 +54,8 @@ std::filesystem::path svg_path(const FrameFiles& files, int f) {
 void create_folders(const FrameFiles& files) {
     if (!files.out_dir.empty()) create_folder(files.out_dir, "output");
     if (!files.dump_paths.empty()) create_folder(files.dump_paths, "dump");
+    // The SVG's folder too, before the first frame: a missing one would fail only after it.
+    if (const auto svg = std::filesystem::path(files.svg).parent_path(); !svg.empty()) create_folder(svg, "SVG");
 }
 
 void write_frame_files(const FrameFiles& files, const SceneSession& session, const Frame& frame, int f) {

@@ -29,7 +29,8 @@ struct FrameFiles {
     std::filesystem::path progress_state;  // what --resume goes on from (render_state.h)
 };
 
-// Makes the output folder and the dump folder (when asked for); errors name them.
+// Makes the output folder, the dump folder and the SVG's folder (when asked for); errors
+// name them.
 void create_folders(const FrameFiles& files);
 
 // Writes the frame's files: EXR, SVG, dump, then the PNG (a frame whose PNG exists is
