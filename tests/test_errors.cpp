@@ -11,6 +11,7 @@
 
 #include "core/error.h"
 #include "gpu/vk_check.h"
+#include "io/image_io.h"
 #include "test_support.h"
 
 namespace lw {
@@ -100,6 +101,13 @@ void write_fixtures(const fs::path& tmp) {
     ASSERT_EQ(small.exit_code, 0) << small.output;
     const auto tall = test::run_linework("ribbon-exemplar beads -o " + test::quote(tmp / "tall.png") + " --size 64x100");
     ASSERT_EQ(tall.exit_code, 0) << tall.output;
+    {
+        ImageRGBA8 blank;
+        blank.width = 64;
+        blank.height = 16;
+        blank.pixels.assign(size_t(64 * 16 * 4), uint8_t(255));
+        write_png(tmp / "blank.png", blank);
+    }
     fs::create_directories(tmp / "resume");
     fs::copy_file(tmp / "small.png", tmp / "resume/frame_0000.png");
 }
