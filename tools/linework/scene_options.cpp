@@ -1,5 +1,6 @@
 #include "scene_options.h"
 
+#include <cstdlib>
 #include <filesystem>
 
 #include "commands.h"
@@ -38,8 +39,17 @@ void add_scene_options(CLI::App* cmd, SceneOptions& o, bool offline) {
                     "type then lies on that rtsc's lines; scene key lines.curvature)")
         ->check(CLI::IsMember({"exact", "trimesh2"}));
     cmd->add_option("--slam", o.slam, "Draw silhouettes and suggestive contours as strokes textured by this SLAM (.exr)");
-    cmd->add_option("--stroke-width", o.stroke_width, "Width of SLAM strokes in pixels (default 6)")
-        ->check(CLI::PositiveNumber);
+    cmd->add_option("--stroke-width", o.stroke_width,
+                    "Width of SLAM strokes in pixels, 0.1 to 256 as a line set's style.width (default 6)")
+        ->check(CLI::Validator(
+            [](const std::string& text) -> std::string {
+                char* end = nullptr;
+                const double w = std::strtod(text.c_str(), &end);
+                if (end != text.c_str() + text.size() || !(w >= 0.1 && w <= 256.0))
+                    return "must be between 0.1 and 256 pixels, got \"" + text + "\"";
+                return {};
+            },
+            "FLOAT in [0.1 - 256]"));
     cmd->add_option("--param", o.param,
                     "Stroke parameterization: coherent (default; Bénard et al. 2010 §4), arclength (tiling) or "
                     "stretch (one texture per path)")
