@@ -71,13 +71,16 @@ SlamSynthesis synthesize_slam(const Plane& exemplar, const SlamSynthesisDesc& de
                                                 std::to_string(2 * m.unit) + " (twice the pyramid unit of a " +
                                                 std::to_string(exemplar.rows) + "-row exemplar)");
     if (desc.levels < 2) throw ParameterError("SLAM levels", ": at least 2");
-    // Paper alone (a blank image, or a transparent PNG whose ink is in its colour while its
-    // alpha is 0 everywhere) gives a SLAM that draws nothing: surely not what was meant.
-    if (std::all_of(exemplar.v.begin(), exemplar.v.end(), [](float ink) { return !(ink > 0.5f / 255.0f); }))
-        throw Error(name + ": holds no ink (every texel is paper), so its SLAM would draw nothing");
 
     Timer analysis;
     const Plane padded = pad_exemplar(exemplar, m, out.exemplar_cols);
+    // Paper alone in the columns synthesized (a blank image, or a transparent PNG whose ink
+    // is in its colour while its alpha is 0 everywhere) gives a SLAM that draws nothing:
+    // surely not what was meant.
+    if (std::all_of(padded.v.begin(), padded.v.end(), [](float ink) { return !(ink > 0.5f / 255.0f); }))
+        throw Error(name + ": holds no ink in its first " + std::to_string(out.exemplar_cols) +
+                    " columns (every texel is paper; in a PNG with transparency the alpha is the ink), so its SLAM "
+                    "would draw nothing");
     out.target = analyze_texture(padded, make_pyramid_geometry(m.padded_rows, out.exemplar_cols, m.scales, kOrientations),
                                  kNeighborhood);
     out.analysis_ms = analysis.elapsed_ms();

@@ -46,11 +46,14 @@ glm::ivec2 parse_size(const std::string& text, const std::string& option);
 // or every line set selecting either) as SLAM strokes of width W, tapered over 2W
 // (replacing any ribbon style).
 void use_slam_strokes(LinesDesc& lines, const std::string& slam, float width);
-// For options that name a file to write (-o FILE.exr, --svg, --preview ...): its folder must
-// exist, checked when the command line is parsed, so that a run does not fail at its last
+// For options that name a file to write (-o FILE.exr, --preview ...): a file name, in a
+// folder that exists and can be written to, checked when the command line is parsed, so that a run does not fail at its last
 // step after minutes of work (the message names the folder). render, view and farm make
 // their folders instead (render's -o, --svg and --dump-paths).
 [[nodiscard]] CLI::Validator output_file();
+// Only the file part: not an existing folder, not a name ending in "/" (render's --svg,
+// whose folder render makes).
+[[nodiscard]] CLI::Validator output_file_name();
 // 1 (after one line on stderr) when validation was on and reported anything, else 0.
 int exit_code_after_validation(const Context& ctx, bool validation);
 // The "bounds:" line render and view print: the model's box in scene units (what a camera

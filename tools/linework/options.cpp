@@ -1,8 +1,12 @@
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <sstream>
+
+#include <unistd.h>
 
 #include "commands.h"
 #include "core/error.h"
@@ -22,16 +26,41 @@ bool parse_float(const std::string& text, float* out) {
 }
 }  // namespace
 
+namespace {
+// The file part of an output path: not a folder (an existing one, or a name ending in "/").
+std::string file_name_problem(const std::string& text) {
+    std::error_code error;
+    if (!std::filesystem::path(text).has_filename() || std::filesystem::is_directory(text, error))
+        return text + ": is a folder; give a file name";
+    return {};
+}
+}  // namespace
+
 CLI::Validator output_file() {
     return CLI::Validator(
         [](const std::string& text) -> std::string {
+            if (std::string problem = file_name_problem(text); !problem.empty()) return problem;
             const std::filesystem::path folder = std::filesystem::path(text).parent_path();
+            const std::filesystem::path where = folder.empty() ? "." : folder;
             std::error_code error;
-            if (folder.empty() || std::filesystem::is_directory(folder, error)) return {};
-            if (std::filesystem::exists(folder, error)) return text + ": " + folder.string() + " is not a folder";
-            return text + ": the folder " + folder.string() + " does not exist";
+            const bool is_folder = std::filesystem::is_directory(where, error);
+            if (!is_folder) {
+                if (error && error != std::errc::no_such_file_or_directory && error != std::errc::not_a_directory)
+                    return text + ": " + where.string() + ": " + error.message();
+                if (std::filesystem::exists(where, error)) return text + ": " + where.string() + " is not a folder";
+                return text + ": the folder " + where.string() + " does not exist";
+            }
+            if (::access(where.c_str(), W_OK | X_OK) != 0)
+                return text + ": the folder " + where.string() + " cannot be written to (" + std::strerror(errno) + ")";
+            if (std::filesystem::exists(text, error) && ::access(text.c_str(), W_OK) != 0)
+                return text + ": cannot be replaced (" + std::string(std::strerror(errno)) + ")";
+            return {};
         },
         "", "output file");
+}
+
+CLI::Validator output_file_name() {
+    return CLI::Validator(file_name_problem, "", "output file name");
 }
 
 glm::vec3 parse_vec3(const std::string& text, const std::string& option) {

@@ -40,16 +40,16 @@ void add_scene_options(CLI::App* cmd, SceneOptions& o, bool offline) {
         ->check(CLI::IsMember({"exact", "trimesh2"}));
     cmd->add_option("--slam", o.slam, "Draw silhouettes and suggestive contours as strokes textured by this SLAM (.exr)");
     cmd->add_option("--stroke-width", o.stroke_width,
-                    "Width of SLAM strokes in pixels, 0.1 to 256 as a line set's style.width (default 6)")
+                    "Width of SLAM strokes in pixels, 0.1 to 64 as the scene key lines.TYPE.width (default 6)")
         ->check(CLI::Validator(
             [](const std::string& text) -> std::string {
                 char* end = nullptr;
                 const double w = std::strtod(text.c_str(), &end);
-                if (end != text.c_str() + text.size() || !(w >= 0.1 && w <= 256.0))
-                    return "must be between 0.1 and 256 pixels, got \"" + text + "\"";
+                if (end != text.c_str() + text.size() || !(w >= 0.1 && w <= 64.0))
+                    return "must be between 0.1 and 64 pixels, got \"" + text + "\"";
                 return {};
             },
-            "FLOAT in [0.1 - 256]"));
+            "FLOAT in [0.1 - 64]"));
     cmd->add_option("--param", o.param,
                     "Stroke parameterization: coherent (default; Bénard et al. 2010 §4), arclength (tiling) or "
                     "stretch (one texture per path)")
