@@ -20,7 +20,11 @@ fail() { echo "FAIL: $*" >&2; exit 1; }
 # (eval "$(…)" would not stop on a failed start.)
 env=$(bash "$here/slurm.sh" start "$work/slurm") || fail "the local Slurm did not start (tools/test.sh installs slurm-wlm and munge)"
 eval "$env"
-shot=("$src/tests/data/models/spot/spot.glb" --device cpu --size 160x120 --orbit 90 --slam "$src/scenes/slams/dots.exr")
+# 960×720: a frame takes ~30 ms here, so the five frames after a chunk's first take ~150 ms,
+# and a CONT/STOP slice (below) that overruns by tens of ms on a loaded machine still stops
+# the chunk mid-way. At 160×120 (~9 ms a frame) the whole chunk once got written inside one
+# overrun slice while ctest ran other tests beside it ("the kill did not land mid-chunk").
+shot=("$src/tests/data/models/spot/spot.glb" --device cpu --size 960x720 --orbit 90 --slam "$src/scenes/slams/dots.exr")
 
 echo "== one render of the range (the reference)"
 "$linework" render "${shot[@]}" --frames 0:23 -o "$work/one" --dump-paths "$work/one_dumps" > "$work/one.log"
@@ -50,7 +54,7 @@ echo "== --exact through Slurm, one chunk's process killed mid-chunk"
 # which on its first run writes its pid, stops, and when let go execs linework in the same
 # process. The test then lets it run in ~2 ms slices (bash builtins, no fork between CONT
 # and STOP: a loaded machine delays a forked `sleep` by tens of ms, and a frame here takes
-# ~10 ms) until its first frame is on disk, so that the SIGKILL lands mid-chunk whatever the
+# ~30 ms) until its first frame is on disk, so that the SIGKILL lands mid-chunk whatever the
 # machine's speed; its job script then runs the task again (stop_first.sh then just execs).
 cat > "$work/stop_first.sh" <<EOS
 #!/usr/bin/env bash
