@@ -24,9 +24,7 @@ bool parse_float(const std::string& text, float* out) {
     *out = value;
     return true;
 }
-}  // namespace
 
-namespace {
 // The file part of an output path: not a folder (an existing one, or a name ending in "/").
 std::string file_name_problem(const std::string& text) {
     std::error_code error;
@@ -53,7 +51,7 @@ CLI::Validator output_file() {
             if (::access(where.c_str(), W_OK | X_OK) != 0)
                 return text + ": the folder " + where.string() + " cannot be written to (" + std::strerror(errno) + ")";
             if (std::filesystem::exists(text, error) && ::access(text.c_str(), W_OK) != 0)
-                return text + ": cannot be replaced (" + std::string(std::strerror(errno)) + ")";
+                return text + ": cannot be replaced (" + std::strerror(errno) + ")";
             return {};
         },
         "", "output file");
