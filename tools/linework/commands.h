@@ -47,9 +47,10 @@ glm::ivec2 parse_size(const std::string& text, const std::string& option);
 // (replacing any ribbon style).
 void use_slam_strokes(LinesDesc& lines, const std::string& slam, float width);
 // For options that name a file to write (-o FILE.exr, --preview ...): a file name, in a
-// folder that exists and can be written to, checked when the command line is parsed, so that a run does not fail at its last
-// step after minutes of work (the message names the folder). render, view and farm make
-// their folders instead (render's -o, --svg and --dump-paths).
+// folder that exists and can be written to, checked when the command line is parsed, so
+// that a run does not fail at its last step after minutes of work (the message names the
+// folder). render, view and farm make their folders instead (render's -o, --svg and
+// --dump-paths).
 [[nodiscard]] CLI::Validator output_file();
 // Only the file part: not an existing folder, not a name ending in "/" (render's --svg,
 // whose folder render makes).
