@@ -61,6 +61,7 @@ struct GraphicsPipelineDesc {
     std::vector<VertexAttribute> attributes;
     VkPrimitiveTopology topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
     VkCullModeFlags cull_mode = VK_CULL_MODE_NONE;
+    bool dynamic_cull_mode = false;  // set per draw with vkCmdSetCullMode (core in Vulkan 1.3)
     VkFormat color_format = VK_FORMAT_R8G8B8A8_UNORM;  // VK_FORMAT_UNDEFINED = depth only
     VkFormat depth_format = VK_FORMAT_D32_SFLOAT;      // VK_FORMAT_UNDEFINED = no depth
     bool depth_test = true;

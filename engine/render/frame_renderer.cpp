@@ -104,6 +104,8 @@ void FrameRenderer::keep_positions_of_frames_in_flight() {
 void FrameRenderer::set_mesh(const TriangleMesh& mesh, bool with_lines, float crease_angle_deg, CurvatureFit curvature) {
     keep_positions_of_frames_in_flight();
     mesh_ = upload_mesh(*ctx_, mesh, &materials_);
+    closed_ = find_closed_surfaces(mesh);
+    closed_pose_ = pose_closed_surfaces(closed_, mesh.positions);
     line_mesh_.reset();
     if (with_lines) {
         line_mesh_ = build_line_mesh(mesh, crease_angle_deg, curvature_options(curvature));
@@ -114,6 +116,7 @@ void FrameRenderer::set_mesh(const TriangleMesh& mesh, bool with_lines, float cr
 void FrameRenderer::deform(const TriangleMesh& posed) {
     keep_positions_of_frames_in_flight();
     mesh_ = upload_mesh(*ctx_, posed, &materials_);
+    closed_pose_ = pose_closed_surfaces(closed_, posed.positions);
     if (!line_mesh_) return;
     pose_line_mesh(*line_mesh_, posed);
     if (!extraction_on_host_) extractor_.set_pose(*line_mesh_);
@@ -228,13 +231,14 @@ void FrameRenderer::begin(FrameInput input) {
     // Without drawing, the surface is depth-only: the same vertex stage, so the same depth.
     SurfaceStyle surface_style = input.surface;
     if (!input.outputs.draw) surface_style.draw_surface = false;
+    const BackFaceCulling culling{.surfaces = &closed_, .hidden = back_faces_hidden(closed_pose_, input.camera)};
     for (int attempt = 0;; ++attempt) {
         slot.surface_work.emplace(ctx_->submit([&](VkCommandBuffer cmd) {
             slot.timer.reset(cmd);
             slot.timer.begin(cmd, "surface");
             if (mesh_)
                 surface_pass_.record(cmd, slot.target, *mesh_, input.camera, input.eye, surface_style,
-                                     gpu_materials_ ? &*gpu_materials_ : nullptr);
+                                     gpu_materials_ ? &*gpu_materials_ : nullptr, &culling);
             else
                 surface_pass_.record_clear(cmd, slot.target, surface_style);
             slot.timer.end(cmd);

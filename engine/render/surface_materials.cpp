@@ -93,6 +93,7 @@ GpuMesh upload_mesh(const Context& ctx, const TriangleMesh& mesh, const SurfaceM
     out.vertices = upload_buffer(ctx, vertices, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, "mesh vertices");
     out.indices = upload_buffer(ctx, indices, VK_BUFFER_USAGE_INDEX_BUFFER_BIT, "mesh indices");
     out.index_count = uint32_t(indices.size());
+    out.face_order = std::move(order);
     return out;
 }
 

@@ -33,6 +33,7 @@ struct GpuMesh {
     Buffer indices;
     uint32_t index_count = 0;
     std::vector<MeshDraw> draws;  // one per material present, in drawing order
+    std::vector<uint32_t> face_order;  // per triangle of the index buffer: the input mesh's triangle
 };
 
 // Triangles reordered by material when `face_material` has one entry per triangle (else one

@@ -34,7 +34,7 @@ GraphicsPipelineDesc pass_desc(const Context& ctx, std::span<const uint32_t> fra
             .attributes = {{.location = 0, .format = VK_FORMAT_R32G32B32_SFLOAT, .offset = 0},
                            {.location = 1, .format = VK_FORMAT_R32G32B32_SFLOAT, .offset = 3 * sizeof(float)},
                            {.location = 2, .format = VK_FORMAT_R32G32_SFLOAT, .offset = 6 * sizeof(float)}},
-            .cull_mode = VK_CULL_MODE_NONE,  // glTF parts may be single-sided or open
+            .dynamic_cull_mode = true,  // back faces only where no pixel can see one (draw_materials)
             .color_format = color_format,
             .depth_write = !blend,
             .blend = blend ? BlendMode::Alpha : BlendMode::None,
@@ -150,9 +150,40 @@ void SurfacePass::resolve_depth(VkCommandBuffer cmd, RenderTarget& target, VkRen
     depth.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
 }
 
+namespace {
+
+// Per draw, whether it may skip its back faces in this view: the draw is opaque, and every
+// face of the components its faces belong to is drawn opaque, each component hidden from
+// the view (geometry/closed_surfaces.h: then no back face is the first surface of a pixel).
+std::vector<uint8_t> cullable_draws(const GpuMesh& mesh, const std::vector<MeshDraw>& draws,
+                                    const std::vector<uint8_t>& opaque, const BackFaceCulling* culling) {
+    std::vector<uint8_t> cull(draws.size(), 0);
+    if (!culling || !culling->surfaces || culling->surfaces->face_component.size() != mesh.face_order.size())
+        return cull;
+    const std::vector<int32_t>& component = culling->surfaces->face_component;
+    std::vector<uint8_t> ok = culling->hidden;
+    ok.resize(culling->surfaces->components.size(), 0);
+    const auto for_faces = [&](const MeshDraw& draw, auto&& visit) {
+        for (uint32_t k = draw.first_index / 3; k < (draw.first_index + draw.index_count) / 3; ++k)
+            if (const int32_t c = component[mesh.face_order[k]]; c >= 0) visit(size_t(c));
+    };
+    for (size_t d = 0; d < draws.size(); ++d)
+        if (!opaque[d]) for_faces(draws[d], [&](size_t c) { ok[c] = 0; });
+    for (size_t d = 0; d < draws.size(); ++d) {
+        if (!opaque[d]) continue;
+        bool all = true;
+        for_faces(draws[d], [&](size_t c) { all = all && ok[c]; });
+        cull[d] = all ? 1 : 0;
+    }
+    return cull;
+}
+
+}  // namespace
+
 void SurfacePass::draw_materials(VkCommandBuffer cmd, RenderTarget& target, const GpuMesh& mesh,
                                  const CameraMatrices& camera, const glm::vec3& eye, const SurfaceStyle& style,
-                                 const GpuMaterials* materials, bool depth_only) const {
+                                 const GpuMaterials* materials, bool depth_only,
+                                 const BackFaceCulling* culling) const {
     target.set_viewport(cmd);
     VkDeviceSize offset = 0;
     VkBuffer vertex_buffer = mesh.vertices.get();
@@ -162,15 +193,26 @@ void SurfacePass::draw_materials(VkCommandBuffer cmd, RenderTarget& target, cons
     // Without materials the whole buffer is one draw (its grouping does not matter).
     const std::vector<MeshDraw> everything{{.material = -1, .first_index = 0, .index_count = mesh.index_count}};
     const std::vector<MeshDraw>& draws = materials && !mesh.draws.empty() ? mesh.draws : everything;
-    for (const MeshDraw& draw : draws) {
+    const auto material_of = [&](const MeshDraw& draw) -> const Material* {
         const bool known = materials && draw.material >= 0 && size_t(draw.material) < materials->size();
-        const Material* material = known ? &materials->material(size_t(draw.material)) : nullptr;
-        const bool textured = known && materials->textured(size_t(draw.material));
+        return known ? &materials->material(size_t(draw.material)) : nullptr;
+    };
+    std::vector<uint8_t> opaque(draws.size());
+    for (size_t d = 0; d < draws.size(); ++d) {
+        const Material* material = material_of(draws[d]);
+        opaque[d] = !material || material->alpha_mode == AlphaMode::Opaque;
+    }
+    const std::vector<uint8_t> cull = cullable_draws(mesh, draws, opaque, culling);
+    for (size_t d = 0; d < draws.size(); ++d) {
+        const MeshDraw& draw = draws[d];
+        const Material* material = material_of(draw);
+        const bool textured = material && materials->textured(size_t(draw.material));
         const AlphaMode mode = material ? material->alpha_mode : AlphaMode::Opaque;
         if (depth_only && mode == AlphaMode::Blend) continue;  // hides nothing
         const GraphicsPipeline& pipeline = depth_only ? (mode == AlphaMode::Mask ? depth_mask_ : depth_only_)
                                                       : (mode == AlphaMode::Blend ? blend_ : pipeline_);
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.get());
+        vkCmdSetCullMode(cmd, cull[d] ? VK_CULL_MODE_BACK_BIT : VK_CULL_MODE_NONE);
         if (&pipeline != &depth_only_)
             pipeline.push_image(*ctx_, cmd, 0, textured ? materials->view(size_t(draw.material)) : white_.view(),
                                 textured ? materials->sampler(size_t(draw.material)) : white_sampler_.get());
@@ -183,7 +225,7 @@ void SurfacePass::draw_materials(VkCommandBuffer cmd, RenderTarget& target, cons
 
 void SurfacePass::record_depth_only(VkCommandBuffer cmd, RenderTarget& target, const GpuMesh* mesh,
                                     const CameraMatrices& camera, const SurfaceStyle& style,
-                                    const GpuMaterials* materials) const {
+                                    const GpuMaterials* materials, const BackFaceCulling* culling) const {
     if (target.samples != samples_) throw Error("surface pass: the target's sample count differs from the pipeline's");
     // The colour is the background: a clear, no fragment shading (much cheaper on lavapipe).
     record_image_barrier(cmd, target.color,
@@ -213,16 +255,16 @@ void SurfacePass::record_depth_only(VkCommandBuffer cmd, RenderTarget& target, c
                               .layerCount = 1,
                               .pDepthAttachment = &depth};
     vkCmdBeginRendering(cmd, &rendering);
-    if (mesh) draw_materials(cmd, target, *mesh, camera, glm::vec3(0.0f), style, materials, true);
+    if (mesh) draw_materials(cmd, target, *mesh, camera, glm::vec3(0.0f), style, materials, true, culling);
     vkCmdEndRendering(cmd);
     end_depth(cmd, target);
 }
 
 void SurfacePass::record(VkCommandBuffer cmd, RenderTarget& target, const GpuMesh& mesh,
                          const CameraMatrices& camera, const glm::vec3& eye, const SurfaceStyle& style,
-                         const GpuMaterials* materials) const {
+                         const GpuMaterials* materials, const BackFaceCulling* culling) const {
     if (!style.draw_surface) {
-        record_depth_only(cmd, target, &mesh, camera, style, materials);
+        record_depth_only(cmd, target, &mesh, camera, style, materials, culling);
         return;
     }
     if (target.samples != samples_) throw Error("surface pass: the target's sample count differs from the pipeline's");
@@ -254,7 +296,7 @@ void SurfacePass::record(VkCommandBuffer cmd, RenderTarget& target, const GpuMes
                               .pColorAttachments = &color,
                               .pDepthAttachment = &depth};
     vkCmdBeginRendering(cmd, &rendering);
-    draw_materials(cmd, target, mesh, camera, eye, style, materials, false);
+    draw_materials(cmd, target, mesh, camera, eye, style, materials, false, culling);
     vkCmdEndRendering(cmd);
     target.color_to_transfer_src(cmd);
     end_depth(cmd, target);

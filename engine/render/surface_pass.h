@@ -21,6 +21,14 @@
 // but hide no lines (Freestyle and Line Art treat such faces as transparent too). Blended
 // faces are not sorted among themselves.
 //
+// Back faces: drawn (glTF's single-sided faces too), except in a draw whose faces all belong
+// to closed surfaces from whose inside no pixel sees out in this view
+// (geometry/closed_surfaces.h, `BackFaceCulling`): there no back face is the first surface
+// of a pixel, so skipping them changes neither colour nor depth — the depth the lines'
+// visibility reads — but halves the faces lavapipe rasterizes. (At a contour a back face
+// folded behind a front one can tie with it in depth and win a pixel of the unculled pass:
+// tests/test_back_faces.cpp allows those pixels, and only those.)
+//
 // Headless is the only platform here: render into VkImages with dynamic rendering, copy
 // to a host-visible buffer, read back (STYLE.md: lavapipe has no headless surface).
 #pragma once
@@ -31,6 +39,7 @@
 #include <glm/glm.hpp>
 
 #include "core/image.h"
+#include "geometry/closed_surfaces.h"
 #include "gpu/context.h"
 #include "gpu/pipeline.h"
 #include "gpu/resources.h"
@@ -43,6 +52,13 @@
 
 namespace lw {
 
+// The faces a view may skip: the mesh's closed surfaces (found once per mesh) and, per
+// component, whether its back faces are hidden from this view (`back_faces_hidden`).
+struct BackFaceCulling {
+    const ClosedSurfaces* surfaces = nullptr;
+    std::vector<uint8_t> hidden;
+};
+
 class SurfacePass {
 public:
     // `samples`: the sample count of the targets it draws into (1, 4 or 8).
@@ -53,8 +69,10 @@ public:
     // `style.draw_surface` off, the colour is only cleared and the mesh drawn depth-only.
     // `materials` (indexed by the mesh's draws) colour and cut the surface unless
     // `style.materials` is off; without them every face takes `style.color`.
+    // `culling`, when given, lets the draws skip back faces where that changes no pixel.
     void record(VkCommandBuffer cmd, RenderTarget& target, const GpuMesh& mesh, const CameraMatrices& camera,
-                const glm::vec3& eye, const SurfaceStyle& style, const GpuMaterials* materials = nullptr) const;
+                const glm::vec3& eye, const SurfaceStyle& style, const GpuMaterials* materials = nullptr,
+                const BackFaceCulling* culling = nullptr) const;
 
     // The same with nothing to draw (a scene of vector layers only): background and far depth.
     void record_clear(VkCommandBuffer cmd, RenderTarget& target, const SurfaceStyle& style) const {
@@ -64,12 +82,12 @@ public:
 private:
     void record_depth_only(VkCommandBuffer cmd, RenderTarget& target, const GpuMesh* mesh,
                            const CameraMatrices& camera, const SurfaceStyle& style,
-                           const GpuMaterials* materials = nullptr) const;
+                           const GpuMaterials* materials = nullptr, const BackFaceCulling* culling = nullptr) const;
     // Every draw of the mesh with its material's constants and texture; `depth_only` draws
     // skip blended materials and test masked ones' alpha.
     void draw_materials(VkCommandBuffer cmd, RenderTarget& target, const GpuMesh& mesh, const CameraMatrices& camera,
                         const glm::vec3& eye, const SurfaceStyle& style, const GpuMaterials* materials,
-                        bool depth_only) const;
+                        bool depth_only, const BackFaceCulling* culling) const;
     // Points `depth` at the multisampled depth, resolved into the target's (samples > 1).
     void resolve_depth(VkCommandBuffer cmd, RenderTarget& target, VkRenderingAttachmentInfo& depth) const;
 

@@ -62,6 +62,7 @@ struct BenchOptions {
     std::vector<int> threads{1};
     int repeat = 50;
     int samples = 1;  // samples per pixel of the surface pass (MSAA)
+    bool all_faces = false;  // surface: draw every back face (no culling of hidden ones)
 };
 
 struct Series {
@@ -109,6 +110,13 @@ int run_surface(const BenchOptions& b) {
     lw::Context ctx({.device = lw::parse_device_choice(b.device)});
     BenchScene s = prepare(b, ctx);
     lw::GpuMesh mesh = lw::upload_mesh(ctx, s.scene.mesh);
+    const lw::ClosedSurfaces closed = lw::find_closed_surfaces(s.scene.mesh);
+    const lw::BackFaceCulling culling{
+        .surfaces = &closed,
+        .hidden = lw::back_faces_hidden(lw::pose_closed_surfaces(closed, s.scene.mesh.positions), s.camera)};
+    const size_t hidden = size_t(std::count(culling.hidden.begin(), culling.hidden.end(), uint8_t{1}));
+    std::printf("closed surfaces: %zu components, back faces hidden from this view in %zu%s\n",
+                closed.components.size(), hidden, b.all_faces ? " (not culled: --all-faces)" : "");
     const uint32_t samples = uint32_t(b.samples);
     lw::SurfacePass pass(ctx, VK_FORMAT_R8G8B8A8_UNORM, samples);
     lw::RenderTarget target(ctx, uint32_t(s.width), uint32_t(s.height), VK_FORMAT_R8G8B8A8_UNORM, samples);
@@ -120,7 +128,8 @@ int run_surface(const BenchOptions& b) {
         ctx.submit_and_wait([&](VkCommandBuffer cmd) {
             timer.reset(cmd);
             timer.begin(cmd, "surface");
-            pass.record(cmd, target, mesh, s.camera, s.scene.camera.eye, style);
+            pass.record(cmd, target, mesh, s.camera, s.scene.camera.eye, style, nullptr,
+                        b.all_faces ? nullptr : &culling);
             timer.end(cmd);
         });
         const double ms = w.elapsed_ms();
@@ -265,6 +274,9 @@ int main(int argc, char** argv) {
     BenchOptions surface, lines;
     CLI::App* surface_cmd = app.add_subcommand("surface", "Shaded surface pass of a (subdivided) model.");
     add_options(surface_cmd, surface);
+    surface_cmd->add_flag("--all-faces", surface.all_faces,
+                          "Draw every back face, also where no pixel can see one (what the pass did before it "
+                          "culled hidden ones: for comparing)");
     CLI::App* lines_cmd = app.add_subcommand("lines", "The whole line frame and its stages.");
     add_options(lines_cmd, lines);
     lines_cmd->add_flag("--shaded", lines.shaded, "Draw the lines over toon shading instead of the background");
