@@ -243,6 +243,17 @@ TEST_F(BackFaceCullingGpu, ScanAndOpenTubeSameImagesWhereCulled) {
     EXPECT_LE(culled, 12);
 }
 
+TEST_F(BackFaceCullingGpu, SkinnedPoseSameImages) {
+    // The Fox mid-stride: its pose is skinned, its seams move together, and it stays closed.
+    const std::string model = (test::data_dir() / "models/Fox/Fox.glb").string();
+    const LoadedScene scene =
+        load_scene(parse_scene_json(R"({"model": ")" + model + R"(", "animation": {"clip": "Walk"}})", "fox.json"));
+    const TriangleMesh posed = pose_scene(scene, 0.4f);
+    ASSERT_NE(posed.positions, scene.mesh.positions);
+    EXPECT_TRUE(pose_closed_surfaces(find_closed_surfaces(scene.mesh), posed.positions).welds_hold);
+    EXPECT_EQ(expect_same_images(posed), 30);
+}
+
 TEST_F(BackFaceCullingGpu, ClosedAndMultisampledSameImages) {
     EXPECT_EQ(expect_same_images(split_cube(), 4), 30);
     EXPECT_EQ(expect_same_images(make_icosphere(1.0f, 2)), 30);
