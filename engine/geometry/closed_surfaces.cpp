@@ -2,165 +2,295 @@
 #include "geometry/closed_surfaces.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <numeric>
+#include <optional>
+#include <string>
 #include <unordered_map>
 
+#include "core/error.h"
+#include "geometry/face_pairs.h"
 #include "geometry/welded_mesh.h"
 
 namespace lw {
 
 namespace {
 
+uint64_t edge_key(uint32_t a, uint32_t b) { return uint64_t{std::min(a, b)} << 32 | std::max(a, b); }
+
 uint32_t find_root(std::vector<uint32_t>& parent, uint32_t v) {
     while (parent[v] != v) v = parent[v] = parent[parent[v]];
     return v;
 }
 
-// Connected components of the welded faces (through shared vertices), numbered in order of
-// their first face; -1 for the vertices no face uses.
-std::vector<int32_t> vertex_components(const WeldedMesh& welded, size_t& count) {
-    std::vector<uint32_t> parent(welded.positions.size());
+// How each edge is used: by how many faces running lo→hi and hi→lo.
+struct EdgeUse {
+    uint32_t forward = 0, backward = 0;
+    // One face (an open edge) or one face each way (a consistently oriented interior edge):
+    // anything else — a fold of the orientation, a fin of three faces, a face and its
+    // reverse — leaves no single "outside" to reason about.
+    bool closable() const { return forward + backward == 1 || (forward == 1 && backward == 1); }
+};
+
+std::unordered_map<uint64_t, EdgeUse> edge_uses(const WeldedMesh& welded) {
+    std::unordered_map<uint64_t, EdgeUse> uses;
+    uses.reserve(welded.faces.size() * 2);
+    for (const glm::uvec3& f : welded.faces)
+        for (int c = 0; c < 3; ++c) {
+            const uint32_t a = f[c], b = f[(c + 1) % 3];
+            EdgeUse& use = uses[edge_key(a, b)];
+            (a < b ? use.forward : use.backward) += 1;
+        }
+    return uses;
+}
+
+// Faces joined across their interior edges (one face each way), numbered in order of their
+// first face. Shells that meet only at a vertex, or along an edge of another kind, are apart.
+std::vector<int32_t> face_components(const WeldedMesh& welded, const std::unordered_map<uint64_t, EdgeUse>& uses,
+                                     size_t& count) {
+    std::vector<uint32_t> parent(welded.faces.size());
     std::iota(parent.begin(), parent.end(), 0u);
-    for (const glm::uvec3& f : welded.faces) {
-        const uint32_t r = find_root(parent, f[0]);
-        parent[find_root(parent, f[1])] = r;
-        parent[find_root(parent, f[2])] = r;
+    for (const MeshEdge& edge : welded.edges) {
+        const EdgeUse& use = uses.at(edge_key(edge.v[0], edge.v[1]));
+        if (use.forward == 1 && use.backward == 1 && edge.face_count == 2)
+            parent[find_root(parent, uint32_t(edge.f[0]))] = find_root(parent, uint32_t(edge.f[1]));
     }
-    std::vector<int32_t> component(welded.positions.size(), -1), of_root(welded.positions.size(), -1);
+    std::vector<int32_t> component(welded.faces.size()), of_root(welded.faces.size(), -1);
     count = 0;
-    for (const glm::uvec3& f : welded.faces) {
-        const uint32_t root = find_root(parent, f[0]);
+    for (uint32_t f = 0; f < welded.faces.size(); ++f) {
+        const uint32_t root = find_root(parent, f);
         if (of_root[root] < 0) of_root[root] = int32_t(count++);
-        for (int c = 0; c < 3; ++c) component[f[c]] = of_root[root];
+        component[f] = of_root[root];
     }
     return component;
 }
 
-// The boundary of the faces as cycles of welded vertices: an edge used a→b more often than
-// b→a is left open that many times. The boundary of a surface is itself closed (as many
-// open edges leave each vertex as enter it), so a walk along unused open edges from a vertex
-// always comes back to it. Edges are taken in order of first use by the faces.
-std::vector<std::vector<uint32_t>> boundary_cycles(const WeldedMesh& welded) {
-    std::unordered_map<uint64_t, int32_t> net;  // key (lo, hi): uses lo→hi minus uses hi→lo
-    std::vector<uint64_t> order;
-    for (const glm::uvec3& f : welded.faces)
+// The open edges of each component as cycles of welded vertices, each running as its face
+// runs along it. The boundary of a surface is itself closed (as many open edges leave each
+// vertex as enter it), so a walk along unused open edges from a vertex comes back to it.
+// Edges are taken in order of first use by the faces; a walk stays in its component.
+std::vector<std::pair<int32_t, std::vector<uint32_t>>> boundary_cycles(
+    const WeldedMesh& welded, const std::unordered_map<uint64_t, EdgeUse>& uses, const std::vector<int32_t>& component) {
+    const auto node = [](int32_t c, uint32_t v) { return uint64_t(uint32_t(c)) << 32 | v; };
+    std::unordered_map<uint64_t, std::vector<uint32_t>> out;  // (component, vertex) → open edges leaving it
+    std::vector<uint64_t> starts;
+    for (uint32_t f = 0; f < welded.faces.size(); ++f)
         for (int c = 0; c < 3; ++c) {
-            const uint32_t a = f[c], b = f[(c + 1) % 3];
-            const uint64_t key = uint64_t{std::min(a, b)} << 32 | std::max(a, b);
-            const auto [it, inserted] = net.try_emplace(key, 0);
-            if (inserted) order.push_back(key);
-            it->second += a < b ? 1 : -1;
+            const uint32_t a = welded.faces[f][c], b = welded.faces[f][(c + 1) % 3];
+            const EdgeUse& use = uses.at(edge_key(a, b));
+            if (use.forward + use.backward != 1) continue;
+            std::vector<uint32_t>& leaving = out[node(component[f], a)];
+            if (leaving.empty()) starts.push_back(node(component[f], a));
+            leaving.push_back(b);
         }
-    std::unordered_map<uint32_t, std::vector<uint32_t>> out;  // open edges leaving a vertex
-    std::vector<uint32_t> starts;
-    for (uint64_t key : order) {
-        const int32_t n = net[key];
-        const uint32_t lo = uint32_t(key >> 32), hi = uint32_t(key);
-        const uint32_t from = n > 0 ? lo : hi, to = n > 0 ? hi : lo;
-        for (int32_t k = 0; k < std::abs(n); ++k) {
-            std::vector<uint32_t>& leaving = out[from];
-            if (leaving.empty()) starts.push_back(from);
-            leaving.push_back(to);
-        }
-    }
-    for (auto& [vertex, leaving] : out) std::reverse(leaving.begin(), leaving.end());  // taken from the back
-    std::vector<std::vector<uint32_t>> cycles;
-    for (uint32_t start : starts)
+    for (auto& [key, leaving] : out) std::reverse(leaving.begin(), leaving.end());  // taken from the back
+    std::vector<std::pair<int32_t, std::vector<uint32_t>>> cycles;
+    for (uint64_t start : starts) {
+        const auto c = int32_t(start >> 32);
         while (!out[start].empty()) {
             std::vector<uint32_t> cycle;
-            uint32_t v = start;
+            uint32_t v = uint32_t(start);
             do {
                 cycle.push_back(v);
-                std::vector<uint32_t>& leaving = out[v];
+                std::vector<uint32_t>& leaving = out[node(c, v)];
                 v = leaving.back();
                 leaving.pop_back();
-            } while (v != start);
-            cycles.push_back(std::move(cycle));
+            } while (v != uint32_t(start));
+            cycles.emplace_back(c, std::move(cycle));
         }
+    }
     return cycles;
+}
+
+// The winding number of a point about one component's closed surface (its faces and caps),
+// by the signed crossings of the ray from it along +x: w(p) counts the faces the ray leaves
+// through their back minus those it leaves through their front (w = 0 far away). The
+// triangles are listed in a grid over (y, z), so a ray reads only those over its cell.
+class WindingGrid {
+public:
+    struct Triangle {
+        glm::dvec3 a, b, c;
+        int32_t component;
+    };
+    explicit WindingGrid(std::vector<Triangle> triangles) : triangles_(std::move(triangles)) {
+        if (triangles_.empty()) return;
+        lo_ = hi_ = glm::dvec2(triangles_[0].a.y, triangles_[0].a.z);
+        for (const Triangle& t : triangles_)
+            for (const glm::dvec3& p : {t.a, t.b, t.c}) {
+                lo_ = glm::min(lo_, glm::dvec2(p.y, p.z));
+                hi_ = glm::max(hi_, glm::dvec2(p.y, p.z));
+            }
+        n_ = std::max(1, int(std::sqrt(double(triangles_.size()))));
+        cells_.resize(size_t(n_) * size_t(n_));
+        for (uint32_t i = 0; i < triangles_.size(); ++i) {
+            const Triangle& t = triangles_[i];
+            const glm::ivec2 from = cell(glm::min(glm::dvec2(t.a.y, t.a.z), glm::min(glm::dvec2(t.b.y, t.b.z), glm::dvec2(t.c.y, t.c.z))));
+            const glm::ivec2 to = cell(glm::max(glm::dvec2(t.a.y, t.a.z), glm::max(glm::dvec2(t.b.y, t.b.z), glm::dvec2(t.c.y, t.c.z))));
+            for (int y = from.x; y <= to.x; ++y)
+                for (int z = from.y; z <= to.y; ++z) cells_[size_t(y) * size_t(n_) + size_t(z)].push_back(i);
+        }
+    }
+
+    // Empty where the ray grazes an edge or a vertex (a measure-zero case the caller avoids).
+    std::optional<int> winding(const glm::dvec3& p, int32_t component) const {
+        if (triangles_.empty()) return 0;
+        const glm::dvec2 q(p.y, p.z);
+        if (q.x < lo_.x || q.y < lo_.y || q.x > hi_.x || q.y > hi_.y) return 0;
+        const glm::ivec2 c = cell(q);
+        int w = 0;
+        for (uint32_t i : cells_[size_t(c.x) * size_t(n_) + size_t(c.y)]) {
+            const Triangle& t = triangles_[i];
+            if (t.component != component) continue;
+            const auto orient = [&](const glm::dvec3& u, const glm::dvec3& v) {
+                return (u.y - q.x) * (v.z - q.y) - (u.z - q.y) * (v.y - q.x);
+            };
+            const double o0 = orient(t.b, t.c), o1 = orient(t.c, t.a), o2 = orient(t.a, t.b);
+            if (o0 == 0.0 || o1 == 0.0 || o2 == 0.0) {
+                if ((o0 >= 0.0 && o1 >= 0.0 && o2 >= 0.0) || (o0 <= 0.0 && o1 <= 0.0 && o2 <= 0.0)) return std::nullopt;
+                continue;
+            }
+            if ((o0 > 0.0) != (o1 > 0.0) || (o1 > 0.0) != (o2 > 0.0)) continue;
+            const double x = (o0 * t.a.x + o1 * t.b.x + o2 * t.c.x) / (o0 + o1 + o2);
+            if (x == p.x) return std::nullopt;
+            // The projected area's sign is the sign of the face normal's x: > 0, the ray
+            // leaves through the front (inside to outside).
+            if (x > p.x) w += o0 + o1 + o2 > 0.0 ? 1 : -1;
+        }
+        return w;
+    }
+
+private:
+    glm::ivec2 cell(const glm::dvec2& q) const {
+        const glm::dvec2 f = (q - lo_) / glm::max(hi_ - lo_, glm::dvec2(1e-300)) * double(n_);
+        return glm::clamp(glm::ivec2(glm::floor(f)), glm::ivec2(0), glm::ivec2(n_ - 1));
+    }
+
+    std::vector<Triangle> triangles_;
+    glm::dvec2 lo_{0.0}, hi_{0.0};
+    int n_ = 1;
+    std::vector<std::vector<uint32_t>> cells_;
+};
+
+// Where two faces of one component meet without sharing a vertex, the surface passes through
+// itself and may enclose a pocket inside out (winding number −1: a dent pushed through the
+// far wall), where a ray's first face can be a back face. Around each such crossing the four
+// wedges between the two faces are sampled just off the middle of their common segment; a
+// negative winding number in any of them, or a meeting that is not a clean crossing
+// (touching at a point, a coplanar overlap), refuses the component. (Every region of negative
+// winding number is bounded in part by such a crossing: a patch of the surface with no
+// crossing on its border would be the whole, embedded surface.) Folds where the winding
+// number only reaches 2 — a scan's surface overlapping itself — are harmless and kept.
+void refuse_inverted_pockets(const WeldedMesh& closed, const std::vector<int32_t>& component, ClosedSurfaces& out) {
+    std::vector<std::pair<uint32_t, uint32_t>> crossings;
+    for_each_box_pair(closed, [&](uint32_t a, uint32_t b) {
+        if (component[a] == component[b] && out.components[size_t(component[a])].closable &&
+            triangles_meet(closed, a, b))
+            crossings.emplace_back(a, b);
+    });
+    if (crossings.empty()) return;
+    std::sort(crossings.begin(), crossings.end());  // the search's order is its own
+    std::vector<bool> crossed(out.components.size(), false);
+    for (const auto& [a, b] : crossings) crossed[size_t(component[a])] = true;
+    std::vector<WindingGrid::Triangle> triangles;
+    const auto corner = [&](uint32_t f, int k) { return glm::dvec3(closed.positions[closed.faces[f][k]]); };
+    for (uint32_t f = 0; f < closed.faces.size(); ++f)
+        if (crossed[size_t(component[f])]) triangles.push_back({corner(f, 0), corner(f, 1), corner(f, 2), component[f]});
+    const WindingGrid grid(std::move(triangles));
+    for (const auto& [a, b] : crossings) {
+        ClosedSurfaces::Component& in = out.components[size_t(component[a])];
+        if (!in.closable) continue;
+        const std::optional<std::array<glm::dvec3, 2>> segment = common_segment(closed, a, b);
+        const auto normal = [&](uint32_t f) {
+            return glm::normalize(glm::cross(corner(f, 1) - corner(f, 0), corner(f, 2) - corner(f, 0)));
+        };
+        const glm::dvec3 na = normal(a), nb = normal(b);
+        if (!segment || glm::length(glm::cross(na, nb)) < 1e-6) {
+            in.closable = false;
+            continue;
+        }
+        double shortest = std::numeric_limits<double>::max();
+        for (uint32_t f : {a, b})
+            for (int k = 0; k < 3; ++k) shortest = std::min(shortest, glm::length(corner(f, (k + 1) % 3) - corner(f, k)));
+        const glm::dvec3 middle = 0.5 * ((*segment)[0] + (*segment)[1]);
+        for (double sa : {-1.0, 1.0})
+            for (double sb : {-1.0, 1.0}) {
+                const std::optional<int> w = grid.winding(middle + 1e-3 * shortest * (sa * na + sb * nb), component[a]);
+                if (!w || *w < 0) in.closable = false;
+            }
+    }
 }
 
 }  // namespace
 
 ClosedSurfaces find_closed_surfaces(const TriangleMesh& mesh) {
     const WeldedMesh welded = weld(mesh);
+    const std::unordered_map<uint64_t, EdgeUse> uses = edge_uses(welded);
     size_t count = 0;
-    const std::vector<int32_t> component = vertex_components(welded, count);
+    const std::vector<int32_t> component = face_components(welded, uses, count);
     ClosedSurfaces out;
     out.components.resize(count);
     out.face_component.assign(mesh.triangle_count(), -1);
-    for (size_t f = 0; f < welded.faces.size(); ++f) {
-        const int32_t c = component[welded.faces[f][0]];
-        out.face_component[welded.source_face[f]] = c;
-        const glm::uvec3& w = welded.faces[f];
-        out.components[size_t(c)].triangles.push_back(
-            {welded.source_vertex[w[0]], welded.source_vertex[w[1]], welded.source_vertex[w[2]]});
+    // The faces with their caps (a fan from each hole's centroid, wound the other way), as one
+    // mesh for the self-intersection search; the components of its faces.
+    WeldedMesh closed{.positions = welded.positions, .faces = welded.faces};
+    std::vector<int32_t> closed_component = component;
+    for (uint32_t f = 0; f < welded.faces.size(); ++f) {
+        out.face_component[welded.source_face[f]] = component[f];
+        for (int k = 0; k < 3; ++k)
+            if (!uses.at(edge_key(welded.faces[f][k], welded.faces[f][(k + 1) % 3])).closable())
+                out.components[size_t(component[f])].closable = false;
     }
-    for (size_t v = 0; v < welded.positions.size(); ++v)
-        if (component[v] >= 0) out.components[size_t(component[v])].vertices.push_back(welded.source_vertex[v]);
-    for (std::vector<uint32_t>& cycle : boundary_cycles(welded)) {
-        const int32_t c = component[cycle.front()];
-        for (uint32_t& v : cycle) v = welded.source_vertex[v];
-        out.components[size_t(c)].holes.push_back(std::move(cycle));
+    for (const auto& [c, hole] : boundary_cycles(welded, uses, component)) {
+        glm::dvec3 sum(0.0);
+        for (uint32_t v : hole) sum += glm::dvec3(welded.positions[v]);
+        const auto centre = uint32_t(closed.positions.size());
+        closed.positions.push_back(glm::vec3(sum / double(hole.size())));
+        for (size_t k = 0; k < hole.size(); ++k) {
+            closed.faces.emplace_back(centre, hole[(k + 1) % hole.size()], hole[k]);
+            closed_component.push_back(c);
+        }
     }
-    std::vector<bool> used(mesh.positions.size(), false);
-    for (uint32_t v : mesh.indices) used[v] = true;  // weld has checked the indices
-    for (uint32_t v = 0; v < used.size(); ++v) {
-        const uint32_t source = welded.source_vertex[welded.welded_index[v]];
-        if (!used[v] || source == v) continue;
-        out.copies.push_back(v);
-        out.copy_of.push_back(source);
+    // Bounds and the closed volume by the divergence theorem, about the bounds' centre (the
+    // same for a closed surface whatever the origin; the centre keeps the products small).
+    // Against the sum of its terms' sizes: a surface with no volume (a face and its reverse,
+    // a flat sheet and its cap) comes out as rounding noise of either sign.
+    std::vector<bool> seen(count, false);
+    for (uint32_t f = 0; f < closed.faces.size(); ++f)
+        for (int k = 0; k < 3; ++k) {
+            ClosedSurfaces::Component& in = out.components[size_t(closed_component[f])];
+            const glm::vec3 p = closed.positions[closed.faces[f][k]];
+            in.min = seen[size_t(closed_component[f])] ? glm::min(in.min, p) : p;
+            in.max = seen[size_t(closed_component[f])] ? glm::max(in.max, p) : p;
+            seen[size_t(closed_component[f])] = true;
+        }
+    std::vector<double> volume(count, 0.0), size(count, 0.0);
+    for (uint32_t f = 0; f < closed.faces.size(); ++f) {
+        const auto c = size_t(closed_component[f]);
+        const glm::dvec3 origin = 0.5 * (glm::dvec3(out.components[c].min) + glm::dvec3(out.components[c].max));
+        const auto at = [&](int k) { return glm::dvec3(closed.positions[closed.faces[f][k]]) - origin; };
+        const double term = glm::dot(at(0), glm::cross(at(1), at(2)));
+        volume[c] += term;
+        size[c] += std::abs(term);
+        if (f >= welded.faces.size())
+            for (int k = 0; k < 3; ++k) out.components[c].caps.push_back(closed.positions[closed.faces[f][k]]);
     }
+    refuse_inverted_pockets(closed, closed_component, out);
+    for (size_t c = 0; c < count; ++c) out.components[c].outward = out.components[c].closable && volume[c] > 1e-6 * size[c];
     return out;
 }
 
-ClosedSurfacePose pose_closed_surfaces(const ClosedSurfaces& surfaces, const std::vector<glm::vec3>& positions) {
-    ClosedSurfacePose pose;
-    for (size_t i = 0; i < surfaces.copies.size(); ++i)
-        if (positions[surfaces.copies[i]] != positions[surfaces.copy_of[i]]) pose.welds_hold = false;
-    pose.components.resize(surfaces.components.size());
+std::vector<uint8_t> back_faces_hidden(const ClosedSurfaces& surfaces, const CameraMatrices& camera) {
+    std::vector<uint8_t> hidden(surfaces.components.size(), 0);
+    const glm::dmat4 view(camera.view);
+    const glm::dvec3 eye(glm::inverse(view)[3]);
     for (size_t c = 0; c < surfaces.components.size(); ++c) {
         const ClosedSurfaces::Component& in = surfaces.components[c];
-        ClosedSurfacePose::Component& out = pose.components[c];
-        out.min = out.max = positions[in.vertices.front()];
-        for (uint32_t v : in.vertices) {
-            out.min = glm::min(out.min, positions[v]);
-            out.max = glm::max(out.max, positions[v]);
-        }
-        for (const std::vector<uint32_t>& hole : in.holes) {
-            glm::dvec3 sum(0.0);
-            for (uint32_t v : hole) sum += glm::dvec3(positions[v]);
-            const glm::vec3 centre = glm::vec3(sum / double(hole.size()));
-            for (size_t k = 0; k < hole.size(); ++k) {
-                out.cap_triangles.push_back(centre);
-                out.cap_triangles.push_back(positions[hole[(k + 1) % hole.size()]]);
-                out.cap_triangles.push_back(positions[hole[k]]);
-            }
-        }
-        // The closed volume by the divergence theorem, about the bounds' centre (exact for a
-        // closed surface whatever the origin; the centre keeps the products small).
-        const glm::dvec3 origin = 0.5 * (glm::dvec3(out.min) + glm::dvec3(out.max));
-        const auto volume_of = [&](const glm::vec3& a, const glm::vec3& b, const glm::vec3& d) {
-            return glm::dot(glm::dvec3(a) - origin, glm::cross(glm::dvec3(b) - origin, glm::dvec3(d) - origin));
-        };
-        double volume = 0.0;
-        for (const glm::uvec3& t : in.triangles) volume += volume_of(positions[t[0]], positions[t[1]], positions[t[2]]);
-        for (size_t k = 0; k + 2 < out.cap_triangles.size(); k += 3)
-            volume += volume_of(out.cap_triangles[k], out.cap_triangles[k + 1], out.cap_triangles[k + 2]);
-        out.outward = volume > 0.0;
-    }
-    return pose;
-}
-
-std::vector<uint8_t> back_faces_hidden(const ClosedSurfacePose& pose, const CameraMatrices& camera) {
-    std::vector<uint8_t> hidden(pose.components.size(), 0);
-    if (!pose.welds_hold) return hidden;
-    const glm::dmat4 view(camera.view);
-    // A little beyond the near plane: the test must hold where the clip does.
-    const double near = double(camera.znear) * (1.0 + 1e-4);
-    for (size_t c = 0; c < pose.components.size(); ++c) {
-        const ClosedSurfacePose::Component& in = pose.components[c];
         if (!in.outward) continue;
+        // Beyond the near plane with a margin for the device's float transform, whose error
+        // grows with the size of the coordinates.
+        const double scale = std::max(glm::length(glm::dvec3(in.min)), glm::length(glm::dvec3(in.max))) + glm::length(eye);
+        const double near = double(camera.znear) * (1.0 + 1e-4) + 1e-5 * scale;
         bool beyond = true;
         for (int corner = 0; corner < 8 && beyond; ++corner) {
             const glm::dvec3 p((corner & 1) ? in.max.x : in.min.x, (corner & 2) ? in.max.y : in.min.y,
@@ -168,13 +298,15 @@ std::vector<uint8_t> back_faces_hidden(const ClosedSurfacePose& pose, const Came
             beyond = -(view * glm::dvec4(p, 1.0)).z > near;
         }
         if (!beyond) continue;
-        // A cap faces the eye when the eye (the view's origin) is on its outer side.
+        // A cap faces away when the eye (the view's origin) is on its inner side, by more
+        // than an edge-on cap's rounding.
         bool caps_away = true;
-        for (size_t k = 0; k + 2 < in.cap_triangles.size() && caps_away; k += 3) {
-            const glm::dvec3 a(view * glm::dvec4(glm::dvec3(in.cap_triangles[k]), 1.0));
-            const glm::dvec3 b(view * glm::dvec4(glm::dvec3(in.cap_triangles[k + 1]), 1.0));
-            const glm::dvec3 d(view * glm::dvec4(glm::dvec3(in.cap_triangles[k + 2]), 1.0));
-            caps_away = glm::dot(glm::cross(b - a, d - a), -a) <= 0.0;
+        for (size_t k = 0; k + 2 < in.caps.size() && caps_away; k += 3) {
+            const glm::dvec3 a(view * glm::dvec4(glm::dvec3(in.caps[k]), 1.0));
+            const glm::dvec3 b(view * glm::dvec4(glm::dvec3(in.caps[k + 1]), 1.0));
+            const glm::dvec3 d(view * glm::dvec4(glm::dvec3(in.caps[k + 2]), 1.0));
+            const glm::dvec3 n = glm::cross(b - a, d - a);
+            caps_away = glm::dot(n, -a) < -1e-6 * glm::length(n) * glm::length(a);
         }
         hidden[c] = caps_away ? 1 : 0;
     }

@@ -1,5 +1,5 @@
-// Intersection lines with CGAL (compiled with -frounding-math, as its interval filters need,
-// and without GMP: exact fallbacks use Boost.Multiprecision).
+// Intersection lines: the face pairs and their common segments come from CGAL through
+// geometry/face_pairs.h; here they become chained line segments.
 #include "lines/intersections.h"
 
 #include <algorithm>
@@ -8,20 +8,11 @@
 #include <tuple>
 #include <unordered_map>
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/box_intersection_d.h>
-#include <CGAL/intersections.h>
+#include "geometry/face_pairs.h"
 
 namespace lw {
 
 namespace {
-
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Point = Kernel::Point_3;
-using Triangle = Kernel::Triangle_3;
-// Boxes of floats (the positions are floats, so their bounds are exact) named by a pointer to
-// their face: 32 bytes, which the search sorts and swaps a great deal.
-using Box = CGAL::Box_intersection_d::Box_with_handle_d<float, 3, const glm::uvec3*>;
 
 // A barycentric coordinate this close to 0 puts a point on the opposite edge. Crossing
 // points of two triangles are constructed in doubles from float input, so they are off
@@ -29,13 +20,6 @@ using Box = CGAL::Box_intersection_d::Box_with_handle_d<float, 3, const glm::uve
 constexpr double kOnEdge = 1e-5;
 // Endpoints closer than this share a key (× the model's bounding-box diagonal).
 constexpr double kSamePoint = 1e-7;
-// Below this many boxes the search compares all pairs instead of splitting further (CGAL's
-// default is 10). Measured on two crossing copies of LeePerrySmith subdivided once (141k
-// faces): 10 → 409 ms, 100 → 338, 1000 → 240, 5000 → 180, 20000 → 263; on two of
-// FlightHelmet (189k): 10 → 964 ms, 5000 → 606, 20000 → 779 (docs/BENCHMARKS.md).
-constexpr std::ptrdiff_t kCutoff = 5000;
-
-glm::dvec3 to_glm(const Point& p) { return {p.x(), p.y(), p.z()}; }
 
 glm::dvec3 corner(const WeldedMesh& m, uint32_t face, int c) { return glm::dvec3(m.positions[m.faces[face][c]]); }
 
@@ -49,12 +33,6 @@ glm::dvec3 barycentric(const WeldedMesh& m, uint32_t face, const glm::dvec3& p) 
     return {u, v, 1.0 - u - v};
 }
 
-bool share_vertex(const glm::uvec3& f, const glm::uvec3& g) {
-    for (int i = 0; i < 3; ++i)
-        if (f[i] == g.x || f[i] == g.y || f[i] == g.z) return true;
-    return false;
-}
-
 // One crossing: the segment two faces have in common, kept by the lower-numbered one.
 struct Crossing {
     uint32_t face;   // the lower-numbered face of the pair
@@ -65,20 +43,12 @@ struct Crossing {
 
 // The segment faces `a` < `b` have in common, if they cross (not merely touch).
 bool cross(const WeldedMesh& m, uint32_t a, uint32_t b, Crossing& out) {
-    const auto tri = [&](uint32_t f) {
-        const auto p = [&](int c) { const glm::vec3 x = m.positions[m.faces[f][c]]; return Point(x.x, x.y, x.z); };
-        return Triangle(p(0), p(1), p(2));
-    };
-    const Triangle ta = tri(a), tb = tri(b);  // neither degenerate: those have no box
-    if (!CGAL::do_intersect(ta, tb)) return false;
-    const auto result = CGAL::intersection(ta, tb);
-    if (!result) return false;
-    const Kernel::Segment_3* segment = boost::get<Kernel::Segment_3>(&*result);  // CGAL 5.5: a boost::variant
-    if (!segment) return false;  // a point (touching), or a coplanar overlap
+    const std::optional<std::array<glm::dvec3, 2>> segment = common_segment(m, a, b);  // neither degenerate: those have no box
+    if (!segment) return false;  // apart, touching at a point, or a coplanar overlap
     out.face = a;
     out.other = b;
     for (int e = 0; e < 2; ++e) {
-        out.p[e] = to_glm(segment->vertex(e));
+        out.p[e] = (*segment)[size_t(e)];
         out.bary[e] = barycentric(m, a, out.p[e]);
     }
     if (out.p[1] == out.p[0]) return false;
@@ -135,31 +105,15 @@ std::vector<uint32_t> endpoint_keys(const std::vector<Crossing>& crossings, doub
 
 std::vector<LineSegment> find_intersection_lines(const LineMesh& lm, size_t* candidate_pairs) {
     const WeldedMesh& m = lm.mesh;
-    // A box per face that is a triangle: a degenerate face (its corners on one line) crosses
-    // nothing, and testing it once here spares a test per pair it is in (CGAL's exact
-    // collinearity test, a tenth of the time when done per pair).
-    std::vector<Box> boxes;
-    boxes.reserve(m.faces.size());
-    for (uint32_t f = 0; f < m.faces.size(); ++f) {
-        const glm::vec3 a = m.positions[m.faces[f].x], b = m.positions[m.faces[f].y], c = m.positions[m.faces[f].z];
-        // (A corner at infinity or NaN, from a broken pose, would send CGAL's exact
-        // fallback into numbers it cannot represent: such a face crosses nothing.)
-        if (!std::isfinite(a.x + a.y + a.z + b.x + b.y + b.z + c.x + c.y + c.z)) continue;
-        if (CGAL::collinear(Point(a.x, a.y, a.z), Point(b.x, b.y, b.z), Point(c.x, c.y, c.z))) continue;
-        glm::vec3 lo = glm::min(a, glm::min(b, c)), hi = glm::max(a, glm::max(b, c));
-        boxes.emplace_back(&lo.x, &hi.x, &m.faces[f]);
-    }
-    // The spatial search, each pair tested as it is reported (its faces are still in cache);
-    // neighbours (a shared vertex) touch by construction and are skipped.
+    // Each pair tested as the search reports it (its faces are still in cache); neighbours
+    // (a shared vertex) touch by construction and are not reported.
     std::vector<Crossing> crossings;
     size_t candidates = 0;
-    CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const Box& x, const Box& y) {
+    for_each_box_pair(m, [&](uint32_t a, uint32_t b) {
         ++candidates;
-        const auto x_face = uint32_t(x.handle() - m.faces.data()), y_face = uint32_t(y.handle() - m.faces.data());
-        const uint32_t a = std::min(x_face, y_face), b = std::max(x_face, y_face);
         Crossing c;
-        if (!share_vertex(m.faces[a], m.faces[b]) && cross(m, a, b, c)) crossings.push_back(c);
-    }, kCutoff);
+        if (cross(m, a, b, c)) crossings.push_back(c);
+    });
     if (candidate_pairs) *candidate_pairs = candidates;
     // The search reports pairs in an order of its own: the crossings (a few percent of the
     // pairs, so cheaper to sort than they) go in face-pair order.

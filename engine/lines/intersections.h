@@ -33,7 +33,7 @@ namespace lw {
 struct IntersectionCache {
     uint64_t generation = 0;  // LineMesh::generation of `segments` (0: none)
     std::vector<LineSegment> segments;
-    size_t candidate_pairs = 0;  // pairs of non-degenerate faces whose boxes overlap (for benchmarks)
+    size_t candidate_pairs = 0;  // pairs of non-degenerate faces sharing no vertex whose boxes overlap (benchmarks)
 };
 
 // All intersection segments of `mesh`, in a deterministic order (by face pair).

@@ -105,7 +105,6 @@ void FrameRenderer::set_mesh(const TriangleMesh& mesh, bool with_lines, float cr
     keep_positions_of_frames_in_flight();
     mesh_ = upload_mesh(*ctx_, mesh, &materials_);
     closed_ = find_closed_surfaces(mesh);
-    closed_pose_ = pose_closed_surfaces(closed_, mesh.positions);
     line_mesh_.reset();
     if (with_lines) {
         line_mesh_ = build_line_mesh(mesh, crease_angle_deg, curvature_options(curvature));
@@ -116,7 +115,9 @@ void FrameRenderer::set_mesh(const TriangleMesh& mesh, bool with_lines, float cr
 void FrameRenderer::deform(const TriangleMesh& posed) {
     keep_positions_of_frames_in_flight();
     mesh_ = upload_mesh(*ctx_, posed, &materials_);
-    closed_pose_ = pose_closed_surfaces(closed_, posed.positions);
+    // Another pose has not been searched for self-intersection (geometry/closed_surfaces.h:
+    // a search a pose, as costly as intersection lines): its back faces are drawn.
+    closed_ = ClosedSurfaces{};
     if (!line_mesh_) return;
     pose_line_mesh(*line_mesh_, posed);
     if (!extraction_on_host_) extractor_.set_pose(*line_mesh_);
@@ -231,7 +232,7 @@ void FrameRenderer::begin(FrameInput input) {
     // Without drawing, the surface is depth-only: the same vertex stage, so the same depth.
     SurfaceStyle surface_style = input.surface;
     if (!input.outputs.draw) surface_style.draw_surface = false;
-    const BackFaceCulling culling{.surfaces = &closed_, .hidden = back_faces_hidden(closed_pose_, input.camera)};
+    const BackFaceCulling culling{.surfaces = &closed_, .hidden = back_faces_hidden(closed_, input.camera)};
     for (int attempt = 0;; ++attempt) {
         slot.surface_work.emplace(ctx_->submit([&](VkCommandBuffer cmd) {
             slot.timer.reset(cmd);

@@ -221,9 +221,9 @@ private:
     ExtractWorkspace extract_workspace_;  // its per-vertex scratch, kept from frame to frame
     IntersectionCache intersections_;     // per pose of the line mesh (either extraction)
     std::optional<GpuMesh> mesh_;
-    // Its closed surfaces and their pose: the back faces a view may skip (surface_pass.h).
+    // Its closed surfaces in set_mesh's pose: the back faces a view may skip (surface_pass.h);
+    // a pose from deform() skips none.
     ClosedSurfaces closed_;
-    ClosedSurfacePose closed_pose_;
     SurfaceMaterials materials_;  // without textures: what set_mesh groups by
     std::optional<GpuMaterials> gpu_materials_;
     std::optional<LineMesh> line_mesh_;

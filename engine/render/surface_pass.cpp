@@ -150,22 +150,17 @@ void SurfacePass::resolve_depth(VkCommandBuffer cmd, RenderTarget& target, VkRen
     depth.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
 }
 
-namespace {
-
-// Per draw, whether it may skip its back faces in this view: the draw is opaque, and every
-// face of the components its faces belong to is drawn opaque, each component hidden from
-// the view (geometry/closed_surfaces.h: then no back face is the first surface of a pixel).
-std::vector<uint8_t> cullable_draws(const GpuMesh& mesh, const std::vector<MeshDraw>& draws,
+std::vector<uint8_t> cullable_draws(const std::vector<MeshDraw>& draws, const std::vector<uint32_t>& face_order,
                                     const std::vector<uint8_t>& opaque, const BackFaceCulling* culling) {
     std::vector<uint8_t> cull(draws.size(), 0);
-    if (!culling || !culling->surfaces || culling->surfaces->face_component.size() != mesh.face_order.size())
+    if (!culling || !culling->surfaces || culling->surfaces->face_component.size() != face_order.size() ||
+        culling->hidden.size() != culling->surfaces->components.size() || opaque.size() != draws.size())
         return cull;
     const std::vector<int32_t>& component = culling->surfaces->face_component;
     std::vector<uint8_t> ok = culling->hidden;
-    ok.resize(culling->surfaces->components.size(), 0);
     const auto for_faces = [&](const MeshDraw& draw, auto&& visit) {
-        for (uint32_t k = draw.first_index / 3; k < (draw.first_index + draw.index_count) / 3; ++k)
-            if (const int32_t c = component[mesh.face_order[k]]; c >= 0) visit(size_t(c));
+        for (size_t k = draw.first_index / 3; k < (size_t(draw.first_index) + draw.index_count) / 3; ++k)
+            if (const int32_t c = component[face_order[k]]; c >= 0) visit(size_t(c));
     };
     for (size_t d = 0; d < draws.size(); ++d)
         if (!opaque[d]) for_faces(draws[d], [&](size_t c) { ok[c] = 0; });
@@ -177,8 +172,6 @@ std::vector<uint8_t> cullable_draws(const GpuMesh& mesh, const std::vector<MeshD
     }
     return cull;
 }
-
-}  // namespace
 
 void SurfacePass::draw_materials(VkCommandBuffer cmd, RenderTarget& target, const GpuMesh& mesh,
                                  const CameraMatrices& camera, const glm::vec3& eye, const SurfaceStyle& style,
@@ -202,7 +195,7 @@ void SurfacePass::draw_materials(VkCommandBuffer cmd, RenderTarget& target, cons
         const Material* material = material_of(draws[d]);
         opaque[d] = !material || material->alpha_mode == AlphaMode::Opaque;
     }
-    const std::vector<uint8_t> cull = cullable_draws(mesh, draws, opaque, culling);
+    const std::vector<uint8_t> cull = cullable_draws(draws, mesh.face_order, opaque, culling);
     for (size_t d = 0; d < draws.size(); ++d) {
         const MeshDraw& draw = draws[d];
         const Material* material = material_of(draw);

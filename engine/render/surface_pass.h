@@ -25,9 +25,10 @@
 // to closed surfaces from whose inside no pixel sees out in this view
 // (geometry/closed_surfaces.h, `BackFaceCulling`): there no back face is the first surface
 // of a pixel, so skipping them changes neither colour nor depth — the depth the lines'
-// visibility reads — but halves the faces lavapipe rasterizes. (At a contour a back face
-// folded behind a front one can tie with it in depth and win a pixel of the unculled pass:
-// tests/test_back_faces.cpp allows those pixels, and only those.)
+// visibility reads — but halves the faces lavapipe rasterizes. The pixels that can differ
+// are the unculled pass's depth ties, where a back face drawn later wins (LESS_OR_EQUAL): at
+// a contour, where a back face folds behind a front one (tests/test_back_faces.cpp allows
+// those pixels, and only those), or a closed part thinner than the depth's precision.
 //
 // Headless is the only platform here: render into VkImages with dynamic rendering, copy
 // to a host-visible buffer, read back (STYLE.md: lavapipe has no headless surface).
@@ -58,6 +59,14 @@ struct BackFaceCulling {
     const ClosedSurfaces* surfaces = nullptr;
     std::vector<uint8_t> hidden;
 };
+
+// Per draw, whether it may skip its back faces in this view: the draw is opaque (`opaque`,
+// per draw), and every face of the components its faces belong to is drawn opaque, each
+// component hidden from the view. `face_order` maps the index buffer's triangles to the
+// mesh's (GpuMesh::face_order). Nothing is culled when `culling` does not fit the draws.
+[[nodiscard]] std::vector<uint8_t> cullable_draws(const std::vector<MeshDraw>& draws,
+                                                  const std::vector<uint32_t>& face_order,
+                                                  const std::vector<uint8_t>& opaque, const BackFaceCulling* culling);
 
 class SurfacePass {
 public:

@@ -110,13 +110,15 @@ int run_surface(const BenchOptions& b) {
     lw::Context ctx({.device = lw::parse_device_choice(b.device)});
     BenchScene s = prepare(b, ctx);
     lw::GpuMesh mesh = lw::upload_mesh(ctx, s.scene.mesh);
+    lw::Timer closed_timer;
     const lw::ClosedSurfaces closed = lw::find_closed_surfaces(s.scene.mesh);
+    const double closed_ms = closed_timer.elapsed_ms();
     const lw::BackFaceCulling culling{
         .surfaces = &closed,
-        .hidden = lw::back_faces_hidden(lw::pose_closed_surfaces(closed, s.scene.mesh.positions), s.camera)};
+        .hidden = lw::back_faces_hidden(closed, s.camera)};
     const size_t hidden = size_t(std::count(culling.hidden.begin(), culling.hidden.end(), uint8_t{1}));
-    std::printf("closed surfaces: %zu components, back faces hidden from this view in %zu%s\n",
-                closed.components.size(), hidden, b.all_faces ? " (not culled: --all-faces)" : "");
+    std::printf("closed surfaces: %zu components (found in %.0f ms), back faces hidden from this view in %zu%s\n",
+                closed.components.size(), closed_ms, hidden, b.all_faces ? " (not culled: --all-faces)" : "");
     const uint32_t samples = uint32_t(b.samples);
     lw::SurfacePass pass(ctx, VK_FORMAT_R8G8B8A8_UNORM, samples);
     lw::RenderTarget target(ctx, uint32_t(s.width), uint32_t(s.height), VK_FORMAT_R8G8B8A8_UNORM, samples);
