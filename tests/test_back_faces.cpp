@@ -96,13 +96,36 @@ TEST(ClosedSurfaces, FoldsFinsAndSelfIntersectionsAreNeverCulled) {
     leaf.normals.assign(3, glm::vec3(0, 0, 1));
     leaf.indices = {0, 1, 2, 0, 2, 1};
     EXPECT_EQ(hidden_from(leaf, eye), std::vector<uint8_t>{0});
-    // A vertex pushed through the far wall: the surface passes through itself.
+}
+
+// A sphere with a vertex pushed through the far wall: the surface passes through itself and
+// the spike beyond the far wall encloses a pocket inside out.
+TriangleMesh dented_sphere() {
     TriangleMesh dented = make_icosphere(1.0f, 2);
     dented.positions[0] *= -1.6f;
+    return dented;
+}
+
+TEST(ClosedSurfaces, FacesNearAPocketInsideOutAreDrawnBothWays) {
+    const TriangleMesh dented = dented_sphere();
     const ClosedSurfaces closed = find_closed_surfaces(dented);
     ASSERT_EQ(closed.components.size(), 1u);
-    EXPECT_FALSE(closed.components[0].closable);
-    EXPECT_EQ(hidden_from(dented, eye), std::vector<uint8_t>{0});
+    EXPECT_TRUE(closed.components[0].outward);
+    // The spike's faces (those at vertex 0) cross the far wall or bound the pocket.
+    size_t spike = 0, both_ways = 0;
+    for (size_t t = 0; t < dented.triangle_count(); ++t) {
+        const bool at_spike = dented.indices[3 * t] == 0 || dented.indices[3 * t + 1] == 0 || dented.indices[3 * t + 2] == 0;
+        spike += at_spike;
+        both_ways += closed.face_both_ways[t];
+        if (at_spike) {
+            EXPECT_TRUE(closed.face_both_ways[t]) << "face " << t;
+        }
+    }
+    EXPECT_EQ(spike, 5u);
+    EXPECT_LT(both_ways, dented.triangle_count() / 4);
+    // A plain sphere has none.
+    const ClosedSurfaces plain = find_closed_surfaces(make_icosphere(1.0f, 2));
+    EXPECT_EQ(std::count(plain.face_both_ways.begin(), plain.face_both_ways.end(), 1), 0);
 }
 
 TEST(ClosedSurfaces, ShellsMeetingAtAVertexAreJudgedApart) {
@@ -129,6 +152,7 @@ TEST(ClosedSurfaces, DrawsCullOnlyWhereEveryComponentIsOpaqueAndHidden) {
     // whose index buffer takes the faces in another order.
     ClosedSurfaces surfaces;
     surfaces.face_component = {0, 0, 0, 1, 1, 1, -1};
+    surfaces.face_both_ways.assign(7, 0);
     surfaces.components.resize(2);
     const std::vector<uint32_t> face_order = {3, 0, 1, 6, 4, 2, 5};
     const std::vector<MeshDraw> draws = {{.material = 0, .first_index = 0, .index_count = 3 * 4},   // 3 0 1 6
@@ -142,9 +166,12 @@ TEST(ClosedSurfaces, DrawsCullOnlyWhereEveryComponentIsOpaqueAndHidden) {
     EXPECT_EQ(cull({1, 0}, {1, 1, 1}), (std::vector<uint8_t>{0, 0, 0}));  // 1 is in every draw
     EXPECT_EQ(cull({1, 1}, {1, 0, 1}), (std::vector<uint8_t>{0, 0, 0}));  // a masked face of 1 lets the eye in
     EXPECT_EQ(cull({1, 1}, {1, 1, 0}), (std::vector<uint8_t>{0, 0, 0}));
-    // A pose that opened a seam hides nothing (an empty list), nor does a list that does not fit.
+    // A list that does not fit hides nothing.
     EXPECT_EQ(cull({}, {1, 1, 1}), (std::vector<uint8_t>{0, 0, 0}));
     EXPECT_EQ(cull({1, 1, 1}, {1, 1, 1}), (std::vector<uint8_t>{0, 0, 0}));
+    // A face drawn both ways keeps its draw from culling, not the others.
+    surfaces.face_both_ways[2] = 1;
+    EXPECT_EQ(cull({1, 1}, {1, 1, 1}), (std::vector<uint8_t>{1, 1, 0}));
 }
 
 TEST(ClosedSurfaces, CapsCloseTheHolesAndDecide) {
@@ -181,16 +208,18 @@ TEST(ClosedSurfaces, TheEyeInsideOrTheNearPlaneThroughItIsRefused) {
     EXPECT_EQ(back_faces_hidden(closed, camera), std::vector<uint8_t>{0});
 }
 
-TEST(ClosedSurfaces, AScanWithAnInvertedPocketIsRefused) {
-    // LeePerrySmith's surface meets itself in 250 pairs of faces (folds of the scan). Most
-    // folds reach a winding number of 2, which is harmless, but one encloses a pocket inside
-    // out (about 1e-4 of a unit across, faces 9268 and 9695 of the weld): the head is drawn
-    // both ways.
+TEST(ClosedSurfaces, AScanMeetingItselfKeepsMostFacesCulled) {
+    // LeePerrySmith's surface meets itself in 250 pairs of faces (folds of the scan), and one
+    // fold encloses a pocket inside out (about 1e-4 of a unit across): the 238 faces of the
+    // folds are drawn both ways, the rest of the head may skip its back faces.
     const LoadedScene scene = load_scene(scene_for_model(test::data_dir() / "models/LeePerrySmith/LeePerrySmith.glb"));
     const ClosedSurfaces closed = find_closed_surfaces(scene.mesh);
     ASSERT_EQ(closed.components.size(), 1u);
     EXPECT_TRUE(closed.components[0].caps.empty());
-    EXPECT_FALSE(closed.components[0].closable);
+    EXPECT_TRUE(closed.components[0].outward);
+    const auto both_ways = size_t(std::count(closed.face_both_ways.begin(), closed.face_both_ways.end(), 1));
+    EXPECT_GE(both_ways, 200u);
+    EXPECT_LT(both_ways, scene.mesh.triangle_count() / 20);
 }
 
 // The mesh's polygonal contour in pixels (x0, y0, x1, y1 per edge): welded edges between a
@@ -263,8 +292,8 @@ protected:
     // a back face folded behind a front one ties with it in depth (a 1-pixel z-fight that the
     // unculled pass may lose either way). Returns how many views culled something.
     int expect_same_images(const TriangleMesh& mesh, uint32_t samples = 1) {
-        const GpuMesh gpu = upload_mesh(ctx(), mesh);
         const ClosedSurfaces closed = find_closed_surfaces(mesh);
+        const GpuMesh gpu = upload_mesh(ctx(), mesh, nullptr, &closed.face_both_ways);
         const Bounds bounds = compute_bounds(mesh.positions);
         int culled = 0;
         for (float height : {-1.6f, -0.5f, 0.0f, 0.4f, 1.6f})
@@ -295,15 +324,18 @@ protected:
     }
 };
 
-TEST_F(BackFaceCullingGpu, ClosedModelAndOpenTubeSameImagesWhereCulled) {
-    // spot is closed and meets itself nowhere: culled from everywhere outside it.
-    const LoadedScene scene = load_scene(scene_for_model(test::data_dir() / "models/spot/spot.glb"));
+TEST_F(BackFaceCullingGpu, ScanOpenTubeAndPocketSameImagesWhereCulled) {
+    // LeePerrySmith is closed (its neck has a cap of its own) and meets itself (its folds
+    // drawn both ways): culled from everywhere outside it.
+    const LoadedScene scene = load_scene(scene_for_model(test::data_dir() / "models/LeePerrySmith/LeePerrySmith.glb"));
     EXPECT_EQ(expect_same_images(scene.mesh), 30);
     // The tube is open at both ends (about z; the orbit's heights are along y): the views
     // that look into an end are refused (all but those from between the rims' planes).
     const int culled = expect_same_images(make_open_cylinder(1.0f, 2.0f, 24, 4));
     EXPECT_GE(culled, 2);
     EXPECT_LE(culled, 12);
+    // The spike's pocket, seen from all round.
+    EXPECT_EQ(expect_same_images(dented_sphere()), 30);
 }
 
 TEST_F(BackFaceCullingGpu, SkinnedPoseSameImages) {
@@ -326,8 +358,8 @@ TEST_F(BackFaceCullingGpu, ForcedOnARefusedViewTheImagesDiffer) {
     // The tube seen from above, where its top cap faces the eye: culling would remove the
     // inside seen through the opening. The comparison above would catch it.
     const TriangleMesh tube = make_open_cylinder(1.0f, 2.0f, 24, 4);
-    const GpuMesh gpu = upload_mesh(ctx(), tube);
     const ClosedSurfaces closed = find_closed_surfaces(tube);
+    const GpuMesh gpu = upload_mesh(ctx(), tube, nullptr, &closed.face_both_ways);
     const glm::vec3 eye(2.0f, 1.5f, 6.0f);
     const CameraMatrices camera = look(eye, glm::vec3(0.0f, 0.0f, 1.0f), compute_bounds(tube.positions));
     EXPECT_EQ(back_faces_hidden(closed, camera), std::vector<uint8_t>{0});

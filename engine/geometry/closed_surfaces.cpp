@@ -174,50 +174,44 @@ private:
 
 // Where two faces of one component meet without sharing a vertex, the surface passes through
 // itself and may enclose a pocket inside out (winding number −1: a dent pushed through the
-// far wall), where a ray's first face can be a back face. Around each such crossing the four
-// wedges between the two faces are sampled just off the middle of their common segment; a
-// negative winding number in any of them, or a meeting that is not a clean crossing
-// (touching at a point, a coplanar overlap), refuses the component. (Every region of negative
-// winding number is bounded in part by such a crossing: a patch of the surface with no
-// crossing on its border would be the whole, embedded surface.) Folds where the winding
-// number only reaches 2 — a scan's surface overlapping itself — are harmless and kept.
-void refuse_inverted_pockets(const WeldedMesh& closed, const std::vector<int32_t>& component, ClosedSurfaces& out) {
-    std::vector<std::pair<uint32_t, uint32_t>> crossings;
-    for_each_box_pair(closed, [&](uint32_t a, uint32_t b) {
-        if (component[a] == component[b] && out.components[size_t(component[a])].closable &&
-            triangles_meet(closed, a, b))
-            crossings.emplace_back(a, b);
-    });
-    if (crossings.empty()) return;
-    std::sort(crossings.begin(), crossings.end());  // the search's order is its own
+// far wall), where a ray's first face can be a back face: one whose front side has a
+// negative winding number. So, in a component that meets itself, the faces that meet
+// another (CGAL's exact predicate; caps included) are drawn both ways, and so is every other
+// face whose front side, just off its centroid, has a negative winding number (a ray from
+// there). On a face that meets no other the winding number of its front side is the same
+// all over it, so the others may skip their back faces. Folds that only reach a winding
+// number of 2 — a scan's surface overlapping itself — cost only the faces of the fold.
+void mark_faces_near_pockets(const WeldedMesh& closed, const std::vector<int32_t>& component,
+                             const std::vector<uint32_t>& source_face, ClosedSurfaces& out) {
+    const size_t mesh_faces = source_face.size();  // the caps come after them in `closed`
+    std::vector<uint8_t> meets(closed.faces.size(), 0);
     std::vector<bool> crossed(out.components.size(), false);
-    for (const auto& [a, b] : crossings) crossed[size_t(component[a])] = true;
+    for_each_box_pair(closed, [&](uint32_t a, uint32_t b) {
+        if (component[a] != component[b] || !out.components[size_t(component[a])].closable ||
+            !triangles_meet(closed, a, b))
+            return;
+        meets[a] = meets[b] = 1;
+        crossed[size_t(component[a])] = true;
+    });
     std::vector<WindingGrid::Triangle> triangles;
     const auto corner = [&](uint32_t f, int k) { return glm::dvec3(closed.positions[closed.faces[f][k]]); };
     for (uint32_t f = 0; f < closed.faces.size(); ++f)
         if (crossed[size_t(component[f])]) triangles.push_back({corner(f, 0), corner(f, 1), corner(f, 2), component[f]});
+    if (triangles.empty()) return;
     const WindingGrid grid(std::move(triangles));
-    for (const auto& [a, b] : crossings) {
-        ClosedSurfaces::Component& in = out.components[size_t(component[a])];
-        if (!in.closable) continue;
-        const std::optional<std::array<glm::dvec3, 2>> segment = common_segment(closed, a, b);
-        const auto normal = [&](uint32_t f) {
-            return glm::normalize(glm::cross(corner(f, 1) - corner(f, 0), corner(f, 2) - corner(f, 0)));
-        };
-        const glm::dvec3 na = normal(a), nb = normal(b);
-        if (!segment || glm::length(glm::cross(na, nb)) < 1e-6) {
-            in.closable = false;
-            continue;
+    for (uint32_t f = 0; f < mesh_faces; ++f) {
+        if (!crossed[size_t(component[f])]) continue;
+        bool both_ways = meets[f] != 0;
+        if (!both_ways) {
+            const glm::dvec3 a = corner(f, 0), b = corner(f, 1), c = corner(f, 2);
+            const glm::dvec3 n = glm::cross(b - a, c - a);
+            const double longest = std::max({glm::length(b - a), glm::length(c - b), glm::length(a - c)});
+            // A millionth of the face off it: closer than any other sheet a float mesh can
+            // hold apart from it at that size.
+            const std::optional<int> w = grid.winding((a + b + c) / 3.0 + 1e-6 * longest * glm::normalize(n), component[f]);
+            both_ways = !w || *w < 0;
         }
-        double shortest = std::numeric_limits<double>::max();
-        for (uint32_t f : {a, b})
-            for (int k = 0; k < 3; ++k) shortest = std::min(shortest, glm::length(corner(f, (k + 1) % 3) - corner(f, k)));
-        const glm::dvec3 middle = 0.5 * ((*segment)[0] + (*segment)[1]);
-        for (double sa : {-1.0, 1.0})
-            for (double sb : {-1.0, 1.0}) {
-                const std::optional<int> w = grid.winding(middle + 1e-3 * shortest * (sa * na + sb * nb), component[a]);
-                if (!w || *w < 0) in.closable = false;
-            }
+        if (both_ways) out.face_both_ways[source_face[f]] = 1;
     }
 }
 
@@ -275,7 +269,8 @@ ClosedSurfaces find_closed_surfaces(const TriangleMesh& mesh) {
         if (f >= welded.faces.size())
             for (int k = 0; k < 3; ++k) out.components[c].caps.push_back(closed.positions[closed.faces[f][k]]);
     }
-    refuse_inverted_pockets(closed, closed_component, out);
+    out.face_both_ways.assign(mesh.triangle_count(), 0);
+    mark_faces_near_pockets(closed, closed_component, welded.source_face, out);
     for (size_t c = 0; c < count; ++c) out.components[c].outward = out.components[c].closable && volume[c] > 1e-6 * size[c];
     return out;
 }

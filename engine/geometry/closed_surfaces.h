@@ -18,11 +18,14 @@
 // What makes the winding number never negative, checked by `find_closed_surfaces`:
 //   - every edge is open (one face) or used once each way (no fold of the orientation, no
 //     fin of three faces, no face with its reverse);
-//   - where two faces of the component (caps included) meet other than at a shared vertex
-//     (CGAL's exact predicate; the surface passes through itself and may enclose a pocket
-//     inside out), the winding number in the four wedges around their common segment is
-//     not negative (a ray cast from each; a fold reaching 2, as on a scan, is harmless);
-//   - the closed volume is positive, beyond rounding (the outside is the front side).
+//   - the closed volume is positive, beyond rounding (the outside is the front side);
+//   - where the surface passes through itself it may enclose a pocket inside out (winding
+//     number −1), into which a ray's first face is a back face. The argument then holds face
+//     by face: a back face is first along a ray only where its front side has a negative
+//     winding number. Faces that meet another face of their component other than at a
+//     shared vertex (CGAL's exact predicate, caps included) are drawn both ways, and so is
+//     any other face whose front side has a negative winding number (a ray cast from just
+//     off its centroid: on a face that meets no other it is the same all over the face).
 // The self-intersection search costs about as much as intersection lines (docs/BENCHMARKS.md),
 // so it is made for the pose given here; a caller with another pose of the same mesh (an
 // animation frame) has no such check for it and should not cull (render/frame_renderer.cpp).
@@ -45,6 +48,9 @@ struct ClosedSurfaces {
     // Per input triangle: its component, or -1 for a face with no area (two corners at one
     // position), which rasterizes nothing.
     std::vector<int32_t> face_component;
+    // Per input triangle: 1 where it must be drawn both ways even when its component may be
+    // culled (near where the surface passes through itself, see above).
+    std::vector<uint8_t> face_both_ways;
     struct Component {
         glm::vec3 min{0.0f}, max{0.0f};  // bounds, caps included
         // The caps closing its holes, 3 corners per triangle: fans from each boundary cycle's

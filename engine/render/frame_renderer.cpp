@@ -103,8 +103,8 @@ void FrameRenderer::keep_positions_of_frames_in_flight() {
 
 void FrameRenderer::set_mesh(const TriangleMesh& mesh, bool with_lines, float crease_angle_deg, CurvatureFit curvature) {
     keep_positions_of_frames_in_flight();
-    mesh_ = upload_mesh(*ctx_, mesh, &materials_);
     closed_ = find_closed_surfaces(mesh);
+    mesh_ = upload_mesh(*ctx_, mesh, &materials_, &closed_.face_both_ways);
     line_mesh_.reset();
     if (with_lines) {
         line_mesh_ = build_line_mesh(mesh, crease_angle_deg, curvature_options(curvature));

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <tuple>
 
 #include "core/error.h"
 #include "core/log.h"
@@ -60,7 +61,8 @@ Image upload_texture(const Context& ctx, const ImageRGBA8& texels, bool mipmaps,
 
 }  // namespace
 
-GpuMesh upload_mesh(const Context& ctx, const TriangleMesh& mesh, const SurfaceMaterials* materials) {
+GpuMesh upload_mesh(const Context& ctx, const TriangleMesh& mesh, const SurfaceMaterials* materials,
+                    const std::vector<uint8_t>* both_ways) {
     const bool textured = mesh.texcoords.size() == mesh.positions.size();
     std::vector<Vertex> vertices(mesh.positions.size());
     for (size_t i = 0; i < vertices.size(); ++i)
@@ -70,23 +72,27 @@ GpuMesh upload_mesh(const Context& ctx, const TriangleMesh& mesh, const SurfaceM
     std::vector<uint32_t> order(triangles);
     std::iota(order.begin(), order.end(), 0u);
     const bool grouped = materials && materials->face_material.size() == triangles;
+    const bool split = both_ways && both_ways->size() == triangles;
     const auto material_of = [&](uint32_t t) { return grouped ? materials->face_material[t] : -1; };
+    const auto kept_apart = [&](uint32_t t) { return split && (*both_ways)[t] != 0; };
     const auto blended = [&](int m) {
-        return m >= 0 && size_t(m) < materials->materials.size() &&
+        return grouped && m >= 0 && size_t(m) < materials->materials.size() &&
                materials->materials[size_t(m)].alpha_mode == AlphaMode::Blend;
     };
-    if (grouped)
+    if (grouped || split)
         std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
             const int ma = material_of(a), mb = material_of(b);
-            return std::pair(blended(ma), ma) < std::pair(blended(mb), mb);
+            return std::tuple(blended(ma), ma, kept_apart(a)) < std::tuple(blended(mb), mb, kept_apart(b));
         });
     std::vector<uint32_t> indices;
     indices.reserve(mesh.indices.size());
     GpuMesh out;
+    bool apart = false;
     for (uint32_t t : order) {
         const int m = material_of(t);
-        if (out.draws.empty() || out.draws.back().material != m)
+        if (out.draws.empty() || out.draws.back().material != m || apart != kept_apart(t))
             out.draws.push_back({.material = m, .first_index = uint32_t(indices.size())});
+        apart = kept_apart(t);
         for (int c = 0; c < 3; ++c) indices.push_back(mesh.indices[size_t(t) * 3 + size_t(c)]);
         out.draws.back().index_count += 3;
     }

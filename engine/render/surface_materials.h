@@ -38,9 +38,12 @@ struct GpuMesh {
 
 // Triangles reordered by material when `face_material` has one entry per triangle (else one
 // draw of everything with -1): opaque and masked materials in index order, then blended ones.
-// The order within a material is the mesh's.
+// The order within a material is the mesh's, except that the triangles `both_ways` marks
+// (one byte per triangle: ClosedSurfaces::face_both_ways) follow the others in a draw of
+// their own, so that the rest of the material may skip back faces (render/surface_pass.h).
 [[nodiscard]] GpuMesh upload_mesh(const Context& ctx, const TriangleMesh& mesh,
-                                  const SurfaceMaterials* materials = nullptr);
+                                  const SurfaceMaterials* materials = nullptr,
+                                  const std::vector<uint8_t>* both_ways = nullptr);
 
 class GpuMaterials {
 public:

@@ -157,17 +157,20 @@ std::vector<uint8_t> cullable_draws(const std::vector<MeshDraw>& draws, const st
         culling->hidden.size() != culling->surfaces->components.size() || opaque.size() != draws.size())
         return cull;
     const std::vector<int32_t>& component = culling->surfaces->face_component;
+    const std::vector<uint8_t>& both_ways = culling->surfaces->face_both_ways;
+    if (both_ways.size() != component.size()) return cull;
     std::vector<uint8_t> ok = culling->hidden;
-    const auto for_faces = [&](const MeshDraw& draw, auto&& visit) {
-        for (size_t k = draw.first_index / 3; k < (size_t(draw.first_index) + draw.index_count) / 3; ++k)
-            if (const int32_t c = component[face_order[k]]; c >= 0) visit(size_t(c));
-    };
-    for (size_t d = 0; d < draws.size(); ++d)
-        if (!opaque[d]) for_faces(draws[d], [&](size_t c) { ok[c] = 0; });
     for (size_t d = 0; d < draws.size(); ++d) {
-        if (!opaque[d]) continue;
-        bool all = true;
-        for_faces(draws[d], [&](size_t c) { all = all && ok[c]; });
+        if (opaque[d]) continue;
+        for (size_t k = draws[d].first_index / 3; k < (size_t(draws[d].first_index) + draws[d].index_count) / 3; ++k)
+            if (const int32_t c = component[face_order[k]]; c >= 0) ok[size_t(c)] = 0;
+    }
+    for (size_t d = 0; d < draws.size(); ++d) {
+        bool all = opaque[d] != 0;
+        for (size_t k = draws[d].first_index / 3; all && k < (size_t(draws[d].first_index) + draws[d].index_count) / 3; ++k) {
+            const uint32_t face = face_order[k];
+            all = !both_ways[face] && (component[face] < 0 || ok[size_t(component[face])]);
+        }
         cull[d] = all ? 1 : 0;
     }
     return cull;
@@ -183,9 +186,10 @@ void SurfacePass::draw_materials(VkCommandBuffer cmd, RenderTarget& target, cons
     vkCmdBindVertexBuffers(cmd, 0, 1, &vertex_buffer, &offset);
     vkCmdBindIndexBuffer(cmd, mesh.indices.get(), 0, VK_INDEX_TYPE_UINT32);
     if (!style.materials) materials = nullptr;
-    // Without materials the whole buffer is one draw (its grouping does not matter).
+    // Without materials the draws take the scene colour (their grouping still keeps apart the
+    // faces that are drawn both ways, upload_mesh).
     const std::vector<MeshDraw> everything{{.material = -1, .first_index = 0, .index_count = mesh.index_count}};
-    const std::vector<MeshDraw>& draws = materials && !mesh.draws.empty() ? mesh.draws : everything;
+    const std::vector<MeshDraw>& draws = !mesh.draws.empty() ? mesh.draws : everything;
     const auto material_of = [&](const MeshDraw& draw) -> const Material* {
         const bool known = materials && draw.material >= 0 && size_t(draw.material) < materials->size();
         return known ? &materials->material(size_t(draw.material)) : nullptr;

@@ -61,8 +61,8 @@ struct BackFaceCulling {
 };
 
 // Per draw, whether it may skip its back faces in this view: the draw is opaque (`opaque`,
-// per draw), and every face of the components its faces belong to is drawn opaque, each
-// component hidden from the view. `face_order` maps the index buffer's triangles to the
+// per draw), none of its faces is to be drawn both ways, and every face of the components
+// its faces belong to is drawn opaque, each component hidden from the view. `face_order` maps the index buffer's triangles to the
 // mesh's (GpuMesh::face_order). Nothing is culled when `culling` does not fit the draws.
 [[nodiscard]] std::vector<uint8_t> cullable_draws(const std::vector<MeshDraw>& draws,
                                                   const std::vector<uint32_t>& face_order,

@@ -109,10 +109,10 @@ BenchScene prepare(const BenchOptions& b, const lw::Context& ctx) {
 int run_surface(const BenchOptions& b) {
     lw::Context ctx({.device = lw::parse_device_choice(b.device)});
     BenchScene s = prepare(b, ctx);
-    lw::GpuMesh mesh = lw::upload_mesh(ctx, s.scene.mesh);
     lw::Timer closed_timer;
     const lw::ClosedSurfaces closed = lw::find_closed_surfaces(s.scene.mesh);
     const double closed_ms = closed_timer.elapsed_ms();
+    lw::GpuMesh mesh = lw::upload_mesh(ctx, s.scene.mesh, nullptr, &closed.face_both_ways);
     const lw::BackFaceCulling culling{
         .surfaces = &closed,
         .hidden = lw::back_faces_hidden(closed, s.camera)};
