@@ -101,9 +101,10 @@ void FrameRenderer::keep_positions_of_frames_in_flight() {
     }
 }
 
-void FrameRenderer::set_mesh(const TriangleMesh& mesh, bool with_lines, float crease_angle_deg, CurvatureFit curvature) {
+void FrameRenderer::set_mesh(const TriangleMesh& mesh, bool with_lines, float crease_angle_deg, CurvatureFit curvature,
+                             bool still) {
     keep_positions_of_frames_in_flight();
-    closed_ = find_closed_surfaces(mesh);
+    closed_ = still ? find_closed_surfaces(mesh) : ClosedSurfaces{};
     mesh_ = upload_mesh(*ctx_, mesh, &materials_, &closed_.face_both_ways);
     line_mesh_.reset();
     if (with_lines) {
@@ -115,8 +116,8 @@ void FrameRenderer::set_mesh(const TriangleMesh& mesh, bool with_lines, float cr
 void FrameRenderer::deform(const TriangleMesh& posed) {
     keep_positions_of_frames_in_flight();
     mesh_ = upload_mesh(*ctx_, posed, &materials_);
-    // Another pose has not been searched for self-intersection (geometry/closed_surfaces.h:
-    // a search a pose, as costly as intersection lines): its back faces are drawn.
+    // A pose of a mesh given as still: from now on every face is drawn (a search a pose
+    // would cost as much as intersection lines, geometry/closed_surfaces.h).
     closed_ = ClosedSurfaces{};
     if (!line_mesh_) return;
     pose_line_mesh(*line_mesh_, posed);

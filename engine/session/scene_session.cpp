@@ -87,7 +87,7 @@ SceneSession::SceneSession(const Context& ctx, SceneDesc desc, const SessionOpti
         // The line mesh is welded (and its feature size taken) in the pose of the first frame.
         const float start = options.start_seconds;
         renderer_.set_mesh(animated_ ? posed_mesh(start) : scene_.mesh, desc_.lines.enabled,
-                           desc_.lines.params.crease_angle_deg, desc_.lines.params.curvature);
+                           desc_.lines.params.crease_angle_deg, desc_.lines.params.curvature, !animated_);
         if (animated_) posed_at_ = start;
         if (const LineMesh* lines = renderer_.line_mesh())
             renderer_.set_face_groups(face_groups(scene_, scene_.mesh, *lines, options.subdivide));
@@ -226,7 +226,7 @@ bool SceneSession::line_set_textured(size_t set) const { return set < textured_.
 void SceneSession::rebuild_lines() {
     if (!has_model()) return;
     renderer_.set_mesh(animated_ ? posed_mesh(posed_at_.value_or(0.0f)) : scene_.mesh, desc_.lines.enabled,
-                       desc_.lines.params.crease_angle_deg, desc_.lines.params.curvature);
+                       desc_.lines.params.crease_angle_deg, desc_.lines.params.curvature, !animated_);
     if (const LineMesh* lines = renderer_.line_mesh())
         renderer_.set_face_groups(face_groups(scene_, scene_.mesh, *lines, options_.subdivide));
 }
