@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "geometry/closed_surfaces.h"
+#include "geometry/face_pairs.h"
 #include "geometry/test_meshes.h"
 #include "geometry/welded_mesh.h"
 #include "render/surface_materials.h"
@@ -90,6 +91,19 @@ TEST(ClosedSurfaces, FoldsFinsAndSelfIntersectionsAreNeverCulled) {
     for (size_t t = 0; t < n; t += 3)
         for (int c : {0, 2, 1}) card.indices.push_back(card.indices[t + size_t(c)]);
     for (uint8_t h : hidden_from(card, eye)) EXPECT_EQ(h, 0);
+    // A quad whose second triangle is wound the other way, open all round (its walk along
+    // the border would find no way on), and a fin of three faces on a border edge.
+    TriangleMesh quad;
+    quad.positions = {glm::vec3(0, 0, 0), glm::vec3(1, 0, 0), glm::vec3(1, 1, 0), glm::vec3(0, 1, 0.2f)};
+    quad.normals.assign(4, glm::vec3(0, 0, 1));
+    quad.indices = {0, 1, 2, 0, 3, 2};
+    for (uint8_t h : hidden_from(quad, eye)) EXPECT_EQ(h, 0);
+    TriangleMesh fin = quad;
+    fin.indices = {0, 1, 2, 0, 2, 3, 0, 2, 1};
+    fin.positions.push_back(glm::vec3(0.5f, 0.5f, 1.0f));
+    fin.normals.push_back(glm::vec3(0, 0, 1));
+    fin.indices.insert(fin.indices.end(), {0, 4, 2});
+    for (uint8_t h : hidden_from(fin, eye)) EXPECT_EQ(h, 0);
     // One triangle both ways: closed, with no volume.
     TriangleMesh leaf;
     leaf.positions = {glm::vec3(0, 0, 0), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0.3f)};
@@ -126,6 +140,23 @@ TEST(ClosedSurfaces, FacesNearAPocketInsideOutAreDrawnBothWays) {
     // A plain sphere has none.
     const ClosedSurfaces plain = find_closed_surfaces(make_icosphere(1.0f, 2));
     EXPECT_EQ(std::count(plain.face_both_ways.begin(), plain.face_both_ways.end(), 1), 0);
+}
+
+TEST(ClosedSurfaces, FacesSharingAVertexThatCrossBeyondItMeet) {
+    // f = (v, a1, a2) and g = (v, b1, b2): g's edge b1b2 pierces f at (1, 0, 0).
+    WeldedMesh m;
+    m.positions = {glm::vec3(0, 0, 0), glm::vec3(2, -1, 0), glm::vec3(2, 1, 0), glm::vec3(1, 0, -1), glm::vec3(1, 0, 1)};
+    m.faces = {glm::uvec3(0, 1, 2), glm::uvec3(0, 3, 4)};
+    EXPECT_TRUE(triangles_meet(m, 0, 1));
+    m.positions[3] = glm::vec3(-1, 0, -1), m.positions[4] = glm::vec3(-1, 0, 1);  // behind v: only v in common
+    EXPECT_FALSE(triangles_meet(m, 0, 1));
+    // Sharing an edge: apart when they turn away from each other, meeting when folded flat
+    // onto the same side.
+    m.positions = {glm::vec3(0, 0, 0), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0), glm::vec3(0, -1, 0.5f)};
+    m.faces = {glm::uvec3(0, 1, 2), glm::uvec3(1, 0, 3)};
+    EXPECT_FALSE(triangles_meet(m, 0, 1));
+    m.positions[3] = glm::vec3(0.5f, 0.8f, 0.0f);
+    EXPECT_TRUE(triangles_meet(m, 0, 1));
 }
 
 TEST(ClosedSurfaces, ShellsMeetingAtAVertexAreJudgedApart) {

@@ -66,12 +66,16 @@ std::vector<int32_t> face_components(const WeldedMesh& welded, const std::unorde
     return component;
 }
 
-// The open edges of each component as cycles of welded vertices, each running as its face
-// runs along it. The boundary of a surface is itself closed (as many open edges leave each
-// vertex as enter it), so a walk along unused open edges from a vertex comes back to it.
-// Edges are taken in order of first use by the faces; a walk stays in its component.
-std::vector<std::pair<int32_t, std::vector<uint32_t>>> boundary_cycles(
-    const WeldedMesh& welded, const std::unordered_map<uint64_t, EdgeUse>& uses, const std::vector<int32_t>& component) {
+// The open edges of each closable component as cycles of welded vertices, each running as its
+// face runs along it. The boundary of a surface whose edges are all open or used once each
+// way is itself closed (as many open edges leave each vertex as enter it), so a walk along
+// unused open edges from a vertex comes back to it; a component with other edges (a face
+// wound the other way, a fin) has no such boundary and is left out. Edges are taken in
+// order of first use by the faces; a walk stays in its component.
+std::vector<std::pair<int32_t, std::vector<uint32_t>>> boundary_cycles(const WeldedMesh& welded,
+                                                                       const std::unordered_map<uint64_t, EdgeUse>& uses,
+                                                                       const std::vector<int32_t>& component,
+                                                                       const std::vector<bool>& closable) {
     const auto node = [](int32_t c, uint32_t v) { return uint64_t(uint32_t(c)) << 32 | v; };
     std::unordered_map<uint64_t, std::vector<uint32_t>> out;  // (component, vertex) → open edges leaving it
     std::vector<uint64_t> starts;
@@ -79,7 +83,7 @@ std::vector<std::pair<int32_t, std::vector<uint32_t>>> boundary_cycles(
         for (int c = 0; c < 3; ++c) {
             const uint32_t a = welded.faces[f][c], b = welded.faces[f][(c + 1) % 3];
             const EdgeUse& use = uses.at(edge_key(a, b));
-            if (use.forward + use.backward != 1) continue;
+            if (use.forward + use.backward != 1 || !closable[size_t(component[f])]) continue;
             std::vector<uint32_t>& leaving = out[node(component[f], a)];
             if (leaving.empty()) starts.push_back(node(component[f], a));
             leaving.push_back(b);
@@ -94,6 +98,11 @@ std::vector<std::pair<int32_t, std::vector<uint32_t>>> boundary_cycles(
             do {
                 cycle.push_back(v);
                 std::vector<uint32_t>& leaving = out[node(c, v)];
+                if (leaving.empty()) {  // cannot happen (see above); an empty cycle refuses the component
+                    cycle.clear();
+                    out[start].clear();
+                    break;
+                }
                 v = leaving.back();
                 leaving.pop_back();
             } while (v != uint32_t(start));
@@ -112,6 +121,7 @@ public:
     struct Triangle {
         glm::dvec3 a, b, c;
         int32_t component;
+        uint32_t face;
     };
     explicit WindingGrid(std::vector<Triangle> triangles) : triangles_(std::move(triangles)) {
         if (triangles_.empty()) return;
@@ -132,8 +142,9 @@ public:
         }
     }
 
-    // Empty where the ray grazes an edge or a vertex (a measure-zero case the caller avoids).
-    std::optional<int> winding(const glm::dvec3& p, int32_t component) const {
+    // Empty where the ray grazes an edge or a vertex (the caller takes it as unknown). Face
+    // `skip` is not counted (the ray starts on it).
+    std::optional<int> winding(const glm::dvec3& p, int32_t component, uint32_t skip) const {
         if (triangles_.empty()) return 0;
         const glm::dvec2 q(p.y, p.z);
         if (q.x < lo_.x || q.y < lo_.y || q.x > hi_.x || q.y > hi_.y) return 0;
@@ -141,7 +152,7 @@ public:
         int w = 0;
         for (uint32_t i : cells_[size_t(c.x) * size_t(n_) + size_t(c.y)]) {
             const Triangle& t = triangles_[i];
-            if (t.component != component) continue;
+            if (t.component != component || t.face == skip) continue;
             const auto orient = [&](const glm::dvec3& u, const glm::dvec3& v) {
                 return (u.y - q.x) * (v.z - q.y) - (u.z - q.y) * (v.y - q.x);
             };
@@ -176,9 +187,9 @@ private:
 // itself and may enclose a pocket inside out (winding number −1: a dent pushed through the
 // far wall), where a ray's first face can be a back face: one whose front side has a
 // negative winding number. So, in a component that meets itself, the faces that meet
-// another (CGAL's exact predicate; caps included) are drawn both ways, and so is every other
-// face whose front side, just off its centroid, has a negative winding number (a ray from
-// there). On a face that meets no other the winding number of its front side is the same
+// another beyond what they share (CGAL's exact predicates; caps included) are drawn both
+// ways, and so is every other face whose front side has a negative winding number (a ray
+// from its centroid). On a face that meets no other the winding number of its front side is the same
 // all over it, so the others may skip their back faces. Folds that only reach a winding
 // number of 2 — a scan's surface overlapping itself — cost only the faces of the fold.
 void mark_faces_near_pockets(const WeldedMesh& closed, const std::vector<int32_t>& component,
@@ -186,30 +197,33 @@ void mark_faces_near_pockets(const WeldedMesh& closed, const std::vector<int32_t
     const size_t mesh_faces = source_face.size();  // the caps come after them in `closed`
     std::vector<uint8_t> meets(closed.faces.size(), 0);
     std::vector<bool> crossed(out.components.size(), false);
-    for_each_box_pair(closed, [&](uint32_t a, uint32_t b) {
-        if (component[a] != component[b] || !out.components[size_t(component[a])].closable ||
-            !triangles_meet(closed, a, b))
-            return;
-        meets[a] = meets[b] = 1;
-        crossed[size_t(component[a])] = true;
-    });
+    for_each_box_pair(
+        closed,
+        [&](uint32_t a, uint32_t b) {
+            if (component[a] != component[b] || !out.components[size_t(component[a])].closable ||
+                !triangles_meet(closed, a, b))
+                return;
+            meets[a] = meets[b] = 1;
+            crossed[size_t(component[a])] = true;
+        },
+        true);
     std::vector<WindingGrid::Triangle> triangles;
     const auto corner = [&](uint32_t f, int k) { return glm::dvec3(closed.positions[closed.faces[f][k]]); };
     for (uint32_t f = 0; f < closed.faces.size(); ++f)
-        if (crossed[size_t(component[f])]) triangles.push_back({corner(f, 0), corner(f, 1), corner(f, 2), component[f]});
+        if (crossed[size_t(component[f])]) triangles.push_back({corner(f, 0), corner(f, 1), corner(f, 2), component[f], f});
     if (triangles.empty()) return;
     const WindingGrid grid(std::move(triangles));
     for (uint32_t f = 0; f < mesh_faces; ++f) {
         if (!crossed[size_t(component[f])]) continue;
         bool both_ways = meets[f] != 0;
         if (!both_ways) {
+            // The ray from the centroid along +x, the face itself left out, counts the winding
+            // number of the side it leaves into: the front when the normal points along +x,
+            // else the back, one more than the front (w = 1 inside an outward surface).
             const glm::dvec3 a = corner(f, 0), b = corner(f, 1), c = corner(f, 2);
-            const glm::dvec3 n = glm::cross(b - a, c - a);
-            const double longest = std::max({glm::length(b - a), glm::length(c - b), glm::length(a - c)});
-            // A millionth of the face off it: closer than any other sheet a float mesh can
-            // hold apart from it at that size.
-            const std::optional<int> w = grid.winding((a + b + c) / 3.0 + 1e-6 * longest * glm::normalize(n), component[f]);
-            both_ways = !w || *w < 0;
+            const double nx = glm::cross(b - a, c - a).x;
+            const std::optional<int> w = nx == 0.0 ? std::nullopt : grid.winding((a + b + c) / 3.0, component[f], f);
+            both_ways = !w || (nx > 0.0 ? *w : *w - 1) < 0;
         }
         if (both_ways) out.face_both_ways[source_face[f]] = 1;
     }
@@ -235,7 +249,13 @@ ClosedSurfaces find_closed_surfaces(const TriangleMesh& mesh) {
             if (!uses.at(edge_key(welded.faces[f][k], welded.faces[f][(k + 1) % 3])).closable())
                 out.components[size_t(component[f])].closable = false;
     }
-    for (const auto& [c, hole] : boundary_cycles(welded, uses, component)) {
+    std::vector<bool> closable(count);
+    for (size_t c = 0; c < count; ++c) closable[c] = out.components[c].closable;
+    for (const auto& [c, hole] : boundary_cycles(welded, uses, component, closable)) {
+        if (hole.empty()) {
+            out.components[size_t(c)].closable = false;
+            continue;
+        }
         glm::dvec3 sum(0.0);
         for (uint32_t v : hole) sum += glm::dvec3(welded.positions[v]);
         const auto centre = uint32_t(closed.positions.size());

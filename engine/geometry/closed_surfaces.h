@@ -22,10 +22,10 @@
 //   - where the surface passes through itself it may enclose a pocket inside out (winding
 //     number −1), into which a ray's first face is a back face. The argument then holds face
 //     by face: a back face is first along a ray only where its front side has a negative
-//     winding number. Faces that meet another face of their component other than at a
-//     shared vertex (CGAL's exact predicate, caps included) are drawn both ways, and so is
-//     any other face whose front side has a negative winding number (a ray cast from just
-//     off its centroid: on a face that meets no other it is the same all over the face).
+//     winding number. Faces that meet another face of their component beyond the corners
+//     they share (CGAL's exact predicates, caps included) are drawn both ways, and so is any
+//     other face whose front side has a negative winding number (a ray cast from its
+//     centroid: on a face that meets no other it is the same all over the face).
 // The self-intersection search costs about as much as intersection lines (docs/BENCHMARKS.md),
 // so it is made for the pose given here; a caller with another pose of the same mesh (an
 // animation frame) has no such check for it and should not cull (render/frame_renderer.cpp).

@@ -39,7 +39,7 @@ Kernel::Triangle_3 triangle(const WeldedMesh& m, uint32_t f) {
 
 }  // namespace
 
-void for_each_box_pair(const WeldedMesh& m, const std::function<void(uint32_t, uint32_t)>& visit) {
+void for_each_box_pair(const WeldedMesh& m, const std::function<void(uint32_t, uint32_t)>& visit, bool neighbours) {
     // A box per face that is a triangle: a degenerate face crosses nothing, and testing it
     // once here spares a test per pair it is in (CGAL's exact collinearity test, a tenth of
     // the intersection lines' time when done per pair).
@@ -57,11 +57,36 @@ void for_each_box_pair(const WeldedMesh& m, const std::function<void(uint32_t, u
     CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const Box& x, const Box& y) {
         const auto x_face = uint32_t(x.handle() - m.faces.data()), y_face = uint32_t(y.handle() - m.faces.data());
         const uint32_t a = std::min(x_face, y_face), b = std::max(x_face, y_face);
-        if (!share_vertex(m.faces[a], m.faces[b])) visit(a, b);
+        if (neighbours || !share_vertex(m.faces[a], m.faces[b])) visit(a, b);
     }, kCutoff);
 }
 
-bool triangles_meet(const WeldedMesh& m, uint32_t a, uint32_t b) { return CGAL::do_intersect(triangle(m, a), triangle(m, b)); }
+bool triangles_meet(const WeldedMesh& m, uint32_t a, uint32_t b) {
+    const glm::uvec3 f = m.faces[a], g = m.faces[b];
+    int shared = 0, fi = -1, gi = -1;  // with one shared corner: where it is in each face
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            if (f[i] == g[j]) ++shared, fi = i, gi = j;
+    if (shared == 0) return CGAL::do_intersect(triangle(m, a), triangle(m, b));
+    if (shared == 3) return true;  // the same corners: the same triangle, either way round
+    const auto p = [&](uint32_t v) { return point(m.positions[v]); };
+    if (shared == 2) {
+        int fo = 0, go = 0;  // the corner of each face off the shared edge
+        while (f[fo] == g[0] || f[fo] == g[1] || f[fo] == g[2]) ++fo;
+        while (g[go] == f[0] || g[go] == f[1] || g[go] == f[2]) ++go;
+        const Point u = p(f[(fo + 1) % 3]), v = p(f[(fo + 2) % 3]), x = p(f[fo]), y = p(g[go]);
+        return CGAL::coplanar(u, v, x, y) && CGAL::coplanar_orientation(u, v, x, y) == CGAL::POSITIVE;
+    }
+    const Point v = p(f[fi]);
+    const Point a1 = p(f[(fi + 1) % 3]), a2 = p(f[(fi + 2) % 3]), b1 = p(g[(gi + 1) % 3]), b2 = p(g[(gi + 2) % 3]);
+    if (CGAL::do_intersect(triangle(m, a), Kernel::Segment_3(b1, b2)) ||
+        CGAL::do_intersect(triangle(m, b), Kernel::Segment_3(a1, a2)))
+        return true;
+    for (const Point& x : {a1, a2})
+        for (const Point& y : {b1, b2})
+            if (CGAL::collinear(v, x, y) && CGAL::angle(x, v, y) == CGAL::ACUTE) return true;
+    return false;
+}
 
 std::optional<std::array<glm::dvec3, 2>> common_segment(const WeldedMesh& m, uint32_t a, uint32_t b) {
     const Kernel::Triangle_3 ta = triangle(m, a), tb = triangle(m, b);

@@ -21,9 +21,14 @@
 
 namespace lw {
 
-void for_each_box_pair(const WeldedMesh& mesh, const std::function<void(uint32_t, uint32_t)>& visit);
+// With `neighbours`, pairs that share a vertex or an edge are visited too.
+void for_each_box_pair(const WeldedMesh& mesh, const std::function<void(uint32_t, uint32_t)>& visit,
+                       bool neighbours = false);
 
-// Do faces a and b have any point in common (touching counts)? Exact predicates.
+// Do faces a and b have any point in common besides the corners they share (touching
+// counts)? Exact predicates. Faces that share a vertex v meet beyond it when an edge of one
+// meets the other's edge opposite v, or an edge of each at v run the same way; faces that
+// share an edge meet beyond it when they are coplanar on the same side of it.
 [[nodiscard]] bool triangles_meet(const WeldedMesh& mesh, uint32_t a, uint32_t b);
 
 // The segment faces a and b have in common, when they meet along one (not at a point, not
