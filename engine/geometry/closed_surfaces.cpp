@@ -17,14 +17,13 @@ namespace lw {
 
 namespace {
 
-uint64_t edge_key(uint32_t a, uint32_t b) { return uint64_t{std::min(a, b)} << 32 | std::max(a, b); }
-
 uint32_t find_root(std::vector<uint32_t>& parent, uint32_t v) {
     while (parent[v] != v) v = parent[v] = parent[parent[v]];
     return v;
 }
 
-// How each edge is used: by how many faces running lo→hi and hi→lo.
+// How each edge of the weld (WeldedMesh::edges) is used: by how many faces running
+// v[0]→v[1] and v[1]→v[0].
 struct EdgeUse {
     uint32_t forward = 0, backward = 0;
     // One face (an open edge) or one face each way (a consistently oriented interior edge):
@@ -33,27 +32,27 @@ struct EdgeUse {
     bool closable() const { return forward + backward == 1 || (forward == 1 && backward == 1); }
 };
 
-std::unordered_map<uint64_t, EdgeUse> edge_uses(const WeldedMesh& welded) {
-    std::unordered_map<uint64_t, EdgeUse> uses;
-    uses.reserve(welded.faces.size() * 2);
-    for (const glm::uvec3& f : welded.faces)
+// Face f's edge from corner c to corner c + 1 (the weld names an edge by its opposite corner).
+uint32_t edge_from(const WeldedMesh& welded, uint32_t f, int c) { return uint32_t(welded.face_edges[f][(c + 2) % 3]); }
+
+std::vector<EdgeUse> edge_uses(const WeldedMesh& welded) {
+    std::vector<EdgeUse> uses(welded.edges.size());
+    for (uint32_t f = 0; f < welded.faces.size(); ++f)
         for (int c = 0; c < 3; ++c) {
-            const uint32_t a = f[c], b = f[(c + 1) % 3];
-            EdgeUse& use = uses[edge_key(a, b)];
-            (a < b ? use.forward : use.backward) += 1;
+            const uint32_t e = edge_from(welded, f, c);
+            (welded.faces[f][c] == welded.edges[e].v[0] ? uses[e].forward : uses[e].backward) += 1;
         }
     return uses;
 }
 
 // Faces joined across their interior edges (one face each way), numbered in order of their
 // first face. Shells that meet only at a vertex, or along an edge of another kind, are apart.
-std::vector<int32_t> face_components(const WeldedMesh& welded, const std::unordered_map<uint64_t, EdgeUse>& uses,
-                                     size_t& count) {
+std::vector<int32_t> face_components(const WeldedMesh& welded, const std::vector<EdgeUse>& uses, size_t& count) {
     std::vector<uint32_t> parent(welded.faces.size());
     std::iota(parent.begin(), parent.end(), 0u);
-    for (const MeshEdge& edge : welded.edges) {
-        const EdgeUse& use = uses.at(edge_key(edge.v[0], edge.v[1]));
-        if (use.forward == 1 && use.backward == 1 && edge.face_count == 2)
+    for (size_t e = 0; e < welded.edges.size(); ++e) {
+        const MeshEdge& edge = welded.edges[e];
+        if (uses[e].forward == 1 && uses[e].backward == 1 && edge.face_count == 2)
             parent[find_root(parent, uint32_t(edge.f[0]))] = find_root(parent, uint32_t(edge.f[1]));
     }
     std::vector<int32_t> component(welded.faces.size()), of_root(welded.faces.size(), -1);
@@ -73,7 +72,7 @@ std::vector<int32_t> face_components(const WeldedMesh& welded, const std::unorde
 // wound the other way, a fin) has no such boundary and is left out. Edges are taken in
 // order of first use by the faces; a walk stays in its component.
 std::vector<std::pair<int32_t, std::vector<uint32_t>>> boundary_cycles(const WeldedMesh& welded,
-                                                                       const std::unordered_map<uint64_t, EdgeUse>& uses,
+                                                                       const std::vector<EdgeUse>& uses,
                                                                        const std::vector<int32_t>& component,
                                                                        const std::vector<bool>& closable) {
     const auto node = [](int32_t c, uint32_t v) { return uint64_t(uint32_t(c)) << 32 | v; };
@@ -82,7 +81,7 @@ std::vector<std::pair<int32_t, std::vector<uint32_t>>> boundary_cycles(const Wel
     for (uint32_t f = 0; f < welded.faces.size(); ++f)
         for (int c = 0; c < 3; ++c) {
             const uint32_t a = welded.faces[f][c], b = welded.faces[f][(c + 1) % 3];
-            const EdgeUse& use = uses.at(edge_key(a, b));
+            const EdgeUse& use = uses[edge_from(welded, f, c)];
             if (use.forward + use.backward != 1 || !closable[size_t(component[f])]) continue;
             std::vector<uint32_t>& leaving = out[node(component[f], a)];
             if (leaving.empty()) starts.push_back(node(component[f], a));
@@ -233,7 +232,7 @@ void mark_faces_near_pockets(const WeldedMesh& closed, const std::vector<int32_t
 
 ClosedSurfaces find_closed_surfaces(const TriangleMesh& mesh) {
     const WeldedMesh welded = weld(mesh);
-    const std::unordered_map<uint64_t, EdgeUse> uses = edge_uses(welded);
+    const std::vector<EdgeUse> uses = edge_uses(welded);
     size_t count = 0;
     const std::vector<int32_t> component = face_components(welded, uses, count);
     ClosedSurfaces out;
@@ -246,7 +245,7 @@ ClosedSurfaces find_closed_surfaces(const TriangleMesh& mesh) {
     for (uint32_t f = 0; f < welded.faces.size(); ++f) {
         out.face_component[welded.source_face[f]] = component[f];
         for (int k = 0; k < 3; ++k)
-            if (!uses.at(edge_key(welded.faces[f][k], welded.faces[f][(k + 1) % 3])).closable())
+            if (!uses[edge_from(welded, f, k)].closable())
                 out.components[size_t(component[f])].closable = false;
     }
     std::vector<bool> closable(count);

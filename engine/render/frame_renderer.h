@@ -122,7 +122,7 @@ public:
     // line mesh (weld, curvature, feature edges) with `crease_angle_deg`, its curvature
     // fitted as `curvature` says (LineParams::curvature). A `still` mesh (one deform() will
     // not move) is searched for closed surfaces once, so that views skip the back faces no
-    // pixel can see (geometry/closed_surfaces.h; 0.2 s for 70k–95k triangles here); a mesh
+    // pixel can see (geometry/closed_surfaces.h; 0.2–0.4 s for 70k–95k triangles here); a mesh
     // that will be deformed draws every face in every pose, so that a frame's pixels do not
     // depend on which pose a run started from.
     void set_mesh(const TriangleMesh& mesh, bool with_lines, float crease_angle_deg,
