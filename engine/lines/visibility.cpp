@@ -40,6 +40,13 @@ struct DepthTester {
     }
 };
 
+// The fraction along a 3D segment whose projection lies at fraction t of the projected
+// segment, for ends at eye depths wa, wb > 0 (clip w; equal for an orthographic camera).
+float perspective_fraction(float t, float wa, float wb) {
+    const float denominator = (1.0f - t) * wb + t * wa;
+    return denominator > 0.0f ? t * wa / denominator : t;
+}
+
 // Samples of one path every `spacing` pixels of screen arc length, ends included.
 std::vector<ScreenSample> resample(const LinePath& path, const CameraMatrices& camera, const DepthImage& image,
                                    float spacing) {
@@ -59,14 +66,20 @@ std::vector<ScreenSample> resample(const LinePath& path, const CameraMatrices& c
         const float length = glm::length(glm::vec2(pb) - glm::vec2(pa));
         while (next_sample <= s + length) {
             const float t = length > 0.0f ? (next_sample - s) / length : 0.0f;
+            // The point of the 3D segment that projects to screen fraction t lies at fraction
+            // u of it, perspective-correct (1/w is linear on screen, w the eye depth): a long
+            // segment running away from the eye (a box's edge) has its screen middle well
+            // before its 3D middle. With t in place of u, the sample's surface point, depth
+            // and carried position were off the line by pixels.
+            const float u = perspective_fraction(t, pa.z, pb.z);
             const PathVertex& nearer = t < 0.5f ? a : b;
             samples.push_back(ScreenSample{.pixel = glm::mix(glm::vec2(pa), glm::vec2(pb), t),
-                                           .depth = glm::mix(pa.z, pb.z, t),
+                                           .depth = glm::mix(pa.z, pb.z, u),
                                            .s = next_sample,
-                                           .position = glm::mix(a.position, b.position, t),
+                                           .position = glm::mix(a.position, b.position, u),
                                            .face = nearer.face,
                                            .bary = nearer.bary,
-                                           .alpha = glm::mix(a.alpha, b.alpha, t),
+                                           .alpha = glm::mix(a.alpha, b.alpha, u),
                                            .other_face = nearer.other_face});
             next_sample += spacing;
             if (length == 0.0f) break;
