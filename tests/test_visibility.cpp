@@ -65,8 +65,6 @@ TEST(VisibilitySamples, SurfacePointsProjectToTheirPixels) {
         const glm::vec3 projected = project_to_pixel(camera, sample.position, kWidth, kHeight);
         worst_px = std::max(worst_px, double(glm::distance(glm::vec2(projected), sample.pixel)));
         worst_depth = std::max(worst_depth, double(std::abs(projected.z - sample.depth) / projected.z));
-        // The surface point lies on the 3D segment.
-        EXPECT_NEAR(sample.position.y, 0.0f, 1e-6f);
     }
     // Float rounding of the projection only (screen fractions put the middle samples tens of
     // pixels off on this segment).

@@ -72,13 +72,15 @@ std::vector<ScreenSample> resample(const LinePath& path, const CameraMatrices& c
             // before its 3D middle. With t in place of u, the sample's surface point, depth
             // and carried position were off the line by pixels.
             const float u = perspective_fraction(t, pa.z, pb.z);
-            const PathVertex& nearer = t < 0.5f ? a : b;
+            const PathVertex& nearer = u < 0.5f ? a : b;
             samples.push_back(ScreenSample{.pixel = glm::mix(glm::vec2(pa), glm::vec2(pb), t),
                                            .depth = glm::mix(pa.z, pb.z, u),
                                            .s = next_sample,
                                            .position = glm::mix(a.position, b.position, u),
                                            .face = nearer.face,
-                                           .bary = nearer.bary,
+                                           // Within one face the point's own coordinates (a
+                                           // skinned mesh carries the sample with them).
+                                           .bary = a.face == b.face ? glm::mix(a.bary, b.bary, u) : nearer.bary,
                                            .alpha = glm::mix(a.alpha, b.alpha, u),
                                            .other_face = nearer.other_face});
             next_sample += spacing;
