@@ -24,7 +24,8 @@ namespace {
 // seam divides from the fit.) Without such a line, or if moving both ends would leave no
 // run, the ends stay where the fit's rejection put them.
 std::vector<std::pair<uint32_t, uint32_t>> rejected_runs(const VoteSet& votes, uint32_t first, uint32_t last,
-                                                         const PathFit& fit, float inlier_px, uint32_t min_run) {
+                                                         const PathFit& fit, float inlier_px, uint32_t min_run,
+                                                         uint32_t min_end_run) {
     constexpr int64_t kPlateau = 4, kBlendVotes = 6;
     auto residual = [&](int64_t v) { return votes.votes[size_t(v)].t - (fit.rho * votes.votes[size_t(v)].s + fit.phi); };
     const float limit = inlier_px * std::abs(fit.rho);
@@ -68,9 +69,11 @@ std::vector<std::pair<uint32_t, uint32_t>> rejected_runs(const VoteSet& votes, u
         if (outlier || run_start == last) continue;
         int64_t a = run_start, b = int64_t(v) - 1;
         run_start = last;
-        // Fewer than min_run rejected votes are noise; all of them, a fit that explains none
-        // of its own votes (splitting would give the same piece back).
-        if (b + 1 - a < int64_t(min_run) || (a == int64_t(first) && b + 1 == int64_t(last))) continue;
+        // Fewer than min_run rejected votes are noise (min_end_run at the path's ends); all of
+        // them, a fit that explains none of its own votes (splitting would give the same piece back).
+        const bool at_end = a == int64_t(first) || b + 1 == int64_t(last);
+        if (b + 1 - a < int64_t(at_end ? min_end_run : min_run) || (a == int64_t(first) && b + 1 == int64_t(last)))
+            continue;
         const int64_t a_seam = a > int64_t(first) ? seam(a, b) : a;
         const int64_t b_seam = b + 1 < int64_t(last) ? seam(b, a) : b;
         if (b_seam > a_seam)
@@ -86,6 +89,16 @@ std::vector<std::pair<uint32_t, uint32_t>> rejected_runs(const VoteSet& votes, u
 std::vector<bool> split_round(std::vector<ScreenPath>& paths, VoteSet& votes, std::vector<PathFit>& fits,
                               const RansacParams& ransac, const std::vector<bool>& examine, const RansacFitter& fitter) {
     constexpr uint32_t kMinRun = 8;  // consecutive rejected votes that make a piece of their own
+    // At a path's end, fewer: there a run of rejected votes is most often a piece of another
+    // earlier path that this one has grown into (a gap between two pieces of a line, or a
+    // junction, moving along it as the view turns), and absorbed into this path's phase its
+    // samples pop. The blend at a seam rejects at most three votes at a piece's end: the shared
+    // seam sample and the two within a sprite radius of it (the radius is two sample
+    // spacings), so four are a piece of their own. Measured on the 640×480 orbits of
+    // docs/BENCHMARKS.md (pops against the tiling policy, 8 → 4): the speeder's suggestive
+    // contours 0.41 → 0.00 and silhouettes 0.11 → 0.02, the truck's creases 0.62 → 0.00; from 2
+    // to 5 votes every value measured better than 8 (3 split the blend off a seam).
+    constexpr uint32_t kMinEndRun = 4;
     std::vector<ScreenPath> out_paths;
     VoteSet out_votes;
     std::vector<PathFit> out_fits;
@@ -119,7 +132,7 @@ std::vector<bool> split_round(std::vector<ScreenPath>& paths, VoteSet& votes, st
         // Runs of consecutive votes the fit rejects, as sample ranges.
         std::vector<std::pair<size_t, size_t>> runs;
         if (examine[p] && fit.fitted && last - first >= 2 * kMinRun)
-            for (const auto& [a, b] : rejected_runs(votes, first, last, fit, ransac.inlier_px, kMinRun))
+            for (const auto& [a, b] : rejected_runs(votes, first, last, fit, ransac.inlier_px, kMinRun, kMinEndRun))
                 runs.push_back({votes.sample[a], votes.sample[b]});
         if (runs.empty()) {
             add_piece(paths[p], p, 0, paths[p].samples.size() - 1, &fit);

@@ -3,7 +3,8 @@
 // Bénard et al. 2010 §4.2 notes that "popping can occur when two paths merge": one (ρ, φ) per
 // path cannot keep the phases of several earlier paths. Input: this frame's paths, their votes
 // (with the sample each came from) and RANSAC's fits. Where a run of at least 8 consecutive
-// votes disagrees with a path's fit, the path is cut there, at the middle of each seam; the
+// votes (4 at either end of the path) disagrees with a path's fit, the path is cut there, at
+// the middle of each seam; the
 // agreeing pieces keep the fit and the others are fitted on their own (RANSAC again) and looked
 // at again, so that a path joining three or more earlier ones keeps all their phases. Output:
 // the pieces, their votes and fits, in place (neighbouring pieces share their seam's sample;
