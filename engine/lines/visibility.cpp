@@ -78,9 +78,7 @@ std::vector<ScreenSample> resample(const LinePath& path, const CameraMatrices& c
                                            .s = next_sample,
                                            .position = glm::mix(a.position, b.position, u),
                                            .face = nearer.face,
-                                           // Within one face the point's own coordinates (a
-                                           // skinned mesh carries the sample with them).
-                                           .bary = a.face == b.face ? glm::mix(a.bary, b.bary, u) : nearer.bary,
+                                           .bary = nearer.bary,
                                            .alpha = glm::mix(a.alpha, b.alpha, u),
                                            .other_face = nearer.other_face});
             next_sample += spacing;
