@@ -286,7 +286,8 @@ TEST_F(CoherenceGpu, AMergedPathsSeamStaysWhereThePathsMet) {
 // closes, or moves along it as the view turns) keeps its phase: its few votes are a piece of
 // their own, not outliers of the longer path's fit whose samples would then jump to that
 // path's phase (a run of 4 votes at a path's end is enough, path_split.cpp). With 8, as in
-// the middle of a path, all four of this piece's samples compared popped.
+// the middle of a path, all four of this piece's samples compared popped. (The other side:
+// AMergedPathsSeamStaysWhereThePathsMet fails with 3, which splits a seam's blend off.)
 TEST_F(CoherenceGpu, AShortPieceJoiningAPathsEndKeepsItsPhase) {
     const int width = 400, height = 64;
     const glm::vec2 size(width, height);

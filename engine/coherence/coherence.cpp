@@ -519,7 +519,7 @@ std::vector<PathParam> CoherenceTracker::update(std::vector<ScreenPath>& paths, 
         // RANSAC's fit finds each path's direction along the previous parameterization and the
         // runs of votes that disagree with it (pieces of paths that were apart a frame earlier).
         fits = fitter_.fit(votes, params.ransac);
-        split_merged_paths(paths, votes, fits, params.ransac, fitter_);
+        split_merged_paths(paths, votes, fits, params.ransac, params.splat_radius_px, fitter_);
     } else {
         view_rho_ = 0.0f;  // back to the coherent policy, the scale starts afresh with the splat's T
     }

@@ -9,6 +9,8 @@ namespace lw {
 
 namespace {
 
+constexpr uint32_t kMinRun = 8;  // consecutive rejected votes that make a piece of their own
+
 // The runs of at least `min_run` consecutive votes of [first, last) that `fit` rejects (farther
 // than inlier_px along the path), as inclusive vote ranges. Where a run borders accepted
 // votes and joins them at a seam between two phases, its end is moved to the middle of the
@@ -84,21 +86,28 @@ std::vector<std::pair<uint32_t, uint32_t>> rejected_runs(const VoteSet& votes, u
     return runs;
 }
 
+// At a path's end, fewer rejected votes than kMinRun make a piece: there a run of them is most
+// often a piece of another earlier path that this one has grown into (a gap between two
+// pieces of a line, or a junction, moving along it as the view turns), and absorbed into
+// this path's phase its samples pop. The splat's blend at a seam rejects at most the shared
+// seam sample and the votes within a sprite radius of it, so one more than that is a piece of
+// its own: with the default radius of two sample spacings, 4. Measured on the 640×480 orbits
+// of docs/BENCHMARKS.md (pops against the tiling policy, 8 → 4): the speeder's suggestive
+// contours 0.41 → 0.00 and silhouettes 0.11 → 0.02, the truck's creases 0.62 → 0.00; 2, 3
+// and 5 were also better than 8 on most figures.
+uint32_t min_end_run(const ScreenPath& path, float splat_radius_px) {
+    const size_t n = path.samples.size();
+    const float spacing = n > 1 ? (path.samples.back().s - path.samples.front().s) / float(n - 1) : 0.0f;
+    if (!(spacing > 0.0f) || !(splat_radius_px > 0.0f)) return kMinRun;
+    const float within = std::floor(splat_radius_px / spacing + 1e-3f);
+    return uint32_t(std::clamp(within + 2.0f, 2.0f, float(kMinRun)));
+}
+
 // One round: the paths with `examine` set are looked at; returns, per path after, whether it
 // is a piece fitted on its own (the next round looks at those).
 std::vector<bool> split_round(std::vector<ScreenPath>& paths, VoteSet& votes, std::vector<PathFit>& fits,
-                              const RansacParams& ransac, const std::vector<bool>& examine, const RansacFitter& fitter) {
-    constexpr uint32_t kMinRun = 8;  // consecutive rejected votes that make a piece of their own
-    // At a path's end, fewer: there a run of rejected votes is most often a piece of another
-    // earlier path that this one has grown into (a gap between two pieces of a line, or a
-    // junction, moving along it as the view turns), and absorbed into this path's phase its
-    // samples pop. The blend at a seam rejects at most three votes at a piece's end: the shared
-    // seam sample and the two within a sprite radius of it (the radius is two sample
-    // spacings), so four are a piece of their own. Measured on the 640×480 orbits of
-    // docs/BENCHMARKS.md (pops against the tiling policy, 8 → 4): the speeder's suggestive
-    // contours 0.41 → 0.00 and silhouettes 0.11 → 0.02, the truck's creases 0.62 → 0.00; from 2
-    // to 5 votes every value measured better than 8 (3 split the blend off a seam).
-    constexpr uint32_t kMinEndRun = 4;
+                              const RansacParams& ransac, float splat_radius_px, const std::vector<bool>& examine,
+                              const RansacFitter& fitter) {
     std::vector<ScreenPath> out_paths;
     VoteSet out_votes;
     std::vector<PathFit> out_fits;
@@ -131,8 +140,12 @@ std::vector<bool> split_round(std::vector<ScreenPath>& paths, VoteSet& votes, st
         const uint32_t first = votes.offsets[p], last = votes.offsets[p + 1];
         // Runs of consecutive votes the fit rejects, as sample ranges.
         std::vector<std::pair<size_t, size_t>> runs;
+        // (A run reaching the first or last vote was also tried taking the vote-less samples
+        // beyond it, so that no piece of a sample or two stays at the end: mixed, e.g.
+        // FlightHelmet's silhouette median 0.33 → 0.35, the bunny's p90 0.09 → 0.08.)
         if (examine[p] && fit.fitted && last - first >= 2 * kMinRun)
-            for (const auto& [a, b] : rejected_runs(votes, first, last, fit, ransac.inlier_px, kMinRun, kMinEndRun))
+            for (const auto& [a, b] : rejected_runs(votes, first, last, fit, ransac.inlier_px, kMinRun,
+                                                    min_end_run(paths[p], splat_radius_px)))
                 runs.push_back({votes.sample[a], votes.sample[b]});
         if (runs.empty()) {
             add_piece(paths[p], p, 0, paths[p].samples.size() - 1, &fit);
@@ -168,13 +181,13 @@ std::vector<bool> split_round(std::vector<ScreenPath>& paths, VoteSet& votes, st
 }  // namespace
 
 void split_merged_paths(std::vector<ScreenPath>& paths, VoteSet& votes, std::vector<PathFit>& fits,
-                        const RansacParams& ransac, const RansacFitter& fitter) {
+                        const RansacParams& ransac, float splat_radius_px, const RansacFitter& fitter) {
     // A path joining n earlier ones needs at most n − 1 rounds; more than 9 pieces of
     // different earlier paths in one path is rarer than the cost of looking again.
     constexpr int kRounds = 8;
     std::vector<bool> examine(paths.size(), true);
     for (int round = 0; round < kRounds && std::ranges::find(examine, true) != examine.end(); ++round)
-        examine = split_round(paths, votes, fits, ransac, examine, fitter);
+        examine = split_round(paths, votes, fits, ransac, splat_radius_px, examine, fitter);
 }
 
 }  // namespace lw

@@ -2,13 +2,13 @@
 //
 // Bénard et al. 2010 §4.2 notes that "popping can occur when two paths merge": one (ρ, φ) per
 // path cannot keep the phases of several earlier paths. Input: this frame's paths, their votes
-// (with the sample each came from) and RANSAC's fits. Where a run of at least 8 consecutive
-// votes (4 at either end of the path) disagrees with a path's fit, the path is cut there, at
-// the middle of each seam; the
-// agreeing pieces keep the fit and the others are fitted on their own (RANSAC again) and looked
-// at again, so that a path joining three or more earlier ones keeps all their phases. Output:
-// the pieces, their votes and fits, in place (neighbouring pieces share their seam's sample;
-// every piece leaves open).
+// (with the sample each came from), RANSAC's fits and the splat's sprite radius. Where a run
+// of at least 8 consecutive votes disagrees with a path's fit (at either end of the path,
+// one more than the sprite radius spans in samples, plus the seam's own: 4 by default), the
+// path is cut there, at the middle of each seam; the agreeing pieces keep the fit and the
+// others are fitted on their own (RANSAC again) and looked at again, so that a path joining
+// three or more earlier ones keeps all their phases. Output: the pieces, their votes and
+// fits, in place (neighbouring pieces share their seam's sample; every piece leaves open).
 #pragma once
 
 #include <vector>
@@ -20,6 +20,6 @@
 namespace lw {
 
 void split_merged_paths(std::vector<ScreenPath>& paths, VoteSet& votes, std::vector<PathFit>& fits,
-                        const RansacParams& ransac, const RansacFitter& fitter);
+                        const RansacParams& ransac, float splat_radius_px, const RansacFitter& fitter);
 
 }  // namespace lw
