@@ -189,10 +189,21 @@ TEST(ClosedSurfaces, DrawsCullOnlyWhereEveryComponentIsOpaqueAndHidden) {
     const std::vector<MeshDraw> draws = {{.material = 0, .first_index = 0, .index_count = 3 * 4},   // 3 0 1 6
                                          {.material = 1, .first_index = 12, .index_count = 3},      // 4
                                          {.material = 2, .first_index = 15, .index_count = 3 * 2}};  // 2 5
+    // Each decision twice: with the draws' faces walked there, and with draw_surfaces found
+    // beforehand (as FrameRenderer keeps it per mesh).
     const auto cull = [&](std::vector<uint8_t> hidden, std::vector<uint8_t> opaque) {
-        const BackFaceCulling culling{.surfaces = &surfaces, .hidden = std::move(hidden)};
-        return cullable_draws(draws, face_order, opaque, &culling);
+        const std::vector<DrawSurfaces> per_draw = draw_surfaces(draws, face_order, surfaces);
+        const BackFaceCulling walked{.surfaces = &surfaces, .hidden = hidden};
+        const BackFaceCulling found{.surfaces = &surfaces, .hidden = std::move(hidden), .draws = &per_draw};
+        const std::vector<uint8_t> result = cullable_draws(draws, face_order, opaque, &walked);
+        EXPECT_EQ(cullable_draws(draws, face_order, opaque, &found), result);
+        return result;
     };
+    const std::vector<DrawSurfaces> per_draw = draw_surfaces(draws, face_order, surfaces);
+    ASSERT_EQ(per_draw.size(), 3u);
+    EXPECT_EQ(per_draw[0].components, (std::vector<int32_t>{0, 1}));  // faces 3 0 1 6
+    EXPECT_EQ(per_draw[1].components, (std::vector<int32_t>{1}));
+    EXPECT_EQ(per_draw[2].components, (std::vector<int32_t>{0, 1}));
     EXPECT_EQ(cull({1, 1}, {1, 1, 1}), (std::vector<uint8_t>{1, 1, 1}));
     EXPECT_EQ(cull({1, 0}, {1, 1, 1}), (std::vector<uint8_t>{0, 0, 0}));  // 1 is in every draw
     EXPECT_EQ(cull({1, 1}, {1, 0, 1}), (std::vector<uint8_t>{0, 0, 0}));  // a masked face of 1 lets the eye in

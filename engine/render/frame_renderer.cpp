@@ -106,6 +106,7 @@ void FrameRenderer::set_mesh(const TriangleMesh& mesh, bool with_lines, float cr
     keep_positions_of_frames_in_flight();
     closed_ = still ? find_closed_surfaces(mesh) : ClosedSurfaces{};
     mesh_ = upload_mesh(*ctx_, mesh, &materials_, &closed_.face_both_ways);
+    closed_draws_ = still ? draw_surfaces(mesh_->draws, mesh_->face_order, closed_) : std::vector<DrawSurfaces>{};
     line_mesh_.reset();
     if (with_lines) {
         line_mesh_ = build_line_mesh(mesh, crease_angle_deg, curvature_options(curvature));
@@ -119,6 +120,7 @@ void FrameRenderer::deform(const TriangleMesh& posed) {
     // A pose of a mesh given as still: from now on every face is drawn (a search a pose
     // would cost as much as intersection lines, geometry/closed_surfaces.h).
     closed_ = ClosedSurfaces{};
+    closed_draws_.clear();
     if (!line_mesh_) return;
     pose_line_mesh(*line_mesh_, posed);
     if (!extraction_on_host_) extractor_.set_pose(*line_mesh_);
@@ -233,7 +235,8 @@ void FrameRenderer::begin(FrameInput input) {
     // Without drawing, the surface is depth-only: the same vertex stage, so the same depth.
     SurfaceStyle surface_style = input.surface;
     if (!input.outputs.draw) surface_style.draw_surface = false;
-    const BackFaceCulling culling{.surfaces = &closed_, .hidden = back_faces_hidden(closed_, input.camera)};
+    const BackFaceCulling culling{
+        .surfaces = &closed_, .hidden = back_faces_hidden(closed_, input.camera), .draws = &closed_draws_};
     for (int attempt = 0;; ++attempt) {
         slot.surface_work.emplace(ctx_->submit([&](VkCommandBuffer cmd) {
             slot.timer.reset(cmd);

@@ -1,5 +1,6 @@
 #include "render/surface_pass.h"
 
+#include <algorithm>
 #include <cstring>
 
 #include "core/error.h"
@@ -150,28 +151,46 @@ void SurfacePass::resolve_depth(VkCommandBuffer cmd, RenderTarget& target, VkRen
     depth.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
 }
 
+std::vector<DrawSurfaces> draw_surfaces(const std::vector<MeshDraw>& draws, const std::vector<uint32_t>& face_order,
+                                        const ClosedSurfaces& surfaces) {
+    const std::vector<int32_t>& component = surfaces.face_component;
+    const std::vector<uint8_t>& both_ways = surfaces.face_both_ways;
+    if (component.size() != face_order.size() || both_ways.size() != component.size()) return {};
+    std::vector<DrawSurfaces> out(draws.size());
+    for (size_t d = 0; d < draws.size(); ++d) {
+        DrawSurfaces& draw = out[d];
+        for (size_t k = draws[d].first_index / 3; k < (size_t(draws[d].first_index) + draws[d].index_count) / 3; ++k) {
+            const uint32_t face = face_order[k];
+            draw.both_ways = draw.both_ways || both_ways[face] != 0;
+            if (component[face] >= 0) draw.components.push_back(component[face]);
+        }
+        std::sort(draw.components.begin(), draw.components.end());
+        draw.components.erase(std::unique(draw.components.begin(), draw.components.end()), draw.components.end());
+    }
+    return out;
+}
+
 std::vector<uint8_t> cullable_draws(const std::vector<MeshDraw>& draws, const std::vector<uint32_t>& face_order,
                                     const std::vector<uint8_t>& opaque, const BackFaceCulling* culling) {
     std::vector<uint8_t> cull(draws.size(), 0);
-    if (!culling || !culling->surfaces || culling->surfaces->face_component.size() != face_order.size() ||
-        culling->hidden.size() != culling->surfaces->components.size() || opaque.size() != draws.size())
+    if (!culling || !culling->surfaces || culling->hidden.size() != culling->surfaces->components.size() ||
+        opaque.size() != draws.size())
         return cull;
-    const std::vector<int32_t>& component = culling->surfaces->face_component;
-    const std::vector<uint8_t>& both_ways = culling->surfaces->face_both_ways;
-    if (both_ways.size() != component.size()) return cull;
-    std::vector<uint8_t> ok = culling->hidden;
-    for (size_t d = 0; d < draws.size(); ++d) {
-        if (opaque[d]) continue;
-        for (size_t k = draws[d].first_index / 3; k < (size_t(draws[d].first_index) + draws[d].index_count) / 3; ++k)
-            if (const int32_t c = component[face_order[k]]; c >= 0) ok[size_t(c)] = 0;
+    std::vector<DrawSurfaces> found;
+    const std::vector<DrawSurfaces>* per_draw = culling->draws;
+    if (!per_draw || per_draw->size() != draws.size()) {
+        found = draw_surfaces(draws, face_order, *culling->surfaces);
+        if (found.size() != draws.size()) return cull;
+        per_draw = &found;
     }
+    std::vector<uint8_t> ok = culling->hidden;
+    for (size_t d = 0; d < draws.size(); ++d)
+        if (!opaque[d])
+            for (int32_t c : (*per_draw)[d].components) ok[size_t(c)] = 0;
     for (size_t d = 0; d < draws.size(); ++d) {
-        bool all = opaque[d] != 0;
-        for (size_t k = draws[d].first_index / 3; all && k < (size_t(draws[d].first_index) + draws[d].index_count) / 3; ++k) {
-            const uint32_t face = face_order[k];
-            all = !both_ways[face] && (component[face] < 0 || ok[size_t(component[face])]);
-        }
-        cull[d] = all ? 1 : 0;
+        const DrawSurfaces& draw = (*per_draw)[d];
+        cull[d] = opaque[d] && !draw.both_ways &&
+                  std::all_of(draw.components.begin(), draw.components.end(), [&](int32_t c) { return ok[size_t(c)] != 0; });
     }
     return cull;
 }

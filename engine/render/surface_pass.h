@@ -53,17 +53,33 @@
 
 namespace lw {
 
+// What the culling decision needs of each draw, found once per mesh (a pass over its faces):
+// the closed-surface components its faces belong to, and whether one of them is to be drawn
+// both ways (ClosedSurfaces::face_both_ways). `face_order` maps the index buffer's
+// triangles to the mesh's (GpuMesh::face_order). Empty when `surfaces` does not fit.
+struct DrawSurfaces {
+    std::vector<int32_t> components;  // sorted, distinct; faces with no area (-1) left out
+    bool both_ways = false;
+};
+[[nodiscard]] std::vector<DrawSurfaces> draw_surfaces(const std::vector<MeshDraw>& draws,
+                                                      const std::vector<uint32_t>& face_order,
+                                                      const ClosedSurfaces& surfaces);
+
 // The faces a view may skip: the mesh's closed surfaces (found once per mesh) and, per
 // component, whether its back faces are hidden from this view (`back_faces_hidden`).
+// `draws`: draw_surfaces of the mesh's draws, found beforehand so that a frame does not walk
+// the faces again (without it, or if it does not fit the draws, cullable_draws finds it).
 struct BackFaceCulling {
     const ClosedSurfaces* surfaces = nullptr;
     std::vector<uint8_t> hidden;
+    const std::vector<DrawSurfaces>* draws = nullptr;
 };
 
 // Per draw, whether it may skip its back faces in this view: the draw is opaque (`opaque`,
 // per draw), none of its faces is to be drawn both ways, and every face of the components
-// its faces belong to is drawn opaque, each component hidden from the view. `face_order` maps the index buffer's triangles to the
-// mesh's (GpuMesh::face_order). Nothing is culled when `culling` does not fit the draws.
+// its faces belong to is drawn opaque, each component hidden from the view. `face_order`
+// maps the index buffer's triangles to the mesh's (GpuMesh::face_order). Nothing is culled
+// when `culling` does not fit the draws.
 [[nodiscard]] std::vector<uint8_t> cullable_draws(const std::vector<MeshDraw>& draws,
                                                   const std::vector<uint32_t>& face_order,
                                                   const std::vector<uint8_t>& opaque, const BackFaceCulling* culling);
