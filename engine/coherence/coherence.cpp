@@ -532,7 +532,12 @@ std::vector<PathParam> CoherenceTracker::update(std::vector<ScreenPath>& paths, 
             case ParamPolicy::Coherent:
                 param.votes = fits[p].votes;
                 param_from_scale(param, fits[p], votes, p, view_rho_, params.ransac.inlier_px);
-                param.fold = fold_slam_level(param.rho, params.length_scale, params.slam_length_px);
+                // Only a SLAM has levels to fold into; a set without one (plain lines, dashes,
+                // displacement: modifiers read ρ and φ) samples no texture along u, and
+                // folding it would only flip u's scale between 1 and 2 as ρ, held at the
+                // tiling scale ρ0 where the level changes, rounds either way.
+                param.fold = params.slam_levels ? fold_slam_level(param.rho, params.length_scale, params.slam_length_px)
+                                                : SlamFold{};
                 break;
             case ParamPolicy::Arclength:  // tiling: one period per texture length on screen
                 param.rho = params.length_scale / params.slam_length_px;
