@@ -342,6 +342,32 @@ TEST(Coherence, SlidingComparesASharedEndWithItsOwnPath) {
     EXPECT_EQ(still.p90_dt, 0.0);
 }
 
+// Two paths of a set running 1 px apart (parallel silhouettes of nested parts) whose phases
+// swap each frame, as when the two trade places in the chaining: the full measure sees them
+// pop, though the pair of textures is the same every frame; the pairs where one path lies alone leave them out and keep the lone path's, and
+// a path of another set at the same distance does not crowd it.
+TEST(Coherence, SlidingReportsThePairsWhereOnePathLiesAlone) {
+    auto line = [](const char* set, float y, float phase) {
+        DumpPath path{.type = "silhouette", .line_set = set, .rho = 0.01f, .samples = {}};
+        for (int x = 0; x <= 40; x += 2)
+            path.samples.push_back({{float(x), y}, float(x), phase + 0.01f * float(x), 0.0f});
+        return path;
+    };
+    auto frame = [&](int f) {
+        const float swap = f % 2 ? 0.4f : 0.0f;
+        return PathDump{.frame = f,
+                        .paths = {line("a", 5.0f, swap), line("a", 6.0f, 0.4f - swap), line("a", 40.0f, 0.2f),
+                                  line("b", 41.0f, 0.3f * float(f))}};
+    };
+    const std::vector<PathDump> frames{frame(0), frame(1), frame(2)};
+    const SlidingMeasure a = measure_sliding(paths_of_line_set(frames, "a"));
+    EXPECT_EQ(a.pairs, 2u * 3u * 21u);
+    EXPECT_GT(a.pops, 0.6);  // the crowded pairs, 2/3 of all
+    EXPECT_EQ(a.alone.pairs, 2u * 21u);
+    EXPECT_EQ(a.alone.pops, 0.0);
+    EXPECT_EQ(a.alone.p90_dt, 0.0);
+}
+
 // A camera that scales the image about its centre by `zoom`.
 CameraMatrices zoomed_camera(float zoom) {
     CameraMatrices camera;

@@ -180,24 +180,59 @@ Quantiles quantiles(std::vector<double>& values) {
 
 }  // namespace
 
-SlidingMeasure measure_sliding(const std::vector<PathDump>& frames, float match_px) {
-    std::vector<double> dts, pixels;
-    for (size_t f = 1; f < frames.size(); ++f) {
-        const SampleGrid previous(frames[f - 1], std::max(match_px, 1.0f));
-        for (const auto& path : frames[f].paths)
-            for (const auto& s : path.samples) {
-                auto distance = [&](const SampleGrid::Entry& e) { return glm::length(e.sample().pixel - s.pixel); };
-                auto phase = [&](const SampleGrid::Entry& e) { return wrapped_dt(s.t, e.sample().t); };
-                const std::optional<double> dt =
-                    previous.least_score_of_nearest(s.pixel, match_px, path.line_set, distance, phase);
-                if (!dt) continue;
-                dts.push_back(*dt);
-                if (path.rho != 0.0f) pixels.push_back(*dt / std::abs(double(path.rho)));
-            }
-    }
+namespace {
+
+SlidingStats sliding_stats(std::vector<double>& dts, std::vector<double>& pixels) {
     const Quantiles periods = quantiles(dts), along = quantiles(pixels);
     return {.median_dt = periods.median, .p90_dt = periods.p90, .pops = periods.over_quarter,
             .median_px = along.median, .p90_px = along.p90, .pairs = dts.size()};
+}
+
+// Whether a sample of another path of `line_set` than `path` lies within `radius` of `p`.
+bool crowded(const SampleGrid& grid, glm::vec2 p, float radius, const DumpPath* path) {
+    bool found = false;
+    grid.for_each_within(p, radius, [&](const SampleGrid::Entry& e) {
+        found = found || (e.path != path && e.path->line_set == path->line_set);
+    });
+    return found;
+}
+
+}  // namespace
+
+SlidingMeasure measure_sliding(const std::vector<PathDump>& frames, float match_px) {
+    std::vector<double> dts, pixels, alone_dts, alone_pixels;
+    std::optional<SampleGrid> previous;
+    for (size_t f = 1; f < frames.size(); ++f) {
+        if (!previous) previous.emplace(frames[f - 1], std::max(match_px, 1.0f));
+        SampleGrid current(frames[f], std::max(match_px, 1.0f));
+        for (const auto& path : frames[f].paths)
+            for (const auto& s : path.samples) {
+                auto distance = [&](const SampleGrid::Entry& e) { return glm::length(e.sample().pixel - s.pixel); };
+                const SampleGrid::Entry* matched = nullptr;
+                double best_dt = 0.0;
+                auto phase = [&](const SampleGrid::Entry& e) {
+                    const double dt = wrapped_dt(s.t, e.sample().t);
+                    if (!matched || dt < best_dt) matched = &e, best_dt = dt;
+                    return dt;
+                };
+                const std::optional<double> dt =
+                    previous->least_score_of_nearest(s.pixel, match_px, path.line_set, distance, phase);
+                if (!dt) continue;
+                const double px = path.rho != 0.0f ? *dt / std::abs(double(path.rho)) : -1.0;
+                dts.push_back(*dt);
+                if (px >= 0.0) pixels.push_back(px);
+                if (crowded(current, s.pixel, match_px, &path) ||
+                    crowded(*previous, matched->sample().pixel, match_px, matched->path))
+                    continue;
+                alone_dts.push_back(*dt);
+                if (px >= 0.0) alone_pixels.push_back(px);
+            }
+        previous.emplace(std::move(current));
+    }
+    SlidingMeasure m;
+    static_cast<SlidingStats&>(m) = sliding_stats(dts, pixels);
+    m.alone = sliding_stats(alone_dts, alone_pixels);
+    return m;
 }
 
 PhaseError measure_phase_error(const PathDump& frame, const PathDump& reference, float match_px) {

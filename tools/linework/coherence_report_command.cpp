@@ -3,8 +3,10 @@
 // Reads every frame_NNNN.json of each dump folder (in frame order) and prints the two
 // measures of engine/coherence/path_dump.h for all paths, per line set and per line type:
 // sliding (median and 90th percentile of |Δt| of nearby samples in consecutive frames, and
-// the share of pops over a quarter period; with --baseline, as ratios to another render) and stretch (on-screen pixels per texture period, and the share of
-// samples inside the best factor-of-2 band). With --against REF: per frame, how far the
+// the share of pops over a quarter period; with --baseline, as ratios to another render; the
+// same again over the pairs where one path lies alone, where paths of a set run closer than the
+// match radius) and stretch (on-screen pixels per texture period, and the share of samples
+// inside the best factor-of-2 band). With --against REF: per frame, how far the
 // parameterization is from REF's dump of the same frame (a farm chunk against one render).
 #include <algorithm>
 #include <cmath>
@@ -51,6 +53,22 @@ void print_measures(const std::string& what, const Measures& m, const Measures* 
                     ratio(m.sliding.p90_dt, baseline->sliding.p90_dt), ratio(m.sliding.pops, baseline->sliding.pops),
                     ratio(m.sliding.median_px, baseline->sliding.median_px, 0.01),
                     ratio(m.sliding.p90_px, baseline->sliding.p90_px, 0.01));
+    // The pairs where one path of the group lies alone within the match radius (see
+    // SlidingMeasure::alone): where paths crowd, the measure compares neighbouring textures.
+    const SlidingStats& a = m.sliding.alone;
+    if (m.sliding.pairs > 0 && a.pairs < m.sliding.pairs) {
+        std::printf("    where one path lies alone (%.1f %% of the pairs): median |dt| %.5f, p90 %.5f periods (%.2f, %.2f px), "
+                    "pops %.3f %%\n",
+                    100.0 * double(a.pairs) / double(m.sliding.pairs), a.median_dt, a.p90_dt, a.median_px, a.p90_px,
+                    100.0 * a.pops);
+        if (baseline && baseline->sliding.alone.pairs > 0) {
+            const SlidingStats& b = baseline->sliding.alone;
+            std::printf("      against the baseline's such pairs: median %.3f, p90 %.3f, pops %.3f; in pixels: median %.3f, "
+                        "p90 %.3f\n",
+                        ratio(a.median_dt, b.median_dt), ratio(a.p90_dt, b.p90_dt), ratio(a.pops, b.pops),
+                        ratio(a.median_px, b.median_px, 0.01), ratio(a.p90_px, b.p90_px, 0.01));
+        }
+    }
 }
 
 struct ReportOptions {
