@@ -34,6 +34,7 @@
 #include "lines/extract_reference.h"
 #include "render/frame_renderer.h"
 #include "render/surface_pass.h"
+#include "scene/camera_path.h"
 #include "scene/scene.h"
 #include "stroke/slam.h"
 #include "pattern_bench.h"
@@ -53,6 +54,7 @@ struct BenchOptions {
     bool shaded = false;     // lines: toon shading under the lines (default: depth only)
     bool coherence = false;  // lines: parameterize every visible path (splat, votes, RANSAC)
     bool strokes = false;    // lines: draw silhouettes and suggestive contours as SLAM strokes (implies coherence)
+    float orbit_deg = 0.0f;  // lines: the camera's turn about the vertical per frame (0: a still view)
     lw::bench::CameraFlags camera;  // over the framing camera
     bool extract_only = false;      // lines: the host extraction alone (extract_bench.h)
     bool crossed_copy = false;      // lines --extract-only: the model and a copy crossing it
@@ -186,7 +188,13 @@ int run_lines(const BenchOptions& b) {
     Series frame_ms, frame_released, extract_gpu, extract_host, extract_wall, surface_gpu, draw_gpu, chain, visibility,
         extract_cpu;
     size_t segments = 0, paths = 0, hidden_samples = 0;
+    const lw::CameraPath orbit{.kind = lw::CameraPath::Kind::Orbit, .orbit = {.degrees = b.orbit_deg}};
+    const lw::ViewCamera base = s.scene.camera;
     for (int frame = -2; frame < b.frames; ++frame) {
+        if (b.orbit_deg != 0.0f) {  // turned frame by frame: the paths move, nothing is kept from a still view
+            s.scene.camera = lw::camera_at(orbit, base, {.progress = float(frame + 2)});
+            s.camera = lw::camera_matrices(s.scene.camera, float(s.width) / float(s.height), s.scene.bounds);
+        }
         // The frame as a caller's loop pays for it: drawn, its figures taken, and released
         // (its vertex buffers and path vectors freed), as a Python session's lines() is timed.
         lw::Timer released;
@@ -315,6 +323,10 @@ int main(int argc, char** argv) {
     CLI::App* slam_cmd = lw::bench::add_slam_bench(app, slam);
     lines_cmd->add_flag("--coherence", lines.coherence,
                         "Also parameterize every visible path coherently (splat, votes, RANSAC) and time it");
+    lines_cmd->add_option("--orbit", lines.orbit_deg,
+                          "Turn the camera this many degrees about the vertical each frame (default 0: a still view, "
+                          "where the coherent parameterization keeps the paths that did not move and fits none)")
+        ->check(CLI::Range(-360.0, 360.0));
     lines_cmd->add_flag("--strokes", lines.strokes,
                         "The whole stylized frame: silhouettes and suggestive contours as coherent SLAM strokes "
                         "(procedural dots, 6 px)");
