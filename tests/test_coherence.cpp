@@ -455,6 +455,113 @@ TEST_F(CoherenceGpu, ARestoredTrackerContinuesTheZoomedScale) {
     EXPECT_EQ(got[0].phi, expected[0].phi);
 }
 
+// A bundle of paths 1.5 px apart, every other one running the other way and each starting
+// elsewhere (the parallel silhouettes and creases of a dense model), seen by a still camera,
+// and a path alone on row 50 running towards −x, moved along x by `shift`.
+std::vector<ScreenPath> crowded_bundle(glm::vec2 size, float shift = 0.0f) {
+    std::vector<ScreenPath> paths;
+    for (int i = 0; i < 6; ++i) {
+        const float y = 20.0f + 1.5f * float(i), x0 = 10.0f + 7.0f * float(i), x1 = 180.0f - 5.0f * float(i);
+        paths.push_back(i % 2 ? still_path({x1, y}, {x0, y}, 2.0f, size) : still_path({x0, y}, {x1, y}, 2.0f, size));
+    }
+    paths.push_back(still_path({170.0f + shift, 50.0f}, {30.0f + shift, 50.0f}, 2.0f, size));
+    return paths;
+}
+
+bool same_frame(const std::vector<ScreenPath>& a, const std::vector<PathParam>& pa, const std::vector<ScreenPath>& b,
+                const std::vector<PathParam>& pb) {
+    if (a.size() != b.size() || pa.size() != pb.size()) return false;
+    for (size_t p = 0; p < a.size(); ++p) {
+        if (pa[p].rho != pb[p].rho || pa[p].phi != pb[p].phi || a[p].samples.size() != b[p].samples.size()) return false;
+        for (size_t k = 0; k < a[p].samples.size(); ++k)
+            if (a[p].samples[k].pixel != b[p].samples[k].pixel || a[p].samples[k].s != b[p].samples[k].s) return false;
+    }
+    return true;
+}
+
+// Under a still camera the same paths come every frame, but refitting crowded paths to the
+// splat blends their neighbours' T again and again (§4.1), and paths that cannot agree never
+// settle. A path equal to one of the previous frame keeps its pieces and parameters
+// (still_paths.h): from the second still frame on, the frame is a fixed point, bit for bit.
+// Without that, this bundle's phases still moved after 8 frames.
+TEST_F(CoherenceGpu, AStillViewIsAFixedPoint) {
+    const int width = 200, height = 64;
+    const glm::vec2 size(width, height);
+    for (const ComputeSite site : {ComputeSite::Host, ComputeSite::Device}) {
+        CoherenceTracker tracker(ctx(), width, height, site);
+        const CoherenceParams params{.slam_length_px = 64.0f};
+        std::vector<std::vector<ScreenPath>> frames;
+        std::vector<std::vector<PathParam>> params_of;
+        for (int frame = 0; frame < 8; ++frame) {
+            frames.push_back(crowded_bundle(size));
+            params_of.push_back(tracker.update(frames.back(), CameraMatrices{}, {}, params));
+        }
+        const char* name = site == ComputeSite::Host ? "host" : "device";
+        EXPECT_TRUE(std::ranges::all_of(params_of[1], [](const PathParam& p) { return p.fitted; })) << name;
+        for (int frame = 2; frame < 8; ++frame)
+            EXPECT_TRUE(same_frame(frames[frame], params_of[frame], frames[1], params_of[1])) << name << ", frame " << frame;
+    }
+}
+
+// T of the piece on row `y` (within 0.1 px) covering x, at x; none if no piece covers it.
+std::optional<float> t_at(const std::vector<ScreenPath>& paths, const std::vector<PathParam>& params, float y, float x) {
+    for (size_t p = 0; p < paths.size(); ++p) {
+        const std::vector<ScreenSample>& s = paths[p].samples;
+        if (s.size() < 2 || std::abs(s.front().pixel.y - y) > 0.1f) continue;
+        for (size_t k = 0; k + 1 < s.size(); ++k) {
+            const float a = s[k].pixel.x, b = s[k + 1].pixel.x;
+            if (x < std::min(a, b) || x > std::max(a, b) || a == b) continue;
+            const float along = s[k].s + (s[k + 1].s - s[k].s) * (x - a) / (b - a) - s.front().s;
+            return params[p].rho * along + params[p].phi;
+        }
+    }
+    return std::nullopt;
+}
+
+// Where one path of a still view moves, it is parameterized from the splat (its texture stays
+// put on screen as it slides along itself, as a silhouette's does) while the others keep their
+// pieces and parameters exactly; and a tracker restored from the state of a still view
+// continues it exactly.
+TEST_F(CoherenceGpu, AMovingPathAmongStillOnesAndAResumedStillView) {
+    const int width = 200, height = 64;
+    const glm::vec2 size(width, height);
+    const CoherenceParams params{.slam_length_px = 64.0f};
+    CoherenceTracker tracker(ctx(), width, height);
+    std::vector<ScreenPath> paths;
+    std::vector<PathParam> before;
+    for (int frame = 0; frame < 3; ++frame) {
+        paths = crowded_bundle(size);
+        before = tracker.update(paths, CameraMatrices{}, {}, params);
+    }
+    CoherenceTracker resumed(ctx(), width, height);
+    resumed.restore(tracker.state(), {});
+    std::vector<ScreenPath> moved = crowded_bundle(size, 3.0f), moved_again = moved;
+    const std::vector<PathParam> after = tracker.update(moved, CameraMatrices{}, {}, params);
+    // The still rows' pieces, in order: the same.
+    const float moved_row = 50.0f;
+    auto still_rows = [&](const std::vector<ScreenPath>& ps, const std::vector<PathParam>& pp) {
+        std::vector<std::tuple<float, float, float, float, size_t>> out;  // y, x, ρ, φ, samples
+        for (size_t p = 0; p < ps.size(); ++p)
+            if (std::abs(ps[p].samples.front().pixel.y - moved_row) > 0.1f)
+                out.emplace_back(ps[p].samples.front().pixel.y, ps[p].samples.front().pixel.x, pp[p].rho, pp[p].phi,
+                                 ps[p].samples.size());
+        return out;
+    };
+    EXPECT_EQ(still_rows(moved, after), still_rows(paths, before));
+    EXPECT_GE(still_rows(paths, before).size(), 5u);
+    // The moved path's T where it was: within a tenth of a pixel, over its middle.
+    size_t compared = 0;
+    for (float x = 70.0f; x <= 130.0f; x += 5.0f) {
+        const std::optional<float> was = t_at(paths, before, moved_row, x), is = t_at(moved, after, moved_row, x);
+        if (!was || !is) continue;
+        ++compared;
+        EXPECT_NEAR(*is, *was, 0.1f * std::abs(before.front().rho)) << "x " << x;
+    }
+    EXPECT_GE(compared, 10u);
+    const std::vector<PathParam> resumed_params = resumed.update(moved_again, CameraMatrices{}, {}, params);
+    EXPECT_TRUE(same_frame(moved_again, resumed_params, moved, after));
+}
+
 // On CPU devices the tracker splats and fits on the host (ComputeSite); both sites must give
 // the same parameterization, frame after frame, on a moving view of a real mesh.
 TEST_F(CoherenceGpu, HostAndDeviceSitesGiveTheSameParameterization) {

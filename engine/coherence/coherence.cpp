@@ -96,9 +96,9 @@ namespace {
 // previous frame's seam; start the loop there (at the largest jump between consecutive
 // votes) so that its votes lie on one line and the seam stays where it was on the surface,
 // instead of moving with wherever chaining happened to start the loop this frame.
-void start_loop_at_seam(ScreenPath& path, VoteSet& votes, size_t p) {
+uint32_t start_loop_at_seam(ScreenPath& path, VoteSet& votes, size_t p) {
     const uint32_t first = votes.offsets[p], last = votes.offsets[p + 1];
-    if (!path.closed || last - first < 3 || path.samples.size() < 3) return;
+    if (!path.closed || last - first < 3 || path.samples.size() < 3) return 0;
     uint32_t seam = 0;
     float jump = 0.0f;
     for (uint32_t v = first; v + 1 < last; ++v) {
@@ -109,20 +109,9 @@ void start_loop_at_seam(ScreenPath& path, VoteSet& votes, size_t p) {
         }
     }
     // Consecutive votes of a smooth parameterization differ by ρ·δ ≪ 0.25 of a period.
-    if (jump < 0.25f) return;
+    if (jump < 0.25f) return 0;
     const size_t n = path.samples.size(), start = votes.sample[seam];
-    const float closing = glm::length(path.samples.front().pixel - path.samples.back().pixel);
-    const float loop_length = path.samples.back().s - path.samples.front().s + closing;
-    const float s_start = path.samples[start].s, s0 = path.samples.front().s;
-    std::vector<ScreenSample> rotated;
-    rotated.reserve(n);
-    for (size_t i = 0; i < n; ++i) {
-        ScreenSample sample = path.samples[(start + i) % n];
-        const size_t original = (start + i) % n;
-        sample.s = s0 + (original >= start ? sample.s - s_start : sample.s - s0 + loop_length - (s_start - s0));
-        rotated.push_back(sample);
-    }
-    path.samples = std::move(rotated);
+    rotate_loop(path, start);
     for (uint32_t v = first; v < last; ++v) {
         const uint32_t k = votes.sample[v];
         const uint32_t rotated_index = uint32_t((k + n - start) % n);
@@ -137,6 +126,7 @@ void start_loop_at_seam(ScreenPath& path, VoteSet& votes, size_t p) {
         votes.sample[v] = order[v - first].first;
         votes.votes[v] = order[v - first].second;
     }
+    return uint32_t(start);
 }
 
 // A path's T(s) = ρs + φ: |ρ| the tracker's scale (update_view_scale), in the direction
@@ -394,6 +384,7 @@ void CoherenceTracker::restore(const State& state, const SurfaceFrame& surface) 
     has_previous_ = state.has_previous;
     previous_camera_ = state.camera;
     view_rho_ = state.view_rho;
+    still_ = state.still;
     if (surface.positions) previous_positions_ = *surface.positions;
     if (state.has_previous) splat_sprites(state.sprites, state.radius, nullptr);
 }
@@ -501,60 +492,130 @@ std::vector<glm::vec4> CoherenceTracker::splat_buffer() const {
     return out;
 }
 
-std::vector<PathParam> CoherenceTracker::update(std::vector<ScreenPath>& paths, const CameraMatrices& camera,
-                                                const SurfaceFrame& surface, const CoherenceParams& params,
-                                                GpuTimer* timer, VoteSet* votes_out) {
-    // Fragments too short to carry a stroke texture are not drawn, splatted or dumped.
-    std::erase_if(paths, [&](const ScreenPath& path) {
-        return path.visible && path_length(path) < params.min_stroke_length_px;
-    });
-    std::vector<PathFit> fits;
-    VoteSet votes;
-    if (params.policy == ParamPolicy::Coherent) {
-        const std::vector<Carried> carried = carry_back(paths, surface);
-        const ViewZoom view = view_zoom(carried, camera);
-        votes = gather_votes(paths, carried, view);
-        update_view_scale(votes, view.zoom, params);
-        for (size_t p = 0; p < paths.size(); ++p) start_loop_at_seam(paths[p], votes, p);
-        // RANSAC's fit finds each path's direction along the previous parameterization and the
-        // runs of votes that disagree with it (pieces of paths that were apart a frame earlier).
-        fits = fitter_.fit(votes, params.ransac);
-        split_merged_paths(paths, votes, fits, params.ransac, params.splat_radius_px, fitter_);
-    } else {
-        view_rho_ = 0.0f;  // back to the coherent policy, the scale starts afresh with the splat's T
-    }
+namespace {
+
+// The tiling and stretching policies: ρ from the texture length or the path length, φ = 0.
+std::vector<PathParam> fixed_params(const std::vector<ScreenPath>& paths, const CoherenceParams& params) {
     std::vector<PathParam> out(paths.size());
     for (size_t p = 0; p < paths.size(); ++p) {
         PathParam& param = out[p];
         param.length_px = path_length(paths[p]);
-        const float stretch_rho = param.length_px > 0.0f ? 1.0f / param.length_px : 1.0f;
-        switch (params.policy) {
-            case ParamPolicy::Coherent:
-                param.votes = fits[p].votes;
-                param_from_scale(param, fits[p], votes, p, view_rho_, params.ransac.inlier_px);
-                // Only a SLAM has levels to fold into; a set without one (plain lines, dashes,
-                // displacement: modifiers read ρ and φ) samples no texture along u, and
-                // folding it would only flip u's scale between 1 and 2 as ρ, held at the
-                // tiling scale ρ0 where the level changes, rounds either way.
-                param.fold = params.slam_levels ? fold_slam_level(param.rho, params.length_scale, params.slam_length_px)
-                                                : SlamFold{};
-                break;
-            case ParamPolicy::Arclength:  // tiling: one period per texture length on screen
-                param.rho = params.length_scale / params.slam_length_px;
-                param.fold = SlamFold{};
-                break;
-            case ParamPolicy::Stretch:  // the whole texture stretched over the path
-                param.rho = stretch_rho;
-                param.fold = SlamFold{};
-                break;
-        }
+        if (params.policy == ParamPolicy::Stretch)  // the whole texture stretched over the path
+            param.rho = param.length_px > 0.0f ? 1.0f / param.length_px : 1.0f;
+        else  // tiling: one period per texture length on screen
+            param.rho = params.length_scale / params.slam_length_px;
     }
-    if (votes_out) *votes_out = std::move(votes);
+    return out;
+}
+
+bool same_camera(const CameraMatrices& a, const CameraMatrices& b) {
+    return a.view == b.view && a.proj == b.proj && a.view_proj == b.view_proj && a.znear == b.znear && a.zfar == b.zfar;
+}
+
+}  // namespace
+
+std::vector<PathParam> CoherenceTracker::update(std::vector<ScreenPath>& paths, const CameraMatrices& camera,
+                                                const SurfaceFrame& surface, const CoherenceParams& params,
+                                                GpuTimer* timer) {
+    // Fragments too short to carry a stroke texture are not drawn, splatted or dumped.
+    std::erase_if(paths, [&](const ScreenPath& path) {
+        return path.visible && path_length(path) < params.min_stroke_length_px;
+    });
+    std::vector<PathParam> out;
+    if (params.policy != ParamPolicy::Coherent) {
+        view_rho_ = 0.0f;  // back to the coherent policy, the scale starts afresh with the splat's T
+        still_ = {};
+        out = fixed_params(paths, params);
+    } else if (has_previous_ && same_camera(camera, previous_camera_)) {
+        out = update_still_view(paths, camera, surface, params);
+    } else {
+        still_ = {};  // a moving view: no path is where it was
+        out = parameterize(paths, camera, surface, params, nullptr, nullptr);
+    }
     splat(paths, out, params.splat_radius_px, timer);
     has_previous_ = true;
     previous_camera_ = camera;
     if (surface.positions) previous_positions_ = *surface.positions;
     return out;
 }
+
+std::vector<PathParam> CoherenceTracker::parameterize(std::vector<ScreenPath>& paths, const CameraMatrices& camera,
+                                                      const SurfaceFrame& surface, const CoherenceParams& params,
+                                                      std::vector<PieceOrigin>* origins,
+                                                      std::vector<uint32_t>* rotations) {
+    const std::vector<Carried> carried = carry_back(paths, surface);
+    const ViewZoom view = view_zoom(carried, camera);
+    VoteSet votes = gather_votes(paths, carried, view);
+    update_view_scale(votes, view.zoom, params);
+    if (rotations) rotations->assign(paths.size(), 0);
+    for (size_t p = 0; p < paths.size(); ++p) {
+        const uint32_t start = start_loop_at_seam(paths[p], votes, p);
+        if (rotations) (*rotations)[p] = start;
+    }
+    // RANSAC's fit finds each path's direction along the previous parameterization and the
+    // runs of votes that disagree with it (pieces of paths that were apart a frame earlier).
+    std::vector<PathFit> fits;
+    if (!paths.empty()) fits = fitter_.fit(votes, params.ransac);
+    split_merged_paths(paths, votes, fits, params.ransac, params.splat_radius_px, fitter_, origins);
+    std::vector<PathParam> out(paths.size());
+    for (size_t p = 0; p < paths.size(); ++p) {
+        PathParam& param = out[p];
+        param.length_px = path_length(paths[p]);
+        param.votes = fits[p].votes;
+        param_from_scale(param, fits[p], votes, p, view_rho_, params.ransac.inlier_px);
+        // Only a SLAM has levels to fold into; a set without one (plain lines, dashes,
+        // displacement: modifiers read ρ and φ) samples no texture along u, and folding it
+        // would only flip u's scale between 1 and 2 as ρ, held at the tiling scale ρ0 where
+        // the level changes, rounds either way.
+        param.fold = params.slam_levels ? fold_slam_level(param.rho, params.length_scale, params.slam_length_px)
+                                        : SlamFold{};
+    }
+    return out;
+}
+
+std::vector<PathParam> CoherenceTracker::update_still_view(std::vector<ScreenPath>& paths, const CameraMatrices& camera,
+                                                           const SurfaceFrame& surface, const CoherenceParams& params) {
+    std::vector<uint64_t> keys(paths.size());
+    std::vector<const StillPath*> kept(paths.size());
+    std::vector<ScreenPath> fresh;
+    for (size_t p = 0; p < paths.size(); ++p) {
+        keys[p] = still_path_key(paths[p]);
+        kept[p] = find_still_path(still_, keys[p]);
+        if (!kept[p]) fresh.push_back(std::move(paths[p]));
+    }
+    std::vector<PieceOrigin> origins;
+    std::vector<uint32_t> rotations;
+    const std::vector<PathParam> fresh_params = parameterize(fresh, camera, surface, params, &origins, &rotations);
+    // Every path in its place with its pieces in order, as parameterize would have left them,
+    // and this frame's record.
+    StillRecord record;
+    std::vector<ScreenPath> pieces;
+    std::vector<PathParam> out;
+    size_t f = 0, piece = 0;  // the next moved path, and its first piece
+    for (size_t p = 0; p < paths.size(); ++p) {
+        StillPath entry{.key = keys[p], .first_piece = uint32_t(record.pieces.size())};
+        const size_t before = out.size();
+        if (kept[p]) {
+            entry.rotation = kept[p]->rotation;
+            append_still_pieces(std::move(paths[p]), *kept[p], still_, pieces, out);
+            for (uint32_t i = 0; i < kept[p]->pieces; ++i) record.pieces.push_back(still_.pieces[kept[p]->first_piece + i]);
+        } else {
+            entry.rotation = rotations[f];
+            for (; piece < fresh.size() && origins[piece].path == f; ++piece) {
+                record.pieces.push_back({origins[piece].first, origins[piece].count, fresh_params[piece]});
+                pieces.push_back(std::move(fresh[piece]));
+                out.push_back(fresh_params[piece]);
+            }
+            ++f;
+        }
+        entry.pieces = uint32_t(out.size() - before);
+        record.paths.push_back(entry);
+    }
+    index_still_record(record);
+    still_ = std::move(record);
+    paths = std::move(pieces);
+    return out;
+}
+
 
 }  // namespace lw

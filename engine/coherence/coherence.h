@@ -29,9 +29,12 @@
 
 #include <glm/glm.hpp>
 
+#include "coherence/path_param.h"
+#include "coherence/path_split.h"
 #include "coherence/ransac.h"
 #include "coherence/ransac_gpu.h"
 #include "coherence/splat_grid.h"
+#include "coherence/still_paths.h"
 #include "gpu/context.h"
 #include "gpu/pipeline.h"
 #include "gpu/resources.h"
@@ -58,15 +61,6 @@ struct CoherenceParams {
     // their lengths on screen are as given.
     bool slam_levels = true;
     RansacParams ransac;
-};
-
-struct PathParam {
-    float rho = 0.0f;
-    float phi = 0.0f;
-    uint32_t votes = 0;
-    bool fitted = false;  // from votes (coherent policy); false: a fallback or another policy
-    SlamFold fold;        // level and the coordinate scale actually sampled
-    float length_px = 0.0f;
 };
 
 // Paths with their parameterization (a vector layer's frame, for dumps).
@@ -112,16 +106,18 @@ public:
     // removed, closed loops may be rotated to start at the seam they
     // inherited, and paths that merged pieces of different earlier paths split (see
     // path_split.h), so `paths` may change; the result has one entry per path after.
-    // `votes_out` (optional) receives the votes used. `timer` (optional) gets "ransac" and
+    // Under the previous frame's camera, a path equal to one of that frame keeps its pieces and
+    // parameters (still_paths.h). `timer` (optional) gets "ransac" and
     // "splat" on the device site; on the host site, and for an empty splat, it is not used.
     [[nodiscard]] std::vector<PathParam> update(std::vector<ScreenPath>& paths, const CameraMatrices& camera,
                                                 const SurfaceFrame& surface, const CoherenceParams& params,
-                                                GpuTimer* timer = nullptr, VoteSet* votes_out = nullptr);
+                                                GpuTimer* timer = nullptr);
 
     // Forgets the previous frame (a cut).
     void reset() {
         has_previous_ = false;
         view_rho_ = 0.0f;
+        still_ = {};
     }
 
     // What the next update() needs of the frames before it, small enough to keep beside an
@@ -134,8 +130,11 @@ public:
         float radius = 0.0f;
         std::vector<glm::vec3> sprites;  // x, y in pixels; T
         float view_rho = 0.0f;  // the scale of every path, carried through the view's zoom (0: not set)
+        StillRecord still;      // the last frame's paths, under a still camera (still_paths.h)
     };
-    [[nodiscard]] State state() const { return {has_previous_, previous_camera_, last_radius_, last_sprites_, view_rho_}; }
+    [[nodiscard]] State state() const {
+        return {has_previous_, previous_camera_, last_radius_, last_sprites_, view_rho_, still_};
+    }
     // Splats the state's sprites again (the same buffer, bit for bit, on the same device and
     // compute site).
     void restore(const State& state, const SurfaceFrame& surface);
@@ -162,6 +161,17 @@ private:
     // The votes of the carried samples, each line type moved as the comments there say.
     [[nodiscard]] VoteSet gather_votes(const std::vector<ScreenPath>& paths, const std::vector<Carried>& carried,
                                        const ViewZoom& view) const;
+    // The coherent policy's votes, fit and splits for `paths` (in place: loops rotated, merged
+    // paths split); per path after, its parameters. `origins` (optional): where each piece
+    // came from; `rotations` (optional, per path before): where its loop was made to start.
+    [[nodiscard]] std::vector<PathParam> parameterize(std::vector<ScreenPath>& paths, const CameraMatrices& camera,
+                                                      const SurfaceFrame& surface, const CoherenceParams& params,
+                                                      std::vector<PieceOrigin>* origins,
+                                                      std::vector<uint32_t>* rotations);
+    // Under the previous frame's camera: the paths that did not move keep their pieces and
+    // parameters, the others are parameterized; the record for the next frame is kept.
+    [[nodiscard]] std::vector<PathParam> update_still_view(std::vector<ScreenPath>& paths, const CameraMatrices& camera,
+                                                           const SurfaceFrame& surface, const CoherenceParams& params);
     // The set's scale (every path's |ρ|), carried through the view's zoom.
     void update_view_scale(VoteSet& votes, float zoom, const CoherenceParams& params);
     void splat(const std::vector<ScreenPath>& paths, const std::vector<PathParam>& params, float radius,
@@ -187,6 +197,7 @@ private:
     std::vector<glm::vec3> last_sprites_;  // what made it (state())
     float last_radius_ = 0.0f;
     float view_rho_ = 0.0f;  // ρ of every path (0: not set yet)
+    StillRecord still_;      // the last frame's paths, when its camera was the one before it
 };
 
 }  // namespace lw

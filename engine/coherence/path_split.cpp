@@ -107,10 +107,11 @@ uint32_t min_end_run(const ScreenPath& path, float splat_radius_px) {
 // is a piece fitted on its own (the next round looks at those).
 std::vector<bool> split_round(std::vector<ScreenPath>& paths, VoteSet& votes, std::vector<PathFit>& fits,
                               const RansacParams& ransac, float splat_radius_px, const std::vector<bool>& examine,
-                              const RansacFitter& fitter) {
+                              const RansacFitter& fitter, std::vector<PieceOrigin>& origins) {
     std::vector<ScreenPath> out_paths;
     VoteSet out_votes;
     std::vector<PathFit> out_fits;
+    std::vector<PieceOrigin> out_origins;
     std::vector<size_t> refit;  // pieces fitted on their own below
     // Samples [from, to] of path p (every piece leaves open); a whole path's samples are moved.
     auto add_piece = [&](ScreenPath& path, size_t p, size_t from, size_t to, const PathFit* keep) {
@@ -132,6 +133,7 @@ std::vector<bool> split_round(std::vector<ScreenPath>& paths, VoteSet& votes, st
             fit.phi = keep->phi + keep->rho * shift;
         else
             refit.push_back(out_paths.size());
+        out_origins.push_back({origins[p].path, origins[p].first + uint32_t(from), uint32_t(to + 1 - from)});
         out_paths.push_back(std::move(piece));
         out_fits.push_back(fit);
     };
@@ -173,6 +175,7 @@ std::vector<bool> split_round(std::vector<ScreenPath>& paths, VoteSet& votes, st
     paths = std::move(out_paths);
     votes = std::move(out_votes);
     fits = std::move(out_fits);
+    origins = std::move(out_origins);
     std::vector<bool> fitted_alone(paths.size(), false);
     for (size_t i : refit) fitted_alone[i] = true;
     return fitted_alone;
@@ -181,13 +184,17 @@ std::vector<bool> split_round(std::vector<ScreenPath>& paths, VoteSet& votes, st
 }  // namespace
 
 void split_merged_paths(std::vector<ScreenPath>& paths, VoteSet& votes, std::vector<PathFit>& fits,
-                        const RansacParams& ransac, float splat_radius_px, const RansacFitter& fitter) {
+                        const RansacParams& ransac, float splat_radius_px, const RansacFitter& fitter,
+                        std::vector<PieceOrigin>* origins) {
     // A path joining n earlier ones needs at most n − 1 rounds; more than 9 pieces of
     // different earlier paths in one path is rarer than the cost of looking again.
     constexpr int kRounds = 8;
+    std::vector<PieceOrigin> from(paths.size());
+    for (size_t p = 0; p < paths.size(); ++p) from[p] = {uint32_t(p), 0, uint32_t(paths[p].samples.size())};
     std::vector<bool> examine(paths.size(), true);
     for (int round = 0; round < kRounds && std::ranges::find(examine, true) != examine.end(); ++round)
-        examine = split_round(paths, votes, fits, ransac, splat_radius_px, examine, fitter);
+        examine = split_round(paths, votes, fits, ransac, splat_radius_px, examine, fitter, from);
+    if (origins) *origins = std::move(from);
 }
 
 }  // namespace lw

@@ -19,7 +19,14 @@
 
 namespace lw {
 
+// Where a piece came from: samples [first, first + count) of path `path` of the input.
+struct PieceOrigin {
+    uint32_t path, first, count;
+};
+
+// `origins` (optional) receives each piece's origin.
 void split_merged_paths(std::vector<ScreenPath>& paths, VoteSet& votes, std::vector<PathFit>& fits,
-                        const RansacParams& ransac, float splat_radius_px, const RansacFitter& fitter);
+                        const RansacParams& ransac, float splat_radius_px, const RansacFitter& fitter,
+                        std::vector<PieceOrigin>* origins = nullptr);
 
 }  // namespace lw

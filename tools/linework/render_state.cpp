@@ -1,7 +1,9 @@
 #include "render_state.h"
 
 #include <cstdio>
+#include <algorithm>
 #include <cstring>
+#include <type_traits>
 #include <fstream>
 #include <iterator>
 #include <vector>
@@ -13,8 +15,8 @@ namespace lw::cli {
 namespace {
 
 // 2: one tracker per line set; 3: the line mesh's pose; 4: the view scale of the coherent
-// parameterization.
-constexpr char kMagic[8] = {'L', 'W', 'S', 'T', 'A', 'T', 'E', '4'};
+// parameterization; 5: the paths of a still view (still_paths.h).
+constexpr char kMagic[8] = {'L', 'W', 'S', 'T', 'A', 'T', 'E', '5'};
 
 class Writer {
 public:
@@ -47,11 +49,16 @@ public:
         return n;
     }
 
+    const std::string& where() const { return where_; }
+
 private:
     std::vector<char> bytes_;
     std::string where_;
     size_t at_ = 0;
 };
+
+static_assert(std::is_trivially_copyable_v<StillPath> && std::is_trivially_copyable_v<StillPiece>,
+              "still records are written as bytes");
 
 void put_state(Writer& w, const std::optional<CoherenceTracker::State>& state) {
     w.put<uint8_t>(state ? 1 : 0);
@@ -62,6 +69,10 @@ void put_state(Writer& w, const std::optional<CoherenceTracker::State>& state) {
     w.put(uint32_t(state->sprites.size()));
     w.put_bytes(state->sprites.data(), state->sprites.size() * sizeof(glm::vec3));
     w.put(state->view_rho);
+    w.put(uint32_t(state->still.paths.size()));
+    w.put_bytes(state->still.paths.data(), state->still.paths.size() * sizeof(StillPath));
+    w.put(uint32_t(state->still.pieces.size()));
+    w.put_bytes(state->still.pieces.data(), state->still.pieces.size() * sizeof(StillPiece));
 }
 
 std::optional<CoherenceTracker::State> get_state(Reader& r) {
@@ -73,6 +84,15 @@ std::optional<CoherenceTracker::State> get_state(Reader& r) {
     state.sprites.resize(r.count(sizeof(glm::vec3)));
     r.get_bytes(state.sprites.data(), state.sprites.size() * sizeof(glm::vec3));
     state.view_rho = r.get<float>();
+    state.still.paths.resize(r.count(sizeof(StillPath)));
+    r.get_bytes(state.still.paths.data(), state.still.paths.size() * sizeof(StillPath));
+    state.still.pieces.resize(r.count(sizeof(StillPiece)));
+    r.get_bytes(state.still.pieces.data(), state.still.pieces.size() * sizeof(StillPiece));
+    for (const StillPath& path : state.still.paths)
+        if (size_t(path.first_piece) + path.pieces > state.still.pieces.size())
+            throw Error(r.where() + ": corrupt render state (a still path's pieces lie past the record)");
+    if (!std::ranges::is_sorted(state.still.paths, {}, &StillPath::key))
+        throw Error(r.where() + ": corrupt render state (still paths out of order)");
     return state;
 }
 

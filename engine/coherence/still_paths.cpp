@@ -1,0 +1,80 @@
+#include "coherence/still_paths.h"
+
+#include <algorithm>
+#include <bit>
+#include <cstring>
+
+namespace lw {
+
+namespace {
+
+// One step of a 64-bit multiply-xorshift mix (the finalizer of SplitMix64) per word: every
+// input bit reaches every output bit, so paths a rounding apart get unrelated keys.
+uint64_t mix(uint64_t h, uint64_t word) {
+    h ^= word + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2);
+    h ^= h >> 30;
+    h *= 0xbf58476d1ce4e5b9ull;
+    h ^= h >> 27;
+    h *= 0x94d049bb133111ebull;
+    return h ^ (h >> 31);
+}
+
+uint64_t bits(float a, float b) {
+    return uint64_t(std::bit_cast<uint32_t>(a)) << 32 | std::bit_cast<uint32_t>(b);
+}
+
+}  // namespace
+
+uint64_t still_path_key(const ScreenPath& path) {
+    uint64_t h = mix(0, uint64_t(path.type) << 2 | uint64_t(path.closed) << 1 | uint64_t(path.visible));
+    h = mix(h, path.samples.size());
+    for (const ScreenSample& s : path.samples) {
+        h = mix(h, bits(s.pixel.x, s.pixel.y));
+        h = mix(h, bits(s.s, s.position.x));
+        h = mix(h, bits(s.position.y, s.position.z));
+    }
+    return h;
+}
+
+const StillPath* find_still_path(const StillRecord& record, uint64_t key) {
+    const auto it = std::ranges::lower_bound(record.paths, key, {}, &StillPath::key);
+    return it != record.paths.end() && it->key == key ? &*it : nullptr;
+}
+
+void rotate_loop(ScreenPath& path, size_t start) {
+    const size_t n = path.samples.size();
+    if (start == 0 || start >= n) return;
+    const float closing = glm::length(path.samples.front().pixel - path.samples.back().pixel);
+    const float loop_length = path.samples.back().s - path.samples.front().s + closing;
+    const float s_start = path.samples[start].s, s0 = path.samples.front().s;
+    std::vector<ScreenSample> rotated;
+    rotated.reserve(n);
+    for (size_t i = 0; i < n; ++i) {
+        const size_t original = (start + i) % n;
+        ScreenSample sample = path.samples[original];
+        sample.s = s0 + (original >= start ? sample.s - s_start : sample.s - s0 + loop_length - (s_start - s0));
+        rotated.push_back(sample);
+    }
+    path.samples = std::move(rotated);
+}
+
+void append_still_pieces(ScreenPath&& path, const StillPath& recorded, const StillRecord& record,
+                         std::vector<ScreenPath>& paths, std::vector<PathParam>& params) {
+    rotate_loop(path, recorded.rotation);
+    for (uint32_t i = recorded.first_piece; i < recorded.first_piece + recorded.pieces; ++i) {
+        const StillPiece& piece = record.pieces[i];
+        // As path_split's pieces: open, the other fields kept.
+        ScreenPath out{.type = path.type, .closed = false, .visible = path.visible, .qi = path.qi, .source = path.source};
+        const size_t first = std::min<size_t>(piece.first, path.samples.size());
+        const size_t last = std::min<size_t>(size_t(piece.first) + piece.count, path.samples.size());
+        out.samples.assign(path.samples.begin() + std::ptrdiff_t(first), path.samples.begin() + std::ptrdiff_t(last));
+        paths.push_back(std::move(out));
+        params.push_back(piece.param);
+    }
+}
+
+void index_still_record(StillRecord& record) {
+    std::ranges::stable_sort(record.paths, {}, &StillPath::key);
+}
+
+}  // namespace lw
