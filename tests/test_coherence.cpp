@@ -357,7 +357,7 @@ TEST(Coherence, SlidingReportsThePairsWhereOnePathLiesAlone) {
         const float swap = f % 2 ? 0.4f : 0.0f;
         return PathDump{.frame = f,
                         .paths = {line("a", 5.0f, swap), line("a", 6.0f, 0.4f - swap), line("a", 40.0f, 0.2f),
-                                  line("b", 41.0f, 0.3f * float(f))}};
+                                  line("b", 41.0f, 0.3f)}};
     };
     const std::vector<PathDump> frames{frame(0), frame(1), frame(2)};
     const SlidingMeasure a = measure_sliding(paths_of_line_set(frames, "a"));
@@ -366,6 +366,11 @@ TEST(Coherence, SlidingReportsThePairsWhereOnePathLiesAlone) {
     EXPECT_EQ(a.alone.pairs, 2u * 21u);
     EXPECT_EQ(a.alone.pops, 0.0);
     EXPECT_EQ(a.alone.p90_dt, 0.0);
+    // Both sets at once: the "b" path 1 px from the lone "a" path crowds neither.
+    const SlidingMeasure both = measure_sliding(frames);
+    EXPECT_EQ(both.pairs, 2u * 4u * 21u);
+    EXPECT_EQ(both.alone.pairs, 2u * 2u * 21u);
+    EXPECT_EQ(both.alone.pops, 0.0);
 }
 
 // A camera that scales the image about its centre by `zoom`.
@@ -560,6 +565,55 @@ TEST_F(CoherenceGpu, AMovingPathAmongStillOnesAndAResumedStillView) {
     EXPECT_GE(compared, 10u);
     const std::vector<PathParam> resumed_params = resumed.update(moved_again, CameraMatrices{}, {}, params);
     EXPECT_TRUE(same_frame(moved_again, resumed_params, moved, after));
+}
+
+// A closed loop whose chaining starts it elsewhere than its seam is rotated to start at the
+// seam; kept under a still camera, it is rotated the same way again (the loop's pieces are cut
+// from the rotated samples), and a set edited under the still camera keeps nothing: its paths
+// take the set's new scale.
+TEST_F(CoherenceGpu, AStillLoopKeepsItsSeamAndAnEditedSetKeepsNothing) {
+    const int width = 200, height = 100;
+    const glm::vec2 size(width, height);
+    // The loop of 120 samples around (100, 50), starting at sample `start`.
+    auto loop = [&](size_t start) {
+        ScreenPath path{.type = LineType::Silhouette, .closed = true, .visible = true};
+        const float r = 40.0f, step = 2.0f * std::numbers::pi_v<float> / 120.0f;
+        for (size_t i = 0; i < 120; ++i) {
+            const float a = step * float((start + i) % 120);
+            const glm::vec2 pixel = glm::vec2(100.0f, 50.0f) + r * glm::vec2(std::cos(a), std::sin(a));
+            path.samples.push_back(ScreenSample{.pixel = pixel, .depth = 1.0f, .s = r * step * float(i),
+                                                .position = glm::vec3(pixel / size * 2.0f - 1.0f, 0.5f), .face = 0,
+                                                .bary = glm::vec3(1, 0, 0), .alpha = 1.0f});
+        }
+        return path;
+    };
+    for (const ComputeSite site : {ComputeSite::Host, ComputeSite::Device}) {
+        const char* name = site == ComputeSite::Host ? "host" : "device";
+        CoherenceTracker tracker(ctx(), width, height, site);
+        CoherenceParams params{.slam_length_px = 64.0f};
+        std::vector<ScreenPath> first{loop(0)};
+        (void)tracker.update(first, CameraMatrices{}, {}, params);
+        std::vector<std::vector<ScreenPath>> frames;
+        std::vector<std::vector<PathParam>> fitted;
+        for (int frame = 0; frame < 3; ++frame) {  // chaining now starts the loop at sample 40
+            frames.push_back({loop(40)});
+            fitted.push_back(tracker.update(frames.back(), CameraMatrices{}, {}, params));
+        }
+        ASSERT_FALSE(frames[0].empty()) << name;
+        // Started at the seam it inherited, not at sample 40.
+        EXPECT_NE(frames[0][0].samples.front().pixel, loop(40).samples.front().pixel) << name;
+        EXPECT_TRUE(same_frame(frames[1], fitted[1], frames[0], fitted[0])) << name;
+        EXPECT_TRUE(same_frame(frames[2], fitted[2], frames[0], fitted[0])) << name;
+
+        params.slam_length_px = 256.0f;  // the set's texture edited under the same camera
+        std::vector<ScreenPath> edited{loop(40)};
+        const std::vector<PathParam> after = tracker.update(edited, CameraMatrices{}, {}, params);
+        ASSERT_FALSE(after.empty()) << name;
+        for (const PathParam& p : after) {
+            EXPECT_EQ(std::abs(p.rho), tracker.state().view_rho) << name;
+            EXPECT_NE(std::abs(p.rho), std::abs(fitted[0][0].rho)) << name;
+        }
+    }
 }
 
 // On CPU devices the tracker splats and fits on the host (ComputeSite); both sites must give

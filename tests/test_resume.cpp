@@ -1,7 +1,10 @@
 // Offline renders: Ctrl-C stops after the frame in hand, --resume goes on from the saved
 // parameterization and gives the frames of an unbroken run (also when the last frame's
 // state was lost to a kill); nothing is left half-written.
+#include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -77,6 +80,43 @@ TEST(Resume, InterruptedAndResumedSequenceEqualsAnUnbrokenOne) {
     EXPECT_EQ(other.exit_code, 1) << other.output;
     EXPECT_NE(other.output.find(".linework-state: written by a render with other options"), std::string::npos)
         << other.output;
+}
+
+// A still camera on a dense model: the paths kept from frame to frame (still_paths.h) travel
+// in the saved state, so a part started from it gives the unbroken run's paths, and the same
+// render saves the same state bytes (no padding written).
+TEST(Resume, AStillShotStartedFromItsStateEqualsAnUnbrokenOne) {
+    const fs::path dir = test::temp_dir();
+    // --dump-paths is part of what a state is saved with (its folder too): one folder for all.
+    const std::string args = test::quote(test::data_dir() / "models/FlightHelmet/FlightHelmet.gltf") +
+                             " --device cpu --size 160x120 --frames 0:7 --slam " +
+                             test::quote(test::source_dir() / "scenes/slams/dots.exr") + " --dump-paths " +
+                             test::quote(dir / "dump");
+    for (const char* states : {"s1", "s2"})
+        ASSERT_EQ(test::run_linework("render " + args + " --state-only --chunk 4 --save-states " + test::quote(dir / states))
+                      .exit_code,
+                  0);
+    const auto bytes = [](const fs::path& file) {
+        std::ifstream in(file, std::ios::binary);
+        return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    };
+    const std::string state = bytes(dir / "s1/state_0004.lwstate");
+    EXPECT_GT(state.size(), 1000u);
+    EXPECT_TRUE(state == bytes(dir / "s2/state_0004.lwstate"));
+
+    const auto whole = test::run_linework("render " + args + " -o " + test::quote(dir / "whole"));
+    ASSERT_EQ(whole.exit_code, 0) << whole.output;
+    fs::rename(dir / "dump", dir / "whole_dump");
+    const auto part = test::run_linework("render " + args + " --part 4:7 -o " + test::quote(dir / "part") +
+                                         " --start-state " + test::quote(dir / "s1/state_0004.lwstate"));
+    ASSERT_EQ(part.exit_code, 0) << part.output;
+    for (int f = 4; f <= 7; ++f) {
+        char name[32];
+        std::snprintf(name, sizeof name, "frame_%04d.json", f);
+        const std::string expected = bytes(dir / "whole_dump" / name);
+        EXPECT_GT(expected.size(), 1000u) << name;
+        EXPECT_TRUE(bytes(dir / "dump" / name) == expected) << name;
+    }
 }
 
 }  // namespace

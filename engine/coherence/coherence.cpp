@@ -3,6 +3,7 @@
 #include <span>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstring>
 #include <numbers>
@@ -156,22 +157,6 @@ void param_from_scale(PathParam& param, const PathFit& fit, const VoteSet& votes
 
 namespace {
 
-// Adds sprites (centre x, y in pixels; T) of radius δ into `buffer` (width × height), in
-// order, the weights the GPU splat's fragment stage computes at pixel centres.
-void splat_into(std::span<const glm::vec3> sprites, float radius, int width, int height, std::vector<glm::vec4>& buffer) {
-    for (const glm::vec3& sprite : sprites) {
-        const glm::vec2 c(sprite);
-        const SpriteBox box = sprite_box(c, radius, width, height);
-        for (int y = box.y0; y <= box.y1; ++y)
-            for (int x = box.x0; x <= box.x1; ++x) {
-                const glm::vec2 pixel(float(x) + 0.5f, float(y) + 0.5f);
-                const float w = sprite_weight(pixel, c, radius);
-                if (w <= 0.0f) continue;
-                buffer[size_t(y) * size_t(width) + size_t(x)] += glm::vec4(w * sprite.z, w, w * (c - pixel));
-            }
-    }
-}
-
 std::vector<glm::vec3> sprites_of(const std::vector<ScreenPath>& paths, const std::vector<PathParam>& params) {
     std::vector<glm::vec3> sprites;
     for (size_t p = 0; p < paths.size(); ++p) {
@@ -188,7 +173,7 @@ std::vector<glm::vec3> sprites_of(const std::vector<ScreenPath>& paths, const st
 std::vector<glm::vec4> splat_reference(const std::vector<ScreenPath>& paths, const std::vector<PathParam>& params,
                                        int width, int height, float radius) {
     std::vector<glm::vec4> buffer(size_t(width) * height, glm::vec4(0.0f));
-    splat_into(sprites_of(paths, params), radius, width, height, buffer);
+    add_sprites(sprites_of(paths, params), radius, width, height, buffer);
     return buffer;
 }
 
@@ -508,6 +493,18 @@ std::vector<PathParam> fixed_params(const std::vector<ScreenPath>& paths, const 
     return out;
 }
 
+// What a kept path's pieces and parameters were made with besides its samples: the set's
+// settings and scale (the view's ρ).
+uint64_t settings_key(const CoherenceParams& p, float view_rho) {
+    uint64_t h = 0;
+    for (const float v : {p.splat_radius_px, p.length_scale, p.slam_length_px, p.min_stroke_length_px,
+                          p.ransac.outlier_ratio, p.ransac.target_probability, p.ransac.inlier_px, view_rho})
+        h = still_key_step(h, std::bit_cast<uint32_t>(v));
+    for (const uint32_t v : {uint32_t(p.policy), uint32_t(p.slam_levels), p.ransac.max_iterations, p.ransac.seed})
+        h = still_key_step(h, v);
+    return h;
+}
+
 bool same_camera(const CameraMatrices& a, const CameraMatrices& b) {
     return a.view == b.view && a.proj == b.proj && a.view_proj == b.view_proj && a.znear == b.znear && a.zfar == b.zfar;
 }
@@ -575,47 +572,23 @@ std::vector<PathParam> CoherenceTracker::parameterize(std::vector<ScreenPath>& p
 
 std::vector<PathParam> CoherenceTracker::update_still_view(std::vector<ScreenPath>& paths, const CameraMatrices& camera,
                                                            const SurfaceFrame& surface, const CoherenceParams& params) {
+    // The pieces and parameters were made with the set's settings and scale: a set edited
+    // under a still camera (the viewer's panel, a Python script) keeps none.
+    if (still_.settings != settings_key(params, view_rho_)) still_ = {};
     std::vector<uint64_t> keys(paths.size());
     std::vector<const StillPath*> kept(paths.size());
-    std::vector<ScreenPath> fresh;
+    MovedPaths moved;
     for (size_t p = 0; p < paths.size(); ++p) {
         keys[p] = still_path_key(paths[p]);
         kept[p] = find_still_path(still_, keys[p]);
-        if (!kept[p]) fresh.push_back(std::move(paths[p]));
+        if (!kept[p]) moved.pieces.push_back(std::move(paths[p]));
     }
-    std::vector<PieceOrigin> origins;
-    std::vector<uint32_t> rotations;
-    const std::vector<PathParam> fresh_params = parameterize(fresh, camera, surface, params, &origins, &rotations);
-    // Every path in its place with its pieces in order, as parameterize would have left them,
-    // and this frame's record.
-    StillRecord record;
-    std::vector<ScreenPath> pieces;
+    moved.params = parameterize(moved.pieces, camera, surface, params, &moved.origins, &moved.rotations);
     std::vector<PathParam> out;
-    size_t f = 0, piece = 0;  // the next moved path, and its first piece
-    for (size_t p = 0; p < paths.size(); ++p) {
-        StillPath entry{.key = keys[p], .first_piece = uint32_t(record.pieces.size())};
-        const size_t before = out.size();
-        if (kept[p]) {
-            entry.rotation = kept[p]->rotation;
-            append_still_pieces(std::move(paths[p]), *kept[p], still_, pieces, out);
-            for (uint32_t i = 0; i < kept[p]->pieces; ++i) record.pieces.push_back(still_.pieces[kept[p]->first_piece + i]);
-        } else {
-            entry.rotation = rotations[f];
-            for (; piece < fresh.size() && origins[piece].path == f; ++piece) {
-                record.pieces.push_back({origins[piece].first, origins[piece].count, fresh_params[piece]});
-                pieces.push_back(std::move(fresh[piece]));
-                out.push_back(fresh_params[piece]);
-            }
-            ++f;
-        }
-        entry.pieces = uint32_t(out.size() - before);
-        record.paths.push_back(entry);
-    }
-    index_still_record(record);
+    StillRecord record = assemble_still_frame(paths, keys, kept, still_, moved, out);
+    record.settings = settings_key(params, view_rho_);
     still_ = std::move(record);
-    paths = std::move(pieces);
     return out;
 }
-
 
 }  // namespace lw

@@ -106,8 +106,9 @@ public:
     // removed, closed loops may be rotated to start at the seam they
     // inherited, and paths that merged pieces of different earlier paths split (see
     // path_split.h), so `paths` may change; the result has one entry per path after.
-    // Under the previous frame's camera, a path equal to one of that frame keeps its pieces and
-    // parameters (still_paths.h). `timer` (optional) gets "ransac" and
+    // Under the previous frame's camera and with the same `params` (and scale), a path equal to
+    // one of that frame keeps its pieces and parameters (still_paths.h). `timer` (optional)
+    // gets "ransac" and
     // "splat" on the device site; on the host site, and for an empty splat, it is not used.
     [[nodiscard]] std::vector<PathParam> update(std::vector<ScreenPath>& paths, const CameraMatrices& camera,
                                                 const SurfaceFrame& surface, const CoherenceParams& params,

@@ -4,6 +4,20 @@
 
 namespace lw {
 
+void add_sprites(std::span<const glm::vec3> sprites, float radius, int width, int height, std::vector<glm::vec4>& buffer) {
+    for (const glm::vec3& sprite : sprites) {
+        const glm::vec2 c(sprite);
+        const SpriteBox box = sprite_box(c, radius, width, height);
+        for (int y = box.y0; y <= box.y1; ++y)
+            for (int x = box.x0; x <= box.x1; ++x) {
+                const glm::vec2 pixel(float(x) + 0.5f, float(y) + 0.5f);
+                const float w = sprite_weight(pixel, c, radius);
+                if (w <= 0.0f) continue;
+                buffer[size_t(y) * size_t(width) + size_t(x)] += glm::vec4(w * sprite.z, w, w * (c - pixel));
+            }
+    }
+}
+
 void SplatSums::splat(std::span<const glm::vec3> sprites, float radius, int width, int height) {
     sprites_.assign(sprites.begin(), sprites.end());
     radius_ = radius;

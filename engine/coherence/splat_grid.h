@@ -38,6 +38,11 @@ inline float sprite_weight(glm::vec2 pixel, glm::vec2 c, float radius) {
     return std::clamp(1.0f - d / radius, 0.0f, 1.0f);
 }
 
+// Adds sprites (centre x, y in pixels; T) of radius δ into `buffer` (width × height, the
+// whole frame), in order, with the weights the GPU splat's fragment stage computes at pixel
+// centres: the CPU reference the GPU splat and SplatSums are compared with.
+void add_sprites(std::span<const glm::vec3> sprites, float radius, int width, int height, std::vector<glm::vec4>& buffer);
+
 class SplatSums {
 public:
     // Keeps the sprites (non-finite ones must have been removed).

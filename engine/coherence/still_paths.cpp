@@ -2,15 +2,39 @@
 
 #include <algorithm>
 #include <bit>
-#include <cstring>
 
 namespace lw {
 
 namespace {
 
-// One step of a 64-bit multiply-xorshift mix (the finalizer of SplitMix64) per word: every
-// input bit reaches every output bit, so paths a rounding apart get unrelated keys.
-uint64_t mix(uint64_t h, uint64_t word) {
+uint64_t mix(uint64_t h, uint64_t word) { return still_key_step(h, word); }
+
+uint64_t bits(float a, float b) {
+    return uint64_t(std::bit_cast<uint32_t>(a)) << 32 | std::bit_cast<uint32_t>(b);
+}
+
+// The pieces of `path` (a path equal to the recorded one), appended to `paths` and their
+// parameters to `params`.
+void append_still_pieces(ScreenPath&& path, const StillPath& recorded, const StillRecord& record,
+                         std::vector<ScreenPath>& paths, std::vector<PathParam>& params) {
+    rotate_loop(path, recorded.rotation);
+    for (uint32_t i = recorded.first_piece; i < recorded.first_piece + recorded.pieces; ++i) {
+        const StillPiece& piece = record.pieces[i];
+        // As path_split's pieces: open, the other fields kept.
+        ScreenPath out{.type = path.type, .closed = false, .visible = path.visible, .qi = path.qi, .source = path.source};
+        const size_t first = std::min<size_t>(piece.first, path.samples.size());
+        const size_t last = std::min<size_t>(size_t(piece.first) + piece.count, path.samples.size());
+        out.samples.assign(path.samples.begin() + std::ptrdiff_t(first), path.samples.begin() + std::ptrdiff_t(last));
+        paths.push_back(std::move(out));
+        params.push_back(piece.param);
+    }
+}
+
+}  // namespace
+
+// A 64-bit multiply-xorshift mix (the finalizer of SplitMix64) per word: every input bit
+// reaches every output bit, so paths a rounding apart get unrelated keys.
+uint64_t still_key_step(uint64_t h, uint64_t word) {
     h ^= word + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2);
     h ^= h >> 30;
     h *= 0xbf58476d1ce4e5b9ull;
@@ -18,12 +42,6 @@ uint64_t mix(uint64_t h, uint64_t word) {
     h *= 0x94d049bb133111ebull;
     return h ^ (h >> 31);
 }
-
-uint64_t bits(float a, float b) {
-    return uint64_t(std::bit_cast<uint32_t>(a)) << 32 | std::bit_cast<uint32_t>(b);
-}
-
-}  // namespace
 
 uint64_t still_path_key(const ScreenPath& path) {
     uint64_t h = mix(0, uint64_t(path.type) << 2 | uint64_t(path.closed) << 1 | uint64_t(path.visible));
@@ -58,23 +76,37 @@ void rotate_loop(ScreenPath& path, size_t start) {
     path.samples = std::move(rotated);
 }
 
-void append_still_pieces(ScreenPath&& path, const StillPath& recorded, const StillRecord& record,
-                         std::vector<ScreenPath>& paths, std::vector<PathParam>& params) {
-    rotate_loop(path, recorded.rotation);
-    for (uint32_t i = recorded.first_piece; i < recorded.first_piece + recorded.pieces; ++i) {
-        const StillPiece& piece = record.pieces[i];
-        // As path_split's pieces: open, the other fields kept.
-        ScreenPath out{.type = path.type, .closed = false, .visible = path.visible, .qi = path.qi, .source = path.source};
-        const size_t first = std::min<size_t>(piece.first, path.samples.size());
-        const size_t last = std::min<size_t>(size_t(piece.first) + piece.count, path.samples.size());
-        out.samples.assign(path.samples.begin() + std::ptrdiff_t(first), path.samples.begin() + std::ptrdiff_t(last));
-        paths.push_back(std::move(out));
-        params.push_back(piece.param);
+StillRecord assemble_still_frame(std::vector<ScreenPath>& paths, const std::vector<uint64_t>& keys,
+                                 const std::vector<const StillPath*>& kept, const StillRecord& previous,
+                                 MovedPaths& moved, std::vector<PathParam>& params) {
+    StillRecord record;
+    std::vector<ScreenPath> pieces;
+    params.clear();
+    size_t m = 0, piece = 0;  // the next moved path, and its first piece
+    for (size_t p = 0; p < paths.size(); ++p) {
+        StillPath entry{.key = keys[p], .first_piece = uint32_t(record.pieces.size())};
+        const size_t before = params.size();
+        if (kept[p]) {
+            entry.rotation = kept[p]->rotation;
+            append_still_pieces(std::move(paths[p]), *kept[p], previous, pieces, params);
+            for (uint32_t i = 0; i < kept[p]->pieces; ++i)
+                record.pieces.push_back(previous.pieces[kept[p]->first_piece + i]);
+        } else {
+            entry.rotation = moved.rotations[m];
+            for (; piece < moved.pieces.size() && moved.origins[piece].path == m; ++piece) {
+                record.pieces.push_back({moved.origins[piece].first, moved.origins[piece].count, moved.params[piece]});
+                pieces.push_back(std::move(moved.pieces[piece]));
+                params.push_back(moved.params[piece]);
+            }
+            ++m;
+        }
+        entry.pieces = uint32_t(params.size() - before);
+        record.paths.push_back(entry);
     }
-}
-
-void index_still_record(StillRecord& record) {
+    // Sorted by key for find_still_path (stable: of equal keys, the first path's entry first).
     std::ranges::stable_sort(record.paths, {}, &StillPath::key);
+    paths = std::move(pieces);
+    return record;
 }
 
 }  // namespace lw

@@ -19,10 +19,10 @@
 #pragma once
 
 #include <cstdint>
-#include <optional>
 #include <vector>
 
 #include "coherence/path_param.h"
+#include "coherence/path_split.h"
 #include "types/screen_path.h"
 
 namespace lw {
@@ -41,7 +41,21 @@ struct StillPath {
 struct StillRecord {
     std::vector<StillPath> paths;  // sorted by key
     std::vector<StillPiece> pieces;
+    uint64_t settings = 0;         // the key of the settings and scale they were made with
 };
+
+// The paths of a frame that moved, parameterized: their pieces and parameters, where each
+// piece came from (its path's index among the moved), and where each moved loop was made to
+// start (0: not rotated).
+struct MovedPaths {
+    std::vector<ScreenPath> pieces;
+    std::vector<PathParam> params;
+    std::vector<PieceOrigin> origins;
+    std::vector<uint32_t> rotations;
+};
+
+// One step of the keys' hash: `word` mixed into `h`.
+[[nodiscard]] uint64_t still_key_step(uint64_t h, uint64_t word);
 
 // A 64-bit hash of what places a path's samples: type, closed and visible, and per sample
 // the bits of its pixel, arclength and surface point.
@@ -54,12 +68,13 @@ struct StillRecord {
 // measured from the new start (the closing segment counted).
 void rotate_loop(ScreenPath& path, size_t start);
 
-// The pieces of `path` (a path equal to the recorded one), appended to `paths` and their
-// parameters to `params`.
-void append_still_pieces(ScreenPath&& path, const StillPath& recorded, const StillRecord& record,
-                         std::vector<ScreenPath>& paths, std::vector<PathParam>& params);
-
-// Sorts the record's paths by key (after they were appended in frame order).
-void index_still_record(StillRecord& record);
+// A frame's paths in their input order, each with its pieces in order (as the tracker's
+// pipeline leaves them), into `paths`, and their parameters into `params`: path p is kept
+// (`kept[p]`, an entry of `previous`: its pieces cut again from `paths[p]`) or moved (the next
+// of `moved`'s paths). Returns this frame's record (its `settings` left to the caller).
+[[nodiscard]] StillRecord assemble_still_frame(std::vector<ScreenPath>& paths, const std::vector<uint64_t>& keys,
+                                               const std::vector<const StillPath*>& kept,
+                                               const StillRecord& previous, MovedPaths& moved,
+                                               std::vector<PathParam>& params);
 
 }  // namespace lw

@@ -1,9 +1,8 @@
 #include "render_state.h"
 
-#include <cstdio>
 #include <algorithm>
+#include <cstdio>
 #include <cstring>
-#include <type_traits>
 #include <fstream>
 #include <iterator>
 #include <vector>
@@ -57,9 +56,6 @@ private:
     size_t at_ = 0;
 };
 
-static_assert(std::is_trivially_copyable_v<StillPath> && std::is_trivially_copyable_v<StillPiece>,
-              "still records are written as bytes");
-
 void put_state(Writer& w, const std::optional<CoherenceTracker::State>& state) {
     w.put<uint8_t>(state ? 1 : 0);
     if (!state) return;
@@ -69,10 +65,24 @@ void put_state(Writer& w, const std::optional<CoherenceTracker::State>& state) {
     w.put(uint32_t(state->sprites.size()));
     w.put_bytes(state->sprites.data(), state->sprites.size() * sizeof(glm::vec3));
     w.put(state->view_rho);
+    // Field by field: the structs have padding, which would put stray bytes in the file.
+    w.put(state->still.settings);
     w.put(uint32_t(state->still.paths.size()));
-    w.put_bytes(state->still.paths.data(), state->still.paths.size() * sizeof(StillPath));
+    for (const StillPath& path : state->still.paths) {
+        w.put(path.key);
+        w.put(path.rotation);
+        w.put(path.first_piece);
+        w.put(path.pieces);
+    }
     w.put(uint32_t(state->still.pieces.size()));
-    w.put_bytes(state->still.pieces.data(), state->still.pieces.size() * sizeof(StillPiece));
+    for (const StillPiece& piece : state->still.pieces) {
+        const PathParam& p = piece.param;
+        w.put(piece.first);
+        w.put(piece.count);
+        for (const float v : {p.rho, p.phi, p.fold.level, p.fold.scale, p.fold.w, p.length_px}) w.put(v);
+        w.put(p.votes);
+        w.put<uint8_t>(p.fitted ? 1 : 0);
+    }
 }
 
 std::optional<CoherenceTracker::State> get_state(Reader& r) {
@@ -84,10 +94,23 @@ std::optional<CoherenceTracker::State> get_state(Reader& r) {
     state.sprites.resize(r.count(sizeof(glm::vec3)));
     r.get_bytes(state.sprites.data(), state.sprites.size() * sizeof(glm::vec3));
     state.view_rho = r.get<float>();
-    state.still.paths.resize(r.count(sizeof(StillPath)));
-    r.get_bytes(state.still.paths.data(), state.still.paths.size() * sizeof(StillPath));
-    state.still.pieces.resize(r.count(sizeof(StillPiece)));
-    r.get_bytes(state.still.pieces.data(), state.still.pieces.size() * sizeof(StillPiece));
+    state.still.settings = r.get<uint64_t>();
+    state.still.paths.resize(r.count(8 + 3 * 4));
+    for (StillPath& path : state.still.paths) {
+        path.key = r.get<uint64_t>();
+        path.rotation = r.get<uint32_t>();
+        path.first_piece = r.get<uint32_t>();
+        path.pieces = r.get<uint32_t>();
+    }
+    state.still.pieces.resize(r.count(2 * 4 + 6 * 4 + 4 + 1));
+    for (StillPiece& piece : state.still.pieces) {
+        PathParam& p = piece.param;
+        piece.first = r.get<uint32_t>();
+        piece.count = r.get<uint32_t>();
+        for (float* v : {&p.rho, &p.phi, &p.fold.level, &p.fold.scale, &p.fold.w, &p.length_px}) *v = r.get<float>();
+        p.votes = r.get<uint32_t>();
+        p.fitted = r.get<uint8_t>() != 0;
+    }
     for (const StillPath& path : state.still.paths)
         if (size_t(path.first_piece) + path.pieces > state.still.pieces.size())
             throw Error(r.where() + ": corrupt render state (a still path's pieces lie past the record)");
