@@ -57,6 +57,7 @@ TEST(ClosedSurfaces, SplitCubeAndSphereAreClosedAndOutward) {
         ASSERT_EQ(closed.components.size(), 1u);
         EXPECT_TRUE(closed.components[0].caps.empty());
         EXPECT_TRUE(closed.components[0].outward);
+        EXPECT_FALSE(closed.components[0].inward);
         EXPECT_EQ(hidden_from(mesh, glm::vec3(3.0f, 1.0f, 2.0f)), std::vector<uint8_t>{1});
     }
 }
@@ -65,12 +66,14 @@ TEST(ClosedSurfaces, InsideOutAndFlatSurfacesAreNeverCulled) {
     TriangleMesh inverted = make_icosphere(1.0f, 2);
     for (size_t t = 0; t < inverted.indices.size(); t += 3) std::swap(inverted.indices[t + 1], inverted.indices[t + 2]);
     EXPECT_FALSE(find_closed_surfaces(inverted).components[0].outward);
+    EXPECT_TRUE(find_closed_surfaces(inverted).components[0].inward);
     EXPECT_EQ(hidden_from(inverted, glm::vec3(3.0f, 1.0f, 2.0f)), std::vector<uint8_t>{0});
     // A flat sheet closed by its cap has no volume: seen from either side it stays drawn both ways.
     const TriangleMesh sheet = make_height_field([](double, double) { return 0.0; }, glm::vec2(-1), glm::vec2(1), 4, 4);
     const ClosedSurfaces closed = find_closed_surfaces(sheet);
     ASSERT_EQ(closed.components.size(), 1u);
     EXPECT_EQ(closed.components[0].caps.size(), 3u * 16u);  // a fan over the 16 rim edges
+    EXPECT_FALSE(closed.components[0].inward);
     EXPECT_EQ(hidden_from(sheet, glm::vec3(0.5f, 0.3f, 3.0f)), std::vector<uint8_t>{0});
     EXPECT_EQ(hidden_from(sheet, glm::vec3(0.5f, 0.3f, -3.0f)), std::vector<uint8_t>{0});
 }
@@ -229,6 +232,10 @@ TEST(ClosedSurfaces, CapsCloseTheHolesAndDecide) {
         EXPECT_GT(caps[k].z > 1.0f ? n.z : -n.z, 0.0f) << "cap triangle " << k / 3;
     }
     EXPECT_TRUE(closed.components[0].outward);
+    // Wound the other way, a capped tube is no inside-out solid (an open surface has no inside).
+    TriangleMesh reversed = tube;
+    for (size_t t = 0; t < reversed.indices.size(); t += 3) std::swap(reversed.indices[t + 1], reversed.indices[t + 2]);
+    EXPECT_FALSE(find_closed_surfaces(reversed).components[0].inward);
     // From the side, between the rims, both caps face away; from above, the top one faces
     // the eye (the inside shows through the opening); from below, the bottom one.
     const glm::vec3 centre(0.0f, 0.0f, 1.0f);

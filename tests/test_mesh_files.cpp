@@ -6,10 +6,12 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
 
 #include <gtest/gtest.h>
 
 #include "core/error.h"
+#include "geometry/test_meshes.h"
 #include "io/image_io.h"
 #include "scene/model.h"
 #include "scene/triangle_mesh.h"
@@ -108,6 +110,29 @@ TEST(MeshFile, ObjPolygonsAreTriangulatedAndNormalsComputedWhenAbsent) {
     for (const auto& n : mesh.normals) EXPECT_NEAR(n.z, 1.0f, 1e-6f);
     ASSERT_EQ(mesh.face_material.size(), 2u);
     EXPECT_EQ(mesh.face_material[0], -1) << "Assimp's stand-in material is no material";
+}
+
+// A closed model wound inside out gets no smooth contours (rtsc's kr > 0 holds nowhere on it):
+// the render says so and how to get an outline; the same model wound outward renders silently.
+TEST(MeshFile, AnInsideOutModelIsNamedWithTheRemedy) {
+    const fs::path dir = test::temp_dir();
+    TriangleMesh sphere = make_icosphere(1.0f, 3);
+    write_obj(dir / "outward.obj", sphere);
+    for (size_t t = 0; t < sphere.indices.size(); t += 3) std::swap(sphere.indices[t + 1], sphere.indices[t + 2]);
+    write_obj(dir / "inward.obj", sphere);
+    const auto inward = run_linework("render " + quote(dir / "inward.obj") + " --device cpu --size 160x120 -o " +
+                                     quote(dir / "in.png"));
+    ASSERT_EQ(inward.exit_code, 0) << inward.output;
+    EXPECT_NE(inward.output.find("warning: 1 closed part(s) of the mesh (1280 of 1280 triangles) wind inside out"),
+              std::string::npos)
+        << inward.output;
+    EXPECT_NE(inward.output.find("--contours mesh"), std::string::npos) << inward.output;
+    EXPECT_NE(inward.output.find("lines: 0 segments"), std::string::npos) << inward.output;
+    const auto outward = run_linework("render " + quote(dir / "outward.obj") + " --device cpu --size 160x120 -o " +
+                                      quote(dir / "out.png"));
+    ASSERT_EQ(outward.exit_code, 0) << outward.output;
+    EXPECT_EQ(outward.output.find("warning"), std::string::npos) << outward.output;
+    EXPECT_EQ(outward.output.find("lines: 0 segments"), std::string::npos) << outward.output;
 }
 
 TEST(MeshFile, AsciiPlyWithMaterialsOfTheObjGroups) {

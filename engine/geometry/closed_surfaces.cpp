@@ -290,7 +290,11 @@ ClosedSurfaces find_closed_surfaces(const TriangleMesh& mesh) {
     }
     out.face_both_ways.assign(mesh.triangle_count(), 0);
     mark_faces_near_pockets(closed, closed_component, welded.source_face, out);
-    for (size_t c = 0; c < count; ++c) out.components[c].outward = out.components[c].closable && volume[c] > 1e-6 * size[c];
+    for (size_t c = 0; c < count; ++c) {
+        ClosedSurfaces::Component& in = out.components[c];
+        in.outward = in.closable && volume[c] > 1e-6 * size[c];
+        in.inward = in.closable && in.caps.empty() && volume[c] < -1e-6 * size[c];
+    }
     return out;
 }
 

@@ -4,6 +4,7 @@
 
 
 #include "core/error.h"
+#include "core/log.h"
 #include "core/parallel.h"
 #include "core/timer.h"
 #include "geometry/welded_mesh.h"
@@ -101,6 +102,26 @@ void FrameRenderer::keep_positions_of_frames_in_flight() {
     }
 }
 
+namespace {
+
+// Smooth contours and suggestive contours are drawn as rtsc defines them: contours only where
+// the radial curvature kr > 0 (where the surface turns away from the eye), which holds
+// nowhere on a closed part wound inside out, as kr's sign follows the normals'. So such a
+// part gets no smooth outline at all: say so, and how to get one.
+void warn_of_inside_out_parts(const ClosedSurfaces& closed) {
+    size_t parts = 0, faces = 0;
+    for (const ClosedSurfaces::Component& c : closed.components) parts += c.inward;
+    if (parts == 0) return;
+    for (const int32_t c : closed.face_component) faces += c >= 0 && closed.components[size_t(c)].inward;
+    log_warning(std::to_string(parts) + " closed part(s) of the mesh (" + std::to_string(faces) + " of " +
+                std::to_string(closed.face_component.size()) +
+                " triangles) wind inside out (negative volume): smooth silhouettes and suggestive contours need "
+                "outward normals and are not drawn there; reverse the faces' winding in the model, or draw the "
+                "outline with --contours mesh (scene key lines.contours: \"mesh\")");
+}
+
+}  // namespace
+
 void FrameRenderer::set_mesh(const TriangleMesh& mesh, bool with_lines, float crease_angle_deg, CurvatureFit curvature,
                              bool still) {
     keep_positions_of_frames_in_flight();
@@ -109,6 +130,7 @@ void FrameRenderer::set_mesh(const TriangleMesh& mesh, bool with_lines, float cr
     closed_draws_ = still ? draw_surfaces(mesh_->draws, mesh_->face_order, closed_) : std::vector<DrawSurfaces>{};
     line_mesh_.reset();
     if (with_lines) {
+        warn_of_inside_out_parts(closed_);
         line_mesh_ = build_line_mesh(mesh, crease_angle_deg, curvature_options(curvature));
         if (!extraction_on_host_) extractor_.set_mesh(*line_mesh_);
     }
