@@ -87,13 +87,14 @@ TEST(Resume, InterruptedAndResumedSequenceEqualsAnUnbrokenOne) {
 // render saves the same state bytes (no padding written).
 TEST(Resume, AStillShotStartedFromItsStateEqualsAnUnbrokenOne) {
     const fs::path dir = test::temp_dir();
-    // --dump-paths is part of what a state is saved with (its folder too): one folder for all.
+    // --dump-paths is part of what a state is saved with (every set is parameterized), but not
+    // its folder: each run dumps to its own.
     const std::string args = test::quote(test::data_dir() / "models/FlightHelmet/FlightHelmet.gltf") +
                              " --device cpu --size 160x120 --frames 0:7 --slam " +
-                             test::quote(test::source_dir() / "scenes/slams/dots.exr") + " --dump-paths " +
-                             test::quote(dir / "dump");
+                             test::quote(test::source_dir() / "scenes/slams/dots.exr");
     for (const char* states : {"s1", "s2"})
-        ASSERT_EQ(test::run_linework("render " + args + " --state-only --chunk 4 --save-states " + test::quote(dir / states))
+        ASSERT_EQ(test::run_linework("render " + args + " --state-only --chunk 4 --save-states " +
+                                     test::quote(dir / states) + " --dump-paths " + test::quote(dir / states / "dump"))
                       .exit_code,
                   0);
     const auto bytes = [](const fs::path& file) {
@@ -104,11 +105,12 @@ TEST(Resume, AStillShotStartedFromItsStateEqualsAnUnbrokenOne) {
     EXPECT_GT(state.size(), 1000u);
     EXPECT_TRUE(state == bytes(dir / "s2/state_0004.lwstate"));
 
-    const auto whole = test::run_linework("render " + args + " -o " + test::quote(dir / "whole"));
+    const auto whole = test::run_linework("render " + args + " -o " + test::quote(dir / "whole") + " --dump-paths " +
+                                          test::quote(dir / "whole_dump"));
     ASSERT_EQ(whole.exit_code, 0) << whole.output;
-    fs::rename(dir / "dump", dir / "whole_dump");
     const auto part = test::run_linework("render " + args + " --part 4:7 -o " + test::quote(dir / "part") +
-                                         " --start-state " + test::quote(dir / "s1/state_0004.lwstate"));
+                                         " --dump-paths " + test::quote(dir / "dump") + " --start-state " +
+                                         test::quote(dir / "s1/state_0004.lwstate"));
     ASSERT_EQ(part.exit_code, 0) << part.output;
     for (int f = 4; f <= 7; ++f) {
         char name[32];

@@ -37,6 +37,9 @@ void add_frame_options(CLI::App* cmd, RenderOptions& o);
 
 // Options of `cmd` that were given, as "--name=v1;v2;\n" lines in registration order (so
 // the order on the command line does not matter), leaving out those named in `except`.
+// `--dump-paths` counts by its presence alone: dumping parameterizes every line set (so the
+// frames depend on it), but its folder is an output, as -o is (a farm chunk may dump
+// elsewhere).
 [[nodiscard]] std::string given_options_signature(const CLI::App& cmd, const std::vector<std::string>& except);
 
 // The given options of `cmd` again as arguments (the positional first), leaving out those
