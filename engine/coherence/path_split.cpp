@@ -113,11 +113,15 @@ std::vector<bool> split_round(std::vector<ScreenPath>& paths, VoteSet& votes, st
     std::vector<PathFit> out_fits;
     std::vector<PieceOrigin> out_origins;
     std::vector<size_t> refit;  // pieces fitted on their own below
-    // Samples [from, to] of path p (every piece leaves open); a whole path's samples are moved.
+    // Samples [from, to] of path p; a whole path's samples are moved, and a loop left whole
+    // stays closed (drawn open, its two tapered ends left a gap at the seam), a piece of one
+    // is open.
     auto add_piece = [&](ScreenPath& path, size_t p, size_t from, size_t to, const PathFit* keep) {
         const float shift = path.samples[from].s - path.samples.front().s;  // new arclength origin
-        ScreenPath piece{.type = path.type, .closed = false, .visible = path.visible, .qi = path.qi, .source = path.source};
-        if (from == 0 && to + 1 == path.samples.size())
+        const bool whole = from == 0 && to + 1 == path.samples.size();
+        ScreenPath piece{.type = path.type, .closed = whole && path.closed, .visible = path.visible, .qi = path.qi,
+                         .source = path.source};
+        if (whole)
             piece.samples = std::move(path.samples);
         else
             piece.samples.assign(path.samples.begin() + std::ptrdiff_t(from), path.samples.begin() + std::ptrdiff_t(to + 1));

@@ -8,7 +8,8 @@
 // path is cut there, at the middle of each seam; the agreeing pieces keep the fit and the
 // others are fitted on their own (RANSAC again) and looked at again, so that a path joining
 // three or more earlier ones keeps all their phases. Output: the pieces, their votes and
-// fits, in place (neighbouring pieces share their seam's sample; every piece leaves open).
+// fits, in place (neighbouring pieces share their seam's sample; a piece of a loop is open, a
+// loop left whole stays closed).
 #pragma once
 
 #include <vector>
