@@ -215,8 +215,11 @@ TEST_F(CoherenceGpu, StillPathsKeepTheirScaleAndFragmentsAreDropped) {
     const glm::vec2 size(96.0f, 64.0f);
     std::vector<PathParam> first, last;
     for (int frame = 0; frame < 6; ++frame) {
-        std::vector<ScreenPath> paths{still_path({10.0f, 20.0f}, {40.0f, 24.0f}, 2.0f, size),
-                                      still_path({10.0f, 50.0f}, {15.0f, 50.0f}, 1.0f, size)};
+        // Nudged by a thousandth of a pixel a frame: not the same samples, so each frame is
+        // fitted again instead of kept as a still view's paths are (still_paths.h).
+        const float dy = 1e-3f * float(frame);
+        std::vector<ScreenPath> paths{still_path({10.0f, 20.0f + dy}, {40.0f, 24.0f + dy}, 2.0f, size),
+                                      still_path({10.0f, 50.0f + dy}, {15.0f, 50.0f + dy}, 1.0f, size)};
         last = tracker.update(paths, CameraMatrices{}, {}, params);
         ASSERT_EQ(paths.size(), 1u);
         ASSERT_EQ(last.size(), 1u);
@@ -284,7 +287,10 @@ TEST_F(CoherenceGpu, AMergedPathsSeamStaysWhereThePathsMet) {
             (void)tracker.update(apart, CameraMatrices{}, {}, params);
             float seam = 0.0f;
             for (int frame = 0; frame < 6; ++frame) {
-                std::vector<ScreenPath> merged{still_path({10.0f, 32.0f}, {390.0f, 32.0f}, 2.0f, size)};
+                // Nudged a thousandth of a pixel a frame, so that each frame is fitted again
+                // (the same samples would be kept, still_paths.h).
+                const float dy = 1e-3f * float(frame);
+                std::vector<ScreenPath> merged{still_path({10.0f, 32.0f + dy}, {390.0f, 32.0f + dy}, 2.0f, size)};
                 (void)tracker.update(merged, CameraMatrices{}, {}, params);
                 ASSERT_EQ(merged.size(), 2u) << where << ", frame " << frame;
                 EXPECT_EQ(merged[1].samples.front().pixel.x, merged[0].samples.back().pixel.x) << where;
