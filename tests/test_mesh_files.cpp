@@ -113,7 +113,8 @@ TEST(MeshFile, ObjPolygonsAreTriangulatedAndNormalsComputedWhenAbsent) {
 }
 
 // A closed model wound inside out gets no smooth contours (rtsc's kr > 0 holds nowhere on it):
-// the render says so and how to get an outline; the same model wound outward renders silently.
+// the render says so and how to get an outline; the same model wound outward, or a hollow one
+// whose cavity faces in, renders silently.
 TEST(MeshFile, AnInsideOutModelIsNamedWithTheRemedy) {
     const fs::path dir = test::temp_dir();
     TriangleMesh sphere = make_icosphere(1.0f, 3);
@@ -133,6 +134,18 @@ TEST(MeshFile, AnInsideOutModelIsNamedWithTheRemedy) {
     ASSERT_EQ(outward.exit_code, 0) << outward.output;
     EXPECT_EQ(outward.output.find("warning"), std::string::npos) << outward.output;
     EXPECT_EQ(outward.output.find("lines: 0 segments"), std::string::npos) << outward.output;
+    // A hollow ball: the cavity's wall faces in by right, inside the outer shell: no warning.
+    TriangleMesh hollow = make_icosphere(1.0f, 3);
+    for (size_t t = 0; t < sphere.indices.size(); ++t) sphere.indices[t] += uint32_t(hollow.positions.size());
+    for (glm::vec3& p : sphere.positions) p *= 0.5f;
+    hollow.positions.insert(hollow.positions.end(), sphere.positions.begin(), sphere.positions.end());
+    hollow.normals.insert(hollow.normals.end(), sphere.normals.begin(), sphere.normals.end());
+    hollow.indices.insert(hollow.indices.end(), sphere.indices.begin(), sphere.indices.end());
+    write_obj(dir / "hollow.obj", hollow);
+    const auto cavity = run_linework("render " + quote(dir / "hollow.obj") + " --device cpu --size 160x120 -o " +
+                                     quote(dir / "hollow.png"));
+    ASSERT_EQ(cavity.exit_code, 0) << cavity.output;
+    EXPECT_EQ(cavity.output.find("warning"), std::string::npos) << cavity.output;
 }
 
 TEST(MeshFile, AsciiPlyWithMaterialsOfTheObjGroups) {

@@ -107,12 +107,24 @@ namespace {
 // Smooth contours and suggestive contours are drawn as rtsc defines them: contours only where
 // the radial curvature kr > 0 (where the surface turns away from the eye), which holds
 // nowhere on a closed part wound inside out, as kr's sign follows the normals'. So such a
-// part gets no smooth outline at all: say so, and how to get one.
+// part gets no smooth outline at all: say so, and how to get one. A part inside the bounds of
+// an outward one is taken for the wall of a cavity (a hollow solid's inner shell faces in by
+// right) and not counted.
 void warn_of_inside_out_parts(const ClosedSurfaces& closed) {
-    size_t parts = 0, faces = 0;
-    for (const ClosedSurfaces::Component& c : closed.components) parts += c.inward;
+    using Component = ClosedSurfaces::Component;
+    auto inside = [](const Component& a, const Component& b) {
+        return glm::all(glm::greaterThanEqual(a.min, b.min)) && glm::all(glm::lessThanEqual(a.max, b.max));
+    };
+    std::vector<uint8_t> counted(closed.components.size(), 0);
+    for (size_t c = 0; c < closed.components.size(); ++c)
+        counted[c] = closed.components[c].inward &&
+                     std::ranges::none_of(closed.components, [&](const Component& o) {
+                         return o.outward && inside(closed.components[c], o);
+                     });
+    const size_t parts = size_t(std::ranges::count(counted, uint8_t{1}));
     if (parts == 0) return;
-    for (const int32_t c : closed.face_component) faces += c >= 0 && closed.components[size_t(c)].inward;
+    size_t faces = 0;
+    for (const int32_t c : closed.face_component) faces += c >= 0 && counted[size_t(c)];
     log_warning(std::to_string(parts) + " closed part(s) of the mesh (" + std::to_string(faces) + " of " +
                 std::to_string(closed.face_component.size()) +
                 " triangles) wind inside out (negative volume): smooth silhouettes and suggestive contours need "
