@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <utility>
 #include <vector>
 
 #include "geometry/closed_surfaces.h"
@@ -14,6 +15,7 @@
 #include "geometry/welded_mesh.h"
 #include "render/surface_materials.h"
 #include "render/surface_pass.h"
+#include "scene/scene.h"
 #include "scene/scene.h"
 #include "test_support.h"
 
@@ -76,6 +78,29 @@ TEST(ClosedSurfaces, InsideOutAndFlatSurfacesAreNeverCulled) {
     EXPECT_FALSE(closed.components[0].inward);
     EXPECT_EQ(hidden_from(sheet, glm::vec3(0.5f, 0.3f, 3.0f)), std::vector<uint8_t>{0});
     EXPECT_EQ(hidden_from(sheet, glm::vec3(0.5f, 0.3f, -3.0f)), std::vector<uint8_t>{0});
+}
+
+// A closed part wound inside out is `inward` (its smooth contours are lost: frame_renderer
+// warns) unless it lies inside an outward part: the wall of a cavity faces in by right. A
+// flipped part inside the outward part's bounds but outside its volume is still inward.
+TEST(ClosedSurfaces, ACavityWallIsNotInsideOut) {
+    auto flipped_ball = [](float radius, glm::vec3 centre) {
+        TriangleMesh ball = make_icosphere(radius, 2);
+        for (glm::vec3& p : ball.positions) p += centre;
+        for (size_t t = 0; t < ball.indices.size(); t += 3) std::swap(ball.indices[t + 1], ball.indices[t + 2]);
+        return ball;
+    };
+    for (const auto& [centre, inside] : {std::pair{glm::vec3(0.1f, 0.0f, 0.0f), true},
+                                        std::pair{glm::vec3(0.72f, 0.72f, 0.72f), false}}) {
+        TriangleMesh mesh = make_icosphere(1.0f, 3);
+        append_mesh(mesh, flipped_ball(0.05f, centre));
+        const ClosedSurfaces closed = find_closed_surfaces(mesh);
+        ASSERT_EQ(closed.components.size(), 2u);
+        const ClosedSurfaces::Component& small = closed.components[size_t(closed.face_component.back())];
+        EXPECT_FALSE(small.outward);
+        EXPECT_EQ(small.inward, !inside) << "small ball at " << centre.x;
+        EXPECT_TRUE(closed.components[size_t(closed.face_component.front())].outward);
+    }
 }
 
 TEST(ClosedSurfaces, FoldsFinsAndSelfIntersectionsAreNeverCulled) {

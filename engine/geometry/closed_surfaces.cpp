@@ -228,6 +228,34 @@ void mark_faces_near_pockets(const WeldedMesh& closed, const std::vector<int32_t
     }
 }
 
+// A component wound inside out that lies inside an outward one is the wall of a cavity (a
+// hollow solid's inner shell faces into the hollow by right): not `inward`. Decided by the
+// winding number, about each outward component whose bounds hold it, of a point of it (the
+// centroid of one of its first faces whose ray grazes no edge).
+void clear_cavity_walls(const WeldedMesh& closed, const std::vector<int32_t>& component, ClosedSurfaces& out) {
+    if (std::ranges::none_of(out.components, &ClosedSurfaces::Component::inward)) return;
+    std::vector<WindingGrid::Triangle> triangles;
+    const auto corner = [&](uint32_t f, int k) { return glm::dvec3(closed.positions[closed.faces[f][k]]); };
+    for (uint32_t f = 0; f < closed.faces.size(); ++f)
+        if (out.components[size_t(component[f])].outward)
+            triangles.push_back({corner(f, 0), corner(f, 1), corner(f, 2), component[f], f});
+    if (triangles.empty()) return;
+    const WindingGrid grid(std::move(triangles));
+    std::vector<int> tries(out.components.size(), 0);  // faces of each inward component looked at
+    for (uint32_t f = 0; f < closed.faces.size(); ++f) {
+        ClosedSurfaces::Component& c = out.components[size_t(component[f])];
+        if (!c.inward || tries[size_t(component[f])]++ >= 4) continue;
+        const glm::dvec3 p = (corner(f, 0) + corner(f, 1) + corner(f, 2)) / 3.0;
+        for (size_t o = 0; o < out.components.size() && c.inward; ++o) {
+            const ClosedSurfaces::Component& outer = out.components[o];
+            if (!outer.outward || glm::any(glm::lessThan(p, glm::dvec3(outer.min))) ||
+                glm::any(glm::greaterThan(p, glm::dvec3(outer.max))))
+                continue;
+            if (const std::optional<int> w = grid.winding(p, int32_t(o), UINT32_MAX); w && *w >= 1) c.inward = false;
+        }
+    }
+}
+
 }  // namespace
 
 ClosedSurfaces find_closed_surfaces(const TriangleMesh& mesh) {
@@ -295,6 +323,7 @@ ClosedSurfaces find_closed_surfaces(const TriangleMesh& mesh) {
         in.outward = in.closable && volume[c] > 1e-6 * size[c];
         in.inward = in.closable && in.caps.empty() && volume[c] < -1e-6 * size[c];
     }
+    clear_cavity_walls(closed, closed_component, out);
     return out;
 }
 

@@ -58,8 +58,9 @@ struct ClosedSurfaces {
         std::vector<glm::vec3> caps;
         bool closable = true;  // its edges and self-intersections allow the argument above
         bool outward = false;  // closable, and its closed volume is positive
-        // Closed without caps and its volume negative: its faces wind inside out (the front
-        // side inside), as an OBJ exported with flipped winding does.
+        // Closed without caps, its volume negative, and not inside an outward component (the
+        // wall of a cavity faces in by right): its faces wind inside out (the front side
+        // inside), as an OBJ exported with flipped winding does.
         bool inward = false;
     };
     std::vector<Component> components;

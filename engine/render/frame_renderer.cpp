@@ -51,6 +51,23 @@ void add_svg_shapes(const LinesDesc& lines, const LineSetDesc& set, const LineSe
     append_set_strokes(out, set, 0.0f, group.shapes, group.hidden_shapes);
 }
 
+// Smooth contours and suggestive contours are drawn as rtsc defines them: contours only where
+// the radial curvature kr > 0, and kr's sign follows the faces' winding. On a closed part
+// wound inside out (find_closed_surfaces: cavity walls left out) the contours seen from
+// outside are then not drawn. Said once per mesh (a viewer rebuilding its lines keeps it).
+std::string inside_out_warning(const ClosedSurfaces& closed) {
+    size_t parts = 0, faces = 0;
+    for (const ClosedSurfaces::Component& c : closed.components) parts += c.inward;
+    if (parts == 0) return {};
+    for (const int32_t c : closed.face_component) faces += c >= 0 && closed.components[size_t(c)].inward;
+    return std::to_string(parts) + " closed part(s) of the mesh (" + std::to_string(faces) + " of " +
+           std::to_string(closed.face_component.size()) +
+           " triangles) wind inside out (negative volume): smooth silhouettes and suggestive contours follow the "
+           "faces' winding (rtsc's kr > 0) and are not drawn on them as seen from outside. Unless they are "
+           "interiors seen from within, reverse their winding in the model, or draw their outline with --contours "
+           "mesh (scene key lines.contours: \"mesh\")";
+}
+
 }  // namespace
 
 std::vector<SvgGroup> line_set_svg_groups(const LinesDesc& lines, const Frame& frame, bool with_shapes) {
@@ -102,37 +119,6 @@ void FrameRenderer::keep_positions_of_frames_in_flight() {
     }
 }
 
-namespace {
-
-// Smooth contours and suggestive contours are drawn as rtsc defines them: contours only where
-// the radial curvature kr > 0 (where the surface turns away from the eye), which holds
-// nowhere on a closed part wound inside out, as kr's sign follows the normals'. So such a
-// part gets no smooth outline at all: say so, and how to get one. A part inside the bounds of
-// an outward one is taken for the wall of a cavity (a hollow solid's inner shell faces in by
-// right) and not counted.
-void warn_of_inside_out_parts(const ClosedSurfaces& closed) {
-    using Component = ClosedSurfaces::Component;
-    auto inside = [](const Component& a, const Component& b) {
-        return glm::all(glm::greaterThanEqual(a.min, b.min)) && glm::all(glm::lessThanEqual(a.max, b.max));
-    };
-    std::vector<uint8_t> counted(closed.components.size(), 0);
-    for (size_t c = 0; c < closed.components.size(); ++c)
-        counted[c] = closed.components[c].inward &&
-                     std::ranges::none_of(closed.components, [&](const Component& o) {
-                         return o.outward && inside(closed.components[c], o);
-                     });
-    const size_t parts = size_t(std::ranges::count(counted, uint8_t{1}));
-    if (parts == 0) return;
-    size_t faces = 0;
-    for (const int32_t c : closed.face_component) faces += c >= 0 && counted[size_t(c)];
-    log_warning(std::to_string(parts) + " closed part(s) of the mesh (" + std::to_string(faces) + " of " +
-                std::to_string(closed.face_component.size()) +
-                " triangles) wind inside out (negative volume): smooth silhouettes and suggestive contours need "
-                "outward normals and are not drawn there; reverse the faces' winding in the model, or draw the "
-                "outline with --contours mesh (scene key lines.contours: \"mesh\")");
-}
-
-}  // namespace
 
 void FrameRenderer::set_mesh(const TriangleMesh& mesh, bool with_lines, float crease_angle_deg, CurvatureFit curvature,
                              bool still) {
@@ -142,7 +128,10 @@ void FrameRenderer::set_mesh(const TriangleMesh& mesh, bool with_lines, float cr
     closed_draws_ = still ? draw_surfaces(mesh_->draws, mesh_->face_order, closed_) : std::vector<DrawSurfaces>{};
     line_mesh_.reset();
     if (with_lines) {
-        warn_of_inside_out_parts(closed_);
+        if (std::string warning = inside_out_warning(closed_); warning != inside_out_warned_) {
+            if (!warning.empty()) log_warning(warning);
+            inside_out_warned_ = std::move(warning);
+        }
         line_mesh_ = build_line_mesh(mesh, crease_angle_deg, curvature_options(curvature));
         if (!extraction_on_host_) extractor_.set_mesh(*line_mesh_);
     }

@@ -228,6 +228,7 @@ private:
     // Its closed surfaces when it is still: the back faces a view may skip (surface_pass.h).
     ClosedSurfaces closed_;
     std::vector<DrawSurfaces> closed_draws_;  // of mesh_'s draws (draw_surfaces), found with closed_
+    std::string inside_out_warned_;           // the last warning of parts wound inside out (said once)
     SurfaceMaterials materials_;  // without textures: what set_mesh groups by
     std::optional<GpuMaterials> gpu_materials_;
     std::optional<LineMesh> line_mesh_;
