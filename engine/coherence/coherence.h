@@ -103,13 +103,12 @@ public:
 
     // Parameterizes this frame's paths (hidden ones get the set's scale and phase 0) and
     // splats them for the next frame. Visible paths shorter than min_stroke_length_px are
-    // removed, closed loops may be rotated to start at the seam they
-    // inherited, and paths that merged pieces of different earlier paths split (see
-    // path_split.h), so `paths` may change; the result has one entry per path after.
-    // Under the previous frame's camera and with the same `params` (and scale), a path equal to
-    // one of that frame keeps its pieces and parameters (still_paths.h). `timer` (optional)
-    // gets "ransac" and
-    // "splat" on the device site; on the host site, and for an empty splat, it is not used.
+    // removed, closed loops may be rotated to start at the seam they inherited, and paths that
+    // merged pieces of different earlier paths split (see path_split.h), so `paths` may
+    // change; the result has one entry per path after. Under the previous frame's camera and
+    // with the same `params` (and scale), a path equal to one of that frame keeps its pieces
+    // and parameters (still_paths.h). `timer` (optional) gets "ransac" and "splat" on the
+    // device site; on the host site, and for an empty splat, it is not used.
     [[nodiscard]] std::vector<PathParam> update(std::vector<ScreenPath>& paths, const CameraMatrices& camera,
                                                 const SurfaceFrame& surface, const CoherenceParams& params,
                                                 GpuTimer* timer = nullptr);

@@ -113,9 +113,9 @@ std::vector<bool> split_round(std::vector<ScreenPath>& paths, VoteSet& votes, st
     std::vector<PathFit> out_fits;
     std::vector<PieceOrigin> out_origins;
     std::vector<size_t> refit;  // pieces fitted on their own below
-    // Samples [from, to] of path p; a whole path's samples are moved, and a loop left whole
-    // stays closed (drawn open, its two tapered ends left a gap at the seam), a piece of one
-    // is open.
+    // Samples [from, to] of path p; a whole path's samples are moved. A loop left whole stays
+    // closed (opened, its two tapered ends would leave a gap at the seam); a piece of one is
+    // open.
     auto add_piece = [&](ScreenPath& path, size_t p, size_t from, size_t to, const PathFit* keep) {
         const float shift = path.samples[from].s - path.samples.front().s;  // new arclength origin
         const bool whole = from == 0 && to + 1 == path.samples.size();

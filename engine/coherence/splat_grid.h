@@ -23,7 +23,7 @@
 
 namespace lw {
 
-// The pixels a sprite reaches: its box, clamped to the frame (splat_reference's loop).
+// The pixels a sprite reaches: its box, clamped to the frame (add_sprites' loop).
 struct SpriteBox {
     int x0, x1, y0, y1;  // inclusive
 };

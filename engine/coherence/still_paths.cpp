@@ -7,8 +7,6 @@ namespace lw {
 
 namespace {
 
-uint64_t mix(uint64_t h, uint64_t word) { return still_key_step(h, word); }
-
 uint64_t bits(float a, float b) {
     return uint64_t(std::bit_cast<uint32_t>(a)) << 32 | std::bit_cast<uint32_t>(b);
 }
@@ -46,12 +44,12 @@ uint64_t still_key_step(uint64_t h, uint64_t word) {
 }
 
 uint64_t still_path_key(const ScreenPath& path) {
-    uint64_t h = mix(0, uint64_t(path.type) << 2 | uint64_t(path.closed) << 1 | uint64_t(path.visible));
-    h = mix(h, path.samples.size());
+    uint64_t h = still_key_step(0, uint64_t(path.type) << 2 | uint64_t(path.closed) << 1 | uint64_t(path.visible));
+    h = still_key_step(h, path.samples.size());
     for (const ScreenSample& s : path.samples) {
-        h = mix(h, bits(s.pixel.x, s.pixel.y));
-        h = mix(h, bits(s.s, s.position.x));
-        h = mix(h, bits(s.position.y, s.position.z));
+        h = still_key_step(h, bits(s.pixel.x, s.pixel.y));
+        h = still_key_step(h, bits(s.s, s.position.x));
+        h = still_key_step(h, bits(s.position.y, s.position.z));
     }
     return h;
 }

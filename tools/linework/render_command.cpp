@@ -277,7 +277,7 @@ Runner add_render_command(CLI::App& app) {
                     "render of the whole range");
     return [o, cmd] {
         o->signature = given_options_signature(*cmd, {"--resume"});
-        o->state_signature = given_options_signature(*cmd, kRangeOptions);
+        o->state_signature = given_options_signature(*cmd, kRangeOptions, {"--dump-paths"});
         return run_render(*o);
     };
 }

@@ -95,12 +95,13 @@ bool left_out(const CLI::Option& option, const std::vector<std::string>& except)
 
 }  // namespace
 
-std::string given_options_signature(const CLI::App& cmd, const std::vector<std::string>& except) {
+std::string given_options_signature(const CLI::App& cmd, const std::vector<std::string>& except,
+                                    const std::vector<std::string>& presence) {
     std::string signature;
     for (const CLI::Option* option : cmd.get_options()) {
         if (left_out(*option, except)) continue;
         signature += option->get_name() + "=";
-        if (option->get_name() == "--dump-paths")
+        if (std::ranges::find(presence, option->get_name()) != presence.end())
             signature += "given;";
         else
             for (const std::string& value : option->results()) signature += value + ";";

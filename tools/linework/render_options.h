@@ -36,11 +36,12 @@ struct RenderOptions {
 void add_frame_options(CLI::App* cmd, RenderOptions& o);
 
 // Options of `cmd` that were given, as "--name=v1;v2;\n" lines in registration order (so
-// the order on the command line does not matter), leaving out those named in `except`.
-// `--dump-paths` counts by its presence alone: dumping parameterizes every line set (so the
-// frames depend on it), but its folder is an output, as -o is (a farm chunk may dump
-// elsewhere).
-[[nodiscard]] std::string given_options_signature(const CLI::App& cmd, const std::vector<std::string>& except);
+// the order on the command line does not matter), leaving out those named in `except` and
+// counting those in `presence` by their presence alone (the state a farm part starts from:
+// `--dump-paths` changes the frames, every line set is parameterized, but its folder is an
+// output a part may choose; a resumed render keeps the folder, so its dumps stay together).
+[[nodiscard]] std::string given_options_signature(const CLI::App& cmd, const std::vector<std::string>& except,
+                                                  const std::vector<std::string>& presence = {});
 
 // The given options of `cmd` again as arguments (the positional first), leaving out those
 // named in `except`: what `farm` puts on each task's command line.
