@@ -573,6 +573,51 @@ TEST_F(CoherenceGpu, AMovingPathAmongStillOnesAndAResumedStillView) {
     EXPECT_TRUE(same_frame(moved_again, resumed_params, moved, after));
 }
 
+// `count` samples of the loop of radius 40 px around (100, 50) in a still 2D view of a `size`
+// image, from sample `start` of 120 on (a closed loop when count is 120, else an arc).
+ScreenPath loop_path(size_t start, size_t count, glm::vec2 size) {
+    ScreenPath path{.type = LineType::Silhouette, .closed = count == 120, .visible = true};
+    const float r = 40.0f, step = 2.0f * std::numbers::pi_v<float> / 120.0f;
+    for (size_t i = 0; i < count; ++i) {
+        const float a = step * float((start + i) % 120);
+        const glm::vec2 pixel = glm::vec2(100.0f, 50.0f) + r * glm::vec2(std::cos(a), std::sin(a));
+        path.samples.push_back(ScreenSample{.pixel = pixel, .depth = 1.0f, .s = r * step * float(i),
+                                            .position = glm::vec3(pixel / size * 2.0f - 1.0f, 0.5f), .face = 0,
+                                            .bary = glm::vec3(1, 0, 0), .alpha = 1.0f});
+    }
+    return path;
+}
+
+// A loop joined from two arcs of different phases is cut into pieces; the last piece reaches
+// back to the first one's start (the closing segment is drawn: pieces are open, and it was
+// drawn by none), and a still frame keeps the same pieces.
+TEST_F(CoherenceGpu, ALoopCutIntoPiecesKeepsItsClosingSegment) {
+    const int width = 200, height = 100;
+    const glm::vec2 size(width, height);
+    for (const ComputeSite site : {ComputeSite::Host, ComputeSite::Device}) {
+        const char* name = site == ComputeSite::Host ? "host" : "device";
+        CoherenceTracker tracker(ctx(), width, height, site);
+        const CoherenceParams params{.slam_length_px = 64.0f};
+        std::vector<ScreenPath> arcs{loop_path(10, 50, size), loop_path(70, 50, size)};
+        (void)tracker.update(arcs, CameraMatrices{}, {}, params);
+        std::vector<std::vector<ScreenPath>> frames;
+        std::vector<std::vector<PathParam>> fitted;
+        for (int frame = 0; frame < 2; ++frame) {
+            frames.push_back({loop_path(0, 120, size)});
+            fitted.push_back(tracker.update(frames.back(), CameraMatrices{}, {}, params));
+        }
+        const std::vector<ScreenPath>& pieces = frames[0];
+        ASSERT_GE(pieces.size(), 2u) << name;
+        EXPECT_EQ(pieces.back().samples.back().pixel, pieces.front().samples.front().pixel) << name;
+        for (size_t i = 0; i + 1 < pieces.size(); ++i)
+            EXPECT_EQ(pieces[i].samples.back().pixel, pieces[i + 1].samples.front().pixel) << name << ", piece " << i;
+        size_t samples = 0;
+        for (const ScreenPath& piece : pieces) samples += piece.samples.size() - 1;
+        EXPECT_EQ(samples, 120u) << name;  // every sample once, and the closing segment
+        EXPECT_TRUE(same_frame(frames[1], fitted[1], frames[0], fitted[0])) << name;
+    }
+}
+
 // A closed loop whose chaining starts it elsewhere than its seam is rotated to start at the
 // seam and stays a closed loop; kept under a still camera, it is rotated the same way again (the loop's pieces are cut
 // from the rotated samples), and a set edited under the still camera keeps nothing: its paths
@@ -580,19 +625,7 @@ TEST_F(CoherenceGpu, AMovingPathAmongStillOnesAndAResumedStillView) {
 TEST_F(CoherenceGpu, AStillLoopKeepsItsSeamAndAnEditedSetKeepsNothing) {
     const int width = 200, height = 100;
     const glm::vec2 size(width, height);
-    // The loop of 120 samples around (100, 50), starting at sample `start`.
-    auto loop = [&](size_t start) {
-        ScreenPath path{.type = LineType::Silhouette, .closed = true, .visible = true};
-        const float r = 40.0f, step = 2.0f * std::numbers::pi_v<float> / 120.0f;
-        for (size_t i = 0; i < 120; ++i) {
-            const float a = step * float((start + i) % 120);
-            const glm::vec2 pixel = glm::vec2(100.0f, 50.0f) + r * glm::vec2(std::cos(a), std::sin(a));
-            path.samples.push_back(ScreenSample{.pixel = pixel, .depth = 1.0f, .s = r * step * float(i),
-                                                .position = glm::vec3(pixel / size * 2.0f - 1.0f, 0.5f), .face = 0,
-                                                .bary = glm::vec3(1, 0, 0), .alpha = 1.0f});
-        }
-        return path;
-    };
+    auto loop = [&](size_t start) { return loop_path(start, 120, size); };
     for (const ComputeSite site : {ComputeSite::Host, ComputeSite::Device}) {
         const char* name = site == ComputeSite::Host ? "host" : "device";
         CoherenceTracker tracker(ctx(), width, height, site);

@@ -16,10 +16,13 @@ uint64_t bits(float a, float b) {
 void append_still_pieces(ScreenPath&& path, const StillPath& recorded, const StillRecord& record,
                          std::vector<ScreenPath>& paths, std::vector<PathParam>& params) {
     rotate_loop(path, recorded.rotation);
+    const size_t n = path.samples.size();
+    // As path_split cuts a loop: its closing sample appended when it is cut.
+    if (path.closed && !(recorded.pieces == 1 && record.pieces[recorded.first_piece].count == n)) append_loop_closing(path);
     for (uint32_t i = recorded.first_piece; i < recorded.first_piece + recorded.pieces; ++i) {
         const StillPiece& piece = record.pieces[i];
         // As path_split's pieces: open unless the whole loop, the other fields kept.
-        const bool whole = piece.first == 0 && piece.count == path.samples.size();
+        const bool whole = piece.first == 0 && piece.count == n;
         ScreenPath out{.type = path.type, .closed = whole && path.closed, .visible = path.visible, .qi = path.qi,
                        .source = path.source};
         const size_t first = std::min<size_t>(piece.first, path.samples.size());
