@@ -3,6 +3,7 @@
 
 #include <cstdint>
 
+#include "core/random.h"
 #include "ribbon/dp.h"
 #include "ribbon/exemplar.h"
 #include "test_support.h"
@@ -17,7 +18,7 @@ inline Exemplar banded_exemplar(int width, int height, int first, int last, uint
     const uint8_t palette[3][3] = {{200, 30, 30}, {30, 160, 60}, {40, 40, 220}};
     for (int y = first; y <= last; ++y)
         for (int x = 0; x < width; ++x) {
-            state = ribbon_hash(state);
+            state = mix64(state);
             if (state % 10 >= 6) continue;
             const uint8_t* c = palette[(state >> 8) % 3];
             uint8_t* p = img.at(x, y);

@@ -159,7 +159,7 @@ std::vector<bool> split_round(std::vector<ScreenPath>& paths, VoteSet& votes, st
             continue;
         }
         // Alternate kept and rejected pieces; neighbours share their boundary sample.
-        if (paths[p].closed) append_loop_closing(paths[p]);
+        if (paths[p].closed) paths[p] = opened(paths[p]);  // the last piece reaches back to the first
         size_t from = 0;
         for (const auto& [a, b] : runs) {
             if (a > from) add_piece(paths[p], p, from, a, &fit);
@@ -187,13 +187,6 @@ std::vector<bool> split_round(std::vector<ScreenPath>& paths, VoteSet& votes, st
 }
 
 }  // namespace
-
-void append_loop_closing(ScreenPath& path) {
-    if (path.samples.size() < 2) return;
-    ScreenSample closing = path.samples.front();
-    closing.s = path.samples.back().s + glm::length(path.samples.front().pixel - path.samples.back().pixel);
-    path.samples.push_back(closing);
-}
 
 void split_merged_paths(std::vector<ScreenPath>& paths, VoteSet& votes, std::vector<PathFit>& fits,
                         const RansacParams& ransac, float splat_radius_px, const RansacFitter& fitter,

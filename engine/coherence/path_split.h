@@ -20,13 +20,10 @@
 
 namespace lw {
 
-// A loop about to be cut into pieces: its first sample repeated at its end, its arclength
-// counting the closing segment, so that the last piece reaches back to the first (pieces are
-// open: without it the closing segment was drawn by none).
-void append_loop_closing(ScreenPath& path);
-
 // Where a piece came from: samples [first, first + count) of path `path` of the input (for a
-// loop that was cut, of its samples with the closing one appended).
+// loop that was cut, of the loop `opened`: its first sample repeated at its end, so that the
+// last piece reaches back to the first; pieces are open, and the closing segment was drawn by
+// none).
 struct PieceOrigin {
     uint32_t path, first, count;
 };

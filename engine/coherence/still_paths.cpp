@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <bit>
 
+#include "core/random.h"
+
 namespace lw {
 
 namespace {
@@ -17,8 +19,8 @@ void append_still_pieces(ScreenPath&& path, const StillPath& recorded, const Sti
                          std::vector<ScreenPath>& paths, std::vector<PathParam>& params) {
     rotate_loop(path, recorded.rotation);
     const size_t n = path.samples.size();
-    // As path_split cuts a loop: its closing sample appended when it is cut.
-    if (path.closed && !(recorded.pieces == 1 && record.pieces[recorded.first_piece].count == n)) append_loop_closing(path);
+    // As path_split cuts a loop: opened first, its first sample repeated at its end.
+    if (path.closed && !(recorded.pieces == 1 && record.pieces[recorded.first_piece].count == n)) path = opened(path);
     for (uint32_t i = recorded.first_piece; i < recorded.first_piece + recorded.pieces; ++i) {
         const StillPiece& piece = record.pieces[i];
         // As path_split's pieces: open unless the whole loop, the other fields kept.
@@ -35,16 +37,9 @@ void append_still_pieces(ScreenPath&& path, const StillPath& recorded, const Sti
 
 }  // namespace
 
-// A 64-bit multiply-xorshift mix (the finalizer of SplitMix64) per word: every input bit
-// reaches every output bit, so paths a rounding apart get unrelated keys.
-uint64_t still_key_step(uint64_t h, uint64_t word) {
-    h ^= word + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2);
-    h ^= h >> 30;
-    h *= 0xbf58476d1ce4e5b9ull;
-    h ^= h >> 27;
-    h *= 0x94d049bb133111ebull;
-    return h ^ (h >> 31);
-}
+// The word combined with the key so far (shifts of it, so that the order of the words
+// counts), then mixed (splitmix64's finalizer): paths a rounding apart get unrelated keys.
+uint64_t still_key_step(uint64_t h, uint64_t word) { return mix64(h ^ (word + (h << 6) + (h >> 2))); }
 
 uint64_t still_path_key(const ScreenPath& path) {
     uint64_t h = still_key_step(0, uint64_t(path.type) << 2 | uint64_t(path.closed) << 1 | uint64_t(path.visible));
@@ -65,8 +60,7 @@ const StillPath* find_still_path(const StillRecord& record, uint64_t key) {
 void rotate_loop(ScreenPath& path, size_t start) {
     const size_t n = path.samples.size();
     if (start == 0 || start >= n) return;
-    const float closing = glm::length(path.samples.front().pixel - path.samples.back().pixel);
-    const float loop_length = path.samples.back().s - path.samples.front().s + closing;
+    const float loop_length = path.samples.back().s - path.samples.front().s + closing_length(path);
     const float s_start = path.samples[start].s, s0 = path.samples.front().s;
     std::vector<ScreenSample> rotated;
     rotated.reserve(n);

@@ -13,6 +13,15 @@
 
 namespace lw {
 
+// splitmix64's finalizer: a 64-bit word to another, every input bit reaching every output bit
+// (seeds for hashed noise and tie-breaks, and keys of values), the same everywhere.
+inline uint64_t mix64(uint64_t z) {
+    z += 0x9e3779b97f4a7c15ull;
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    return z ^ (z >> 31);
+}
+
 class Rng {
 public:
     explicit Rng(uint64_t seed) : engine_(static_cast<uint32_t>(seed ^ (seed >> 32))) {}

@@ -119,7 +119,6 @@ void FrameRenderer::keep_positions_of_frames_in_flight() {
     }
 }
 
-
 void FrameRenderer::set_mesh(const TriangleMesh& mesh, bool with_lines, float crease_angle_deg, CurvatureFit curvature,
                              bool still) {
     keep_positions_of_frames_in_flight();

@@ -7,6 +7,7 @@
 
 #include "core/error.h"
 #include "core/parallel.h"
+#include "core/random.h"
 
 namespace lw {
 
@@ -29,7 +30,7 @@ std::optional<uint32_t> pick_cheapest(const std::vector<float>& costs, const std
     std::vector<uint32_t> ties;
     for (uint32_t j : candidates)
         if (costs[j] == best) ties.push_back(j);
-    return ties[ribbon_hash(seed) % ties.size()];
+    return ties[mix64(seed) % ties.size()];
 }
 
 RibbonSolution make_solution(const DpProblem& problem, const DpTables& t, uint32_t end) {
@@ -45,13 +46,6 @@ RibbonSolution make_solution(const DpProblem& problem, const DpTables& t, uint32
 }
 
 }  // namespace
-
-uint64_t ribbon_hash(uint64_t x) {
-    x += 0x9e3779b97f4a7c15ull;
-    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
-    x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
-    return x ^ (x >> 31);
-}
 
 float seam_cost(const DpProblem& problem, size_t row, glm::ivec2 prev, glm::ivec2 cur) {
     const Exemplar& e = *problem.exemplar;
@@ -133,13 +127,13 @@ std::vector<glm::ivec2> greedy_positions(const DpProblem& problem, const std::ve
 std::vector<glm::ivec2> random_positions(const DpProblem& problem, const std::vector<std::vector<uint32_t>>& valid,
                                          uint64_t seed) {
     std::vector<glm::ivec2> out;
-    uint64_t state = ribbon_hash(seed ^ 0x72616e646f6dull);
+    uint64_t state = mix64(seed ^ 0x72616e646f6dull);
     for (size_t r = 0; r < problem.rows.size(); ++r) {
         if (problem.closed && r + 1 == problem.rows.size()) {
             out.push_back(out.front());
             break;
         }
-        state = ribbon_hash(state);
+        state = mix64(state);
         out.push_back(problem.position(valid[r][state % valid[r].size()]));
     }
     return out;

@@ -75,7 +75,5 @@ struct RibbonSolution {
 [[nodiscard]] std::vector<glm::ivec2> random_positions(const DpProblem& problem,
                                                        const std::vector<std::vector<uint32_t>>& valid, uint64_t seed);
 
-// A deterministic 64-bit mix (splitmix64), the same everywhere (std:: distributions are not).
-uint64_t ribbon_hash(uint64_t x);
 
 }  // namespace lw

@@ -8,6 +8,7 @@
 
 #include "core/color.h"
 #include "core/error.h"
+#include "core/random.h"
 #include "ribbon/dp.h"
 
 namespace lw {
@@ -27,9 +28,9 @@ using Shader = std::function<Sample(vec2)>;
 // Deterministic uniform numbers in [lo, hi).
 class Random {
 public:
-    explicit Random(uint64_t seed) : state_(ribbon_hash(seed)) {}
+    explicit Random(uint64_t seed) : state_(mix64(seed)) {}
     float uniform(float lo, float hi) {
-        state_ = ribbon_hash(state_);
+        state_ = mix64(state_);
         return lo + (hi - lo) * float(state_ >> 40) / float(1u << 24);
     }
     int pick(int n) { return std::min(n - 1, int(uniform(0.0f, float(n)))); }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numeric>
 
+#include "core/random.h"
 #include "stroke/outline.h"
 
 namespace lw {
@@ -46,11 +47,6 @@ ScreenPath empty_like(const ScreenPath& path) {
         .type = path.type, .closed = false, .visible = path.visible, .qi = path.qi, .source = path.source, .samples = {}};
 }
 
-float closing_length(const ScreenPath& path) {
-    const auto& s = path.samples;
-    return path.closed && s.size() > 1 ? glm::length(s.front().pixel - s.back().pixel) : 0.0f;
-}
-
 // Cumulative pixel arclength of the samples (open: the closing segment is not counted).
 std::vector<float> pixel_arclength(const ScreenPath& path) {
     std::vector<float> keys(path.samples.size(), 0.0f);
@@ -69,26 +65,6 @@ std::vector<float> s_keys(const ScreenPath& path) {
     keys.reserve(path.samples.size());
     for (const ScreenSample& q : path.samples) keys.push_back(q.s);
     return keys;
-}
-
-// A closed loop opened at sample k: samples k … n−1, 0 … k, the wrapped ones' s continued
-// past the loop length so that s stays increasing.
-ScreenPath open_loop_at(const ScreenPath& path, size_t k) {
-    const auto& s = path.samples;
-    const size_t n = s.size();
-    const float loop = s.back().s - s.front().s + closing_length(path);
-    ScreenPath open = empty_like(path);
-    open.samples.reserve(n + 1);
-    for (size_t i = k; i < n; ++i) open.samples.push_back(s[i]);
-    for (size_t i = 0; i <= k; ++i) {
-        open.samples.push_back(s[i]);
-        open.samples.back().s += loop;
-    }
-    return open;
-}
-
-ScreenPath opened(const ScreenPath& path) {
-    return path.closed && path.samples.size() > 1 ? open_loop_at(path, 0) : path;
 }
 
 // The sample at key k (keys: one per sample, nondecreasing; ≥ 2 samples), interpolated.
@@ -265,13 +241,6 @@ void simplify(ScreenPath& path, float tolerance_px) {
 }
 
 // ---- Noise ----
-
-uint64_t mix64(uint64_t z) {  // splitmix64's finalizer
-    z += 0x9e3779b97f4a7c15ull;
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return z ^ (z >> 31);
-}
 
 double lattice_gradient(uint64_t seed, int64_t i) {
     const uint64_t h = mix64(mix64(seed) ^ uint64_t(i));

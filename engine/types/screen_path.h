@@ -39,4 +39,32 @@ struct ScreenPath {
     std::vector<ScreenSample> samples;
 };
 
+// The screen length of a loop's closing segment, from its last sample back to its first (0
+// for an open path).
+inline float closing_length(const ScreenPath& path) {
+    const auto& s = path.samples;
+    return path.closed && s.size() > 1 ? glm::length(s.front().pixel - s.back().pixel) : 0.0f;
+}
+
+// A closed loop opened at sample k: samples k … n−1, 0 … k (an open path of n + 1 samples),
+// the wrapped ones' s continued past the loop length so that s stays increasing.
+inline ScreenPath open_loop_at(const ScreenPath& path, size_t k) {
+    const auto& s = path.samples;
+    const size_t n = s.size();
+    const float loop = s.back().s - s.front().s + closing_length(path);
+    ScreenPath open{.type = path.type, .closed = false, .visible = path.visible, .qi = path.qi, .source = path.source};
+    open.samples.reserve(n + 1);
+    for (size_t i = k; i < n; ++i) open.samples.push_back(s[i]);
+    for (size_t i = 0; i <= k; ++i) {
+        open.samples.push_back(s[i]);
+        open.samples.back().s += loop;
+    }
+    return open;
+}
+
+// A loop as an open path from sample 0 round to a copy of it; an open path as it is.
+inline ScreenPath opened(const ScreenPath& path) {
+    return path.closed && path.samples.size() > 1 ? open_loop_at(path, 0) : path;
+}
+
 }  // namespace lw
