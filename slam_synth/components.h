@@ -4,7 +4,8 @@
 // neighbours join (8- or 4-connected), and which texels belong (a predicate on the texel's
 // index). Output: per component its area and where it reaches; optionally each texel's
 // component (−1 for texels that do not belong). Used by the fidelity measures (elements and
-// holes, slam_fidelity.h) and by the enclosed-paper step (basins, enclosed_ink.h).
+// holes, slam_fidelity.h), the enclosed-paper step (basins, enclosed_ink.h) and the
+// element-size step (element_sizes.h).
 #pragma once
 
 #include <utility>
@@ -22,10 +23,11 @@ struct Component {
 };
 
 // Each texel keeps the unwrapped column it was reached at: a component that reaches a texel
-// again a whole length away goes round the strip.
+// again a whole length away goes round the strip. `columns`, when given, receives those
+// unwrapped columns (a component that does not go round lies in one unbroken range of them).
 template <class Inside>
 std::vector<Component> components(const Plane& p, bool periodic, bool diagonal, Inside inside,
-                                  std::vector<int>* labels = nullptr) {
+                                  std::vector<int>* labels = nullptr, std::vector<int>* columns = nullptr) {
     std::vector<int> label(p.size(), -1), unwrapped(p.size(), 0);
     std::vector<Component> out;
     std::vector<int> stack;
@@ -67,6 +69,7 @@ std::vector<Component> components(const Plane& p, bool periodic, bool diagonal, 
         out.push_back(c);
     }
     if (labels) *labels = std::move(label);
+    if (columns) *columns = std::move(unwrapped);
     return out;
 }
 

@@ -21,11 +21,11 @@
 //   kEmptyRowInk), the share of the level's texels above kStrayInk.
 #pragma once
 
+#include "element_sizes.h"
 #include "fft.h"
 
 namespace lw::synth {
 
-inline constexpr float kElementInk = 0.5f;
 inline constexpr float kEmptyRowInk = 0.02f;  // an exemplar row with no texel above this is empty
 inline constexpr float kStrayInk = 0.1f;      // a texel above this in an empty row is a visible speck
 

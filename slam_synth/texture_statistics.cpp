@@ -79,6 +79,7 @@ TextureStatistics analyze_texture(const Plane& image, const PyramidGeometry& g, 
     t.pixel = moments(image.v.data(), image.size());
     row_moments(image, t.row_mean, t.row_variance);
     t.enclosed_deficit = enclosed_deficit(image, enclosed_basin_texels(neighborhood));
+    t.elements = element_sizes(image);
 
     const Complexes x = real_spectrum(image);
     Pyramid pyr;

@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "adjustments.h"
+#include "element_sizes.h"
 #include "small_linalg.h"
 #include "steerable_pyramid.h"
 
@@ -43,6 +44,7 @@ struct TextureStatistics {
     std::vector<Matrix> parent_real;        // [s], s < scales − 1: orientations × 2·orientations
     double highpass_variance = 0;
     double enclosed_deficit = 0;  // enclosed_ink.h: paper enclosed by ink, basins of at most Na² texels
+    ElementSizes elements;        // element_sizes.h: the smallest and largest element
 };
 
 // The largest basin of enclosed paper that the statistic counts (enclosed_ink.h says why).

@@ -188,9 +188,15 @@ TEST_P(SlamFidelityExemplar, ResemblesItsExemplar) {
     EXPECT_LE(worst_grain, 1.5 * exemplar_grain);
     EXPECT_LE(top.stray.share, 0.002);
     EXPECT_LE(ratio, 1.05 * c.ratio_before);
+    // Identical dots (the point: area CV at most 0.15; the authors' artmap has 0.16):
+    // at level 1.0 and on the mean over the levels, which the element-size step holds
+    // (0.159 and 0.195 without it on this seed; element_sizes.h).
     if (name == "beads") {
         EXPECT_NEAR(top.elements.per_100_texels, own.per_100_texels, 0.1 * own.per_100_texels);
-        EXPECT_LT(top.elements.area_cv, 0.2);
+        EXPECT_LE(top.elements.area_cv, 0.15);
+        double sum = 0.0;
+        for (const Plane& level : s.levels) sum += element_statistics(level, true).area_cv;
+        EXPECT_LE(sum / double(s.levels.size()), 0.15);
     }
     // Exemplars of separate elements with no enclosed paper: no level has a hollow element.
     if (name == "beads" || name == "dots" || name == "dashes") {
