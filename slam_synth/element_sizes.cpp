@@ -133,26 +133,42 @@ Blobs watershed(const LocalGrid& g, const std::vector<float>& d) {
     return b;
 }
 
-// Joins blobs whose boundary (the deepest pair of touching texels, each counted at the
-// shallower of the two) lies within kNeckDrop of the lower peak, and numbers the rest 1 … count.
+// Joins blobs whose boundary lies within kNeckDrop of the lower peak, and numbers the rest
+// 1 … count. A boundary's depth is its deepest pair of touching texels, each counted at the
+// shallower of the two. Boundaries are taken deepest first and each compared with the
+// peaks of the groups joined so far (the "dynamics" of a peak), so that a shallow blob
+// between two dots joins one of them and does not chain them together.
 void join_shallow_necks(Blobs& b, const LocalGrid& g, const std::vector<float>& d) {
     std::vector<float> top(size_t(b.count) + 1, 0.0f);
     for (size_t k = 0; k < b.of.size(); ++k) top[size_t(b.of[k])] = std::max(top[size_t(b.of[k])], d[k]);
+    std::vector<std::vector<float>> boundary(size_t(b.count) + 1, std::vector<float>(size_t(b.count) + 1, -1.0f));
+    for (int k = 0; k < int(b.of.size()); ++k) {
+        const int own = b.of[size_t(k)];
+        if (!own) continue;
+        g.neighbours(k, 1, [&](int j) {
+            const int other = b.of[size_t(j)];
+            if (other > own) boundary[size_t(own)][size_t(other)] =
+                                 std::max(boundary[size_t(own)][size_t(other)], std::min(d[size_t(k)], d[size_t(j)]));
+        });
+    }
+    std::vector<std::tuple<float, int, int>> edges;  // depth, blob, blob
+    for (int x = 1; x <= b.count; ++x)
+        for (int y = x + 1; y <= b.count; ++y)
+            if (boundary[size_t(x)][size_t(y)] >= 0.0f) edges.emplace_back(boundary[size_t(x)][size_t(y)], x, y);
+    std::sort(edges.begin(), edges.end(), [](const auto& p, const auto& q) {
+        return std::get<0>(p) != std::get<0>(q) ? std::get<0>(p) > std::get<0>(q) : p < q;
+    });
     std::vector<int> root(size_t(b.count) + 1);
     std::iota(root.begin(), root.end(), 0);
     const auto find = [&](int x) {
         while (root[size_t(x)] != x) x = root[size_t(x)] = root[size_t(root[size_t(x)])];
         return x;
     };
-    for (int k = 0; k < int(b.of.size()); ++k) {
-        const int own = b.of[size_t(k)];
-        if (!own) continue;
-        g.neighbours(k, 1, [&](int j) {
-            const int other = b.of[size_t(j)];
-            if (!other || other == own) return;
-            const float boundary = std::min(d[size_t(k)], d[size_t(j)]);
-            if (boundary >= std::min(top[size_t(own)], top[size_t(other)]) - kNeckDrop) root[size_t(find(own))] = find(other);
-        });
+    for (const auto& [depth, x, y] : edges) {
+        const int rx = find(x), ry = find(y);
+        if (rx == ry || depth < std::min(top[size_t(rx)], top[size_t(ry)]) - kNeckDrop) continue;
+        root[size_t(ry)] = rx;
+        top[size_t(rx)] = std::max(top[size_t(rx)], top[size_t(ry)]);
     }
     std::vector<int> number(size_t(b.count) + 1, 0);
     int count = 0;
@@ -173,7 +189,8 @@ bool split_element(Plane& ink, const std::vector<int>& members, const std::vecto
     Blobs b = watershed(g, d);
     join_shallow_necks(b, g, d);
     if (b.count < 2) return false;
-    std::vector<int> cut, kept(size_t(b.count) + 1, 0);
+    std::vector<int> cut;
+    std::vector<uint8_t> kept(b.of.size(), 0);
     for (int k = 0; k < int(b.of.size()); ++k) {
         const int own = b.of[size_t(k)];
         if (!own) continue;
@@ -182,10 +199,24 @@ bool split_element(Plane& ink, const std::vector<int>& members, const std::vecto
         if (boundary)
             cut.push_back(k);
         else
-            ++kept[size_t(own)];
+            kept[size_t(k)] = 1;
     }
-    for (int id = 1; id <= b.count; ++id)
-        if (kept[size_t(id)] < min_piece) return false;
+    // Every piece the cut leaves (kept texels, 8-connected) must be a blob's worth: cuts on
+    // two sides of a thin blob could break it into fragments.
+    std::vector<uint8_t> seen(b.of.size(), 0);
+    int pieces = 0;
+    for (int k = 0; k < int(b.of.size()); ++k) {
+        if (!kept[size_t(k)] || seen[size_t(k)]) continue;
+        std::vector<int> piece{k};
+        seen[size_t(k)] = 1;
+        for (size_t q = 0; q < piece.size(); ++q)
+            g.neighbours(piece[q], 1, [&](int j) {
+                if (kept[size_t(j)] && !seen[size_t(j)]) seen[size_t(j)] = 1, piece.push_back(j);
+            });
+        if (int(piece.size()) < min_piece) return false;
+        ++pieces;
+    }
+    if (pieces < 2) return false;
     for (int k : cut) ink.v[size_t(g.texel[size_t(k)])] = paper;
     return true;
 }
@@ -226,28 +257,36 @@ bool trim_element(Plane& ink, const std::vector<int>& members, const std::vector
     return trimmed;
 }
 
-// Erases a fragment and its catchment: texels reached from it by steps (8-connected,
-// columns wrapping) that do not climb, within `reach` steps, in no element.
-void erase_fragment(Plane& ink, const std::vector<int>& members, const std::vector<int>& label, float paper, int reach) {
-    std::vector<int> depth(ink.size(), -1);  // a plane-sized scratch per fragment: fragments are few
-    std::vector<int> queue(members);
-    for (int i : members) depth[size_t(i)] = 0;
-    for (size_t q = 0; q < queue.size(); ++q) {
-        const int i = queue[q], r = i / ink.cols, x = i % ink.cols;
-        if (depth[size_t(i)] == reach) continue;
-        for (int dr = -1; dr <= 1; ++dr)
-            for (int dx = -1; dx <= 1; ++dx) {
-                const int rr = r + dr;
-                if (rr < 0 || rr >= ink.rows) continue;
-                const int j = rr * ink.cols + (x + dx + ink.cols) % ink.cols;
-                if (depth[size_t(j)] >= 0 || label[size_t(j)] >= 0 || !(ink.v[size_t(j)] <= ink.v[size_t(i)]) ||
-                    !(ink.v[size_t(j)] > paper))
-                    continue;
-                depth[size_t(j)] = depth[size_t(i)] + 1;
-                queue.push_back(j);
-            }
+// The ink that runs down from each element: texels reached from it by steps (8-connected,
+// columns wrapping) that do not climb, within `reach` steps, in no element. Every element
+// floods at once, a step at a time, whole elements before fragments at each step, and a
+// texel is the first claimant's: a dot's grey rim stays the dot's where a speck's ink runs
+// down into it at the same level. Returns each texel's element (−1 for none).
+std::vector<int> catchments(const Plane& ink, const std::vector<int>& label, const std::vector<uint8_t>& fragment,
+                            float paper, int reach) {
+    std::vector<int> owner(label), frontier;
+    for (int pass = 0; pass < 2; ++pass)  // whole elements first
+        for (int i = 0; i < int(ink.size()); ++i)
+            if (label[size_t(i)] >= 0 && bool(fragment[size_t(label[size_t(i)])]) == bool(pass)) frontier.push_back(i);
+    for (int step = 0; step < reach && !frontier.empty(); ++step) {
+        std::vector<int> next;
+        for (int i : frontier) {
+            const int r = i / ink.cols, x = i % ink.cols;
+            for (int dr = -1; dr <= 1; ++dr)
+                for (int dx = -1; dx <= 1; ++dx) {
+                    const int rr = r + dr;
+                    if (rr < 0 || rr >= ink.rows) continue;
+                    const int j = rr * ink.cols + (x + dx + ink.cols) % ink.cols;
+                    if (owner[size_t(j)] >= 0 || !(ink.v[size_t(j)] <= ink.v[size_t(i)]) || !(ink.v[size_t(j)] > paper))
+                        continue;
+                    owner[size_t(j)] = owner[size_t(i)];
+                    next.push_back(j);
+                }
+        }
+        std::stable_partition(next.begin(), next.end(), [&](int j) { return !fragment[size_t(owner[size_t(j)])]; });
+        frontier = std::move(next);
     }
-    for (int i : queue) ink.v[size_t(i)] = paper;
+    return owner;
 }
 
 }  // namespace
@@ -284,13 +323,21 @@ ElementChanges impose_element_sizes(Plane& ink, const ElementSizes& sizes, float
         components(ink, true, true, [&](size_t i) { return ink.v[i] > kElementInk; }, &label, &column);
     const std::vector<std::vector<int>> members = members_of(label, elements.size());
     const int half_smallest = (sizes.min_area + 1) / 2;
+    std::vector<uint8_t> fragment(elements.size(), 0);
     for (size_t e = 0; e < elements.size(); ++e) {
         const Component& c = elements[e];
-        if (c.touches_edges || c.wraps) continue;
-        if (c.area < half_smallest) {
-            erase_fragment(ink, members[e], label, paper, reach);
-            ++changes.erased;
-        } else if (c.area > sizes.max_area) {
+        fragment[e] = !c.touches_edges && !c.wraps && c.area < half_smallest;
+        changes.erased += fragment[e];
+    }
+    if (changes.erased) {
+        const std::vector<int> owner = catchments(ink, label, fragment, paper, reach);
+        for (size_t i = 0; i < ink.size(); ++i)
+            if (owner[i] >= 0 && fragment[size_t(owner[i])]) ink.v[i] = paper;
+    }
+    for (size_t e = 0; e < elements.size(); ++e) {
+        const Component& c = elements[e];
+        if (c.touches_edges || c.wraps || fragment[e]) continue;
+        if (c.area > sizes.max_area) {
             if (split_element(ink, members[e], column, half_smallest, paper))
                 ++changes.split;
             else if (trim_element(ink, members[e], column, 0.5f * sizes.min_depth, kLeastTrim, paper))

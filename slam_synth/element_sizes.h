@@ -22,15 +22,16 @@
 // smallest and largest element are the statistic, and the last iteration imposes it:
 // - an element under half the exemplar's smallest is erased with the ink that runs down
 //   from it (its catchment: texels reached by steps that do not climb, within `reach`
-//   texels of it, that belong to no other element) — a speck or a half dot is closer to
-//   paper than to a whole element;
+//   texels of it, in no element; all elements flood at once and whole ones claim first, so
+//   a neighbouring dot keeps its grey rim) — a speck is closer to paper than to a dot;
 // - an element over the exemplar's largest is split where it is narrowest when it is two
 //   or more blobs: the distance to paper has two or more peaks (maxima over 5 × 5 texels at
 //   least 2 texels deep), a watershed of that distance from the peaks gives each texel its
-//   blob, blobs whose boundary is within a texel of the lower peak's depth are one (a ridge
-//   of equal maxima along a fat oval is not a neck), and the texels on one side of each
-//   boundary become paper. Only when every blob keeps at least half the exemplar's
-//   smallest once cut: a bump on an element is not a second one;
+//   blob, blobs whose boundary is within a texel of the lower peak's depth are one (taken
+//   deepest boundary first against the peaks joined so far; a ridge of equal maxima along
+//   a fat oval is not a neck), and the texels on one side of each boundary become paper.
+//   Only when every piece the cut leaves is at least half the exemplar's smallest: a bump
+//   on an element is not a second one;
 // - else (one blob) it is trimmed: its opening by a disc of half the shallowest exemplar
 //   element's depth keeps the body, and each piece outside it of 4 texels or more (a curl
 //   stuck to the rim, not the odd texel of an edge) becomes paper.

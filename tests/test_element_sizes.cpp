@@ -75,11 +75,18 @@ TEST(ElementSizes, AnExemplarsWholeElementsOnly) {
     EXPECT_TRUE((ElementSizes{.count = 2, .min_area = 40, .max_area = 60}).alike());
     EXPECT_FALSE((ElementSizes{.count = 2, .min_area = 40, .max_area = 61}).alike());
     EXPECT_FALSE((ElementSizes{.count = 1, .min_area = 40, .max_area = 40}).alike());
-    // A dot of 81 texels beside them: sizes over a factor 1.5 apart are not alike.
-    for (int dr = -5; dr <= 5; ++dr)
-        for (int dc = -5; dc <= 5; ++dc)
-            if (dr * dr + dc * dc <= 25) p.at(7 + dr, 68 + dc) = 1.0f;
+    // A dot of 45 texels beside them (radius √13): 45 > 1.5 × 29, not alike; one of 37
+    // (radius √11) is.
+    Plane q = p;
+    for (int dr = -4; dr <= 4; ++dr)
+        for (int dc = -4; dc <= 4; ++dc) {
+            if (dr * dr + dc * dc <= 13) p.at(7 + dr, 68 + dc) = 1.0f;
+            if (dr * dr + dc * dc <= 11) q.at(7 + dr, 68 + dc) = 1.0f;
+        }
+    EXPECT_EQ(element_sizes(p).max_area, 45);
     EXPECT_FALSE(element_sizes(p).alike());
+    EXPECT_EQ(element_sizes(q).max_area, 37);
+    EXPECT_TRUE(element_sizes(q).alike());
 }
 
 TEST(ElementSizes, ASpeckIsErasedWithItsHaloAndTheDotsAreLeftAsTheyWere) {
@@ -150,14 +157,14 @@ TEST(ElementSizes, WithinTheRangeOrUnlikeNothingChanges) {
     for (size_t i = 0; i < p.size(); ++i) ASSERT_EQ(p.v[i], before.v[i]);
 }
 
-// The catchment runs down from the speck only: ink that climbs again toward a dot is the
-// dot's, and stays.
+// The catchment runs down from the speck only: ink that climbs again is not the speck's,
+// and stays.
 TEST(ElementSizes, AnErasedSpecksCatchmentDoesNotClimb) {
     const ElementSizes sizes = three_dots();
     Plane p(16, 64);
-    dot(p, 8, 30);
-    p.at(8, 20) = 0.9f;                                        // the speck
-    const float ramp[] = {0.4f, 0.3f, 0.35f, 0.45f};           // down from it, then up to the dot's rim
+    dot(p, 8, 40);
+    p.at(8, 20) = 0.9f;                               // the speck
+    const float ramp[] = {0.4f, 0.3f, 0.35f, 0.45f};  // down from it, then up again
     for (int k = 0; k < 4; ++k) p.at(8, 21 + k) = ramp[k];
     const ElementChanges changes = impose_element_sizes(p, sizes, 0.0f, 4);
     EXPECT_EQ(changes.erased, 1);
@@ -166,6 +173,59 @@ TEST(ElementSizes, AnErasedSpecksCatchmentDoesNotClimb) {
     EXPECT_EQ(p.at(8, 22), 0.0f);
     EXPECT_EQ(p.at(8, 23), 0.35f);  // climbs: not the speck's
     EXPECT_EQ(p.at(8, 24), 0.45f);
+}
+
+// A speck beside a dot: the dot's grey rim, as low as the speck's own slope, is the dot's.
+TEST(ElementSizes, ADotKeepsItsRimBesideAnErasedSpeck) {
+    const ElementSizes sizes = three_dots();
+    Plane p(16, 64);
+    dot(p, 8, 30);
+    for (int dr = -4; dr <= 4; ++dr)  // a rim of 0.4 one texel round the dot
+        for (int dc = -4; dc <= 4; ++dc)
+            if (dr * dr + dc * dc > 9 && dr * dr + dc * dc <= 17) p.at(8 + dr, 30 + dc) = 0.4f;
+    p.at(8, 36) = 0.9f;  // a speck two texels off the rim, its slope at the rim's level
+    p.at(8, 35) = 0.4f;
+    Plane expected = p;
+    expected.at(8, 36) = 0.0f;
+    const ElementChanges changes = impose_element_sizes(p, sizes, 0.0f, 4);
+    EXPECT_EQ(changes.erased, 1);
+    int rim_lost = 0;
+    for (size_t i = 0; i < p.size(); ++i) rim_lost += p.v[i] != expected.v[i];
+    EXPECT_LE(rim_lost, 1) << "only the texel between speck and rim may go";
+    EXPECT_EQ(p.at(8, 36), 0.0f);
+}
+
+// `reach` bounds the catchment: a long slope down from a speck keeps what lies beyond it.
+TEST(ElementSizes, TheCatchmentEndsAtItsReach) {
+    const ElementSizes sizes = three_dots();
+    Plane p(16, 64);
+    dot(p, 8, 50);
+    p.at(8, 10) = 0.9f;
+    for (int k = 1; k <= 6; ++k) p.at(8, 10 + k) = 0.45f - 0.05f * float(k);
+    impose_element_sizes(p, sizes, 0.0f, 2);
+    EXPECT_EQ(p.at(8, 11), 0.0f);
+    EXPECT_EQ(p.at(8, 12), 0.0f);
+    EXPECT_FLOAT_EQ(p.at(8, 13), 0.30f);  // three steps away
+    EXPECT_FLOAT_EQ(p.at(8, 16), 0.15f);
+}
+
+// Two dots joined by a bar with a bulge: the bulge is a shallow peak of its own, and its
+// boundaries with the dots are close to its depth; it must not chain the dots into one.
+TEST(ElementSizes, AShallowBulgeDoesNotChainTwoDotsTogether) {
+    const ElementSizes sizes = three_dots();
+    Plane p(20, 64);
+    for (int c : {20, 36})
+        for (int dr = -4; dr <= 4; ++dr)
+            for (int dc = -4; dc <= 4; ++dc)
+                if (dr * dr + dc * dc <= 16) p.at(10 + dr, c + dc) = 1.0f;
+    for (int c = 24; c <= 32; ++c)
+        for (int r = 9; r <= 11; ++r) p.at(r, c) = 1.0f;  // a bar three rows thick
+    for (int r = 7; r <= 13; ++r)
+        for (int c = 27; c <= 29; ++c) p.at(r, c) = 1.0f;  // with a bulge in its middle
+    ASSERT_EQ(element_areas(p).size(), 1u);
+    const ElementChanges changes = impose_element_sizes(p, sizes, 0.0f, 4);
+    EXPECT_EQ(changes.split, 1);
+    EXPECT_EQ(element_areas(p).size(), 2u);
 }
 
 // Split and trim find their element across the seam, where its columns wrap.
@@ -198,7 +258,10 @@ TEST(ElementSizes, AFatOvalIsNotCutAlongItsRidge) {
             for (int dc = -4; dc <= 4; ++dc)
                 if (dr * dr + dc * dc <= 16) p.at(r0 + dr, c0 + dc) = 1.0f;
     ASSERT_EQ(element_areas(p).size(), 1u);
+    const int area = element_areas(p)[0];
     const ElementChanges changes = impose_element_sizes(p, sizes, 0.0f, 4);
     EXPECT_EQ(changes.split, 0);
-    for (int area : element_areas(p)) EXPECT_GE(area, 15);  // no strip left behind
+    EXPECT_EQ(changes.trimmed, 0);  // it is all body: nothing thinner than the dots sticks out
+    ASSERT_EQ(element_areas(p).size(), 1u);
+    EXPECT_EQ(element_areas(p)[0], area);
 }
