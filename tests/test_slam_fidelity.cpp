@@ -19,6 +19,7 @@
 #include "slam_synth/slam_conditions.h"
 #include "slam_synth/slam_fidelity.h"
 #include "slam_synth/texture_synthesis.h"
+#include "test_slam_support.h"
 #include "test_support.h"
 
 using namespace lw::synth;
@@ -156,15 +157,7 @@ TEST(SlamFidelitySynthesis, RowsKeepTheirStatisticsWhereElementSizesAreImposed) 
     const Plane result = synthesize_texture(target, seed_level(half_seed(m.padded_rows, length, 2), 1.0, length), g,
                                             {.iterations = 15, .on_iteration = look});
     EXPECT_GT(before_last.erased + before_last.split + before_last.trimmed, 0);
-    std::vector<double> mean, variance;
-    row_moments(result, mean, variance);
-    const double peak_mean = *std::max_element(target.row_mean.begin(), target.row_mean.end());
-    const double peak_variance = *std::max_element(target.row_variance.begin(), target.row_variance.end());
-    for (int r = 0; r < m.padded_rows; ++r) {
-        const double tm = target.row_mean[size_t(r)], tv = target.row_variance[size_t(r)];
-        EXPECT_NEAR(mean[size_t(r)], tm, 0.05 * std::max(tm, 0.1 * peak_mean)) << "row " << r;
-        EXPECT_NEAR(variance[size_t(r)], tv, 0.05 * std::max(tv, 0.1 * peak_variance)) << "row " << r;
-    }
+    lw::test::expect_rows_within_5_percent(result, target);
 }
 
 // Every SLAM exemplar, as `linework slam` makes it. Bounds: the grain of every level ≤ 1.5×

@@ -15,6 +15,7 @@
 #include "slam_synth/slam_conditions.h"
 #include "slam_synth/texture_synthesis.h"
 #include "stroke/slam.h"
+#include "test_slam_support.h"
 
 namespace lw::synth {
 namespace {
@@ -166,16 +167,7 @@ TEST_F(SlamSynthStatistics, SynthesisBeatsTheSeedInEveryGroup) {
 
 TEST_F(SlamSynthStatistics, RowsKeepTheExemplarsRowMeanAndVariance) {
     const Plane result = synthesize_texture(target, seed, geometry, {.iterations = 15, .scope = StatisticsScope::Rows});
-    std::vector<double> mean, variance;
-    row_moments(result, mean, variance);
-    const double peak_mean = *std::max_element(target.row_mean.begin(), target.row_mean.end());
-    const double peak_variance = *std::max_element(target.row_variance.begin(), target.row_variance.end());
-    for (int r = 0; r < model.padded_rows; ++r) {
-        const double tm = target.row_mean[size_t(r)], tv = target.row_variance[size_t(r)];
-        // 5 % of the row's own value, or of the largest row's for rows with almost no ink.
-        EXPECT_NEAR(mean[size_t(r)], tm, 0.05 * std::max(tm, 0.1 * peak_mean)) << "row " << r;
-        EXPECT_NEAR(variance[size_t(r)], tv, 0.05 * std::max(tv, 0.1 * peak_variance)) << "row " << r;
-    }
+    lw::test::expect_rows_within_5_percent(result, target);
 }
 
 class SlamSynthSlam : public ::testing::Test {};
