@@ -51,6 +51,7 @@ TEST_F(SlamCli, WritesTheSlamAndTheContactSheet) {
     ASSERT_EQ(r.exit_code, 0) << r.output;
     for (const char* text : {"padded to 16 rows", "level  4  l = 1.0000", "self-similarity error", "cross-scale phase",
                              "RMS difference of adjacent levels", "fidelity to the exemplar", "largest grain over all levels",
+                             "element sizes",
                              "wrote"})
         EXPECT_NE(r.output.find(text), std::string::npos) << text << "\n" << r.output;
     const Slam slam = read_slam(out);

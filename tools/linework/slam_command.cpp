@@ -65,6 +65,16 @@ void print_fidelity(const synth::SlamSynthesis& s, const synth::Plane& exemplar)
         print_fidelity_row(name, f.grain, exemplar_grain, f.elements, stray);
     }
     std::printf("  largest grain over all levels: %.4f (%s the exemplar's)\n", worst, times(worst, exemplar_grain).c_str());
+    // Whether the last iteration held elements to the exemplar's sizes (element_sizes.h).
+    const synth::ElementSizes& sizes = s.target.elements;
+    if (sizes.alike())
+        std::printf("  element sizes imposed: the exemplar's %d elements are alike (%d-%d texels)\n", sizes.count,
+                    sizes.min_area, sizes.max_area);
+    else if (sizes.count >= 2)
+        std::printf("  element sizes not imposed: the exemplar's %d elements are unlike (%d-%d texels, over 1.5x apart)\n",
+                    sizes.count, sizes.min_area, sizes.max_area);
+    else
+        std::printf("  element sizes not imposed: the exemplar has %s whole element\n", sizes.count ? "one" : "no");
 }
 
 void print_report(const synth::SlamSynthesis& s, const synth::SlamSynthesisDesc& desc) {
@@ -169,7 +179,8 @@ Runner add_slam_command(CLI::App& app) {
     cmd->add_flag("--report", o->report,
                   "Print the SNR of each statistic group (as textureSynth) of levels 0.5 and 1.0 and their seeds,\n"
                   "and the fidelity to the exemplar: grain along the length, elements (ink > 0.5: count per 100\n"
-                  "texels, area, its coefficient of variation, enclosed paper) and stray ink in empty rows");
+                  "texels, area, its coefficient of variation, enclosed paper), stray ink in empty rows, and whether\n"
+                  "the exemplar's elements are alike enough (sizes within 1.5x) for the synthesis to hold them to its sizes");
     return [o] { return run_slam(*o); };
 }
 
