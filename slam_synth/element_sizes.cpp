@@ -25,6 +25,8 @@ constexpr int kPeakRadius = 2;
 // the lower of their peaks: a neck is narrower than both blobs, a ridge of equal maxima
 // (a fat oval) is not.
 constexpr float kNeckDrop = 1.0f;
+// Elements over this many times the exemplar's largest are neither split nor trimmed.
+constexpr int kMostMerged = 4;
 
 // One element's texels on a grid of its own: its bounding box in unwrapped columns, one
 // texel of paper round it.
@@ -337,7 +339,10 @@ ElementChanges impose_element_sizes(Plane& ink, const ElementSizes& sizes, float
     for (size_t e = 0; e < elements.size(); ++e) {
         const Component& c = elements[e];
         if (c.touches_edges || c.wraps || fragment[e]) continue;
-        if (c.area > sizes.max_area) {
+        // A merged pair or a dot with a curl is at most a few elements' worth; a larger
+        // component is a band or a smear the sizes say nothing about (and the distance to
+        // paper, compared pair by pair, would cost its area squared).
+        if (c.area > sizes.max_area && c.area <= kMostMerged * sizes.max_area) {
             if (split_element(ink, members[e], column, half_smallest, paper))
                 ++changes.split;
             else if (trim_element(ink, members[e], column, 0.5f * sizes.min_depth, kLeastTrim, paper))

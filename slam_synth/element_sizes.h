@@ -35,6 +35,8 @@
 // - else (one blob) it is trimmed: its opening by a disc of half the shallowest exemplar
 //   element's depth keeps the body, and each piece outside it of 4 texels or more (a curl
 //   stuck to the rim, not the odd texel of an edge) becomes paper.
+//   Elements over 4 times the largest (a band, a smear: not a few elements grown together)
+//   are left as they are.
 // Only exemplars of like elements take part: two or more, the largest at most 1.5 times the
 // smallest (a row of identical dots: 57–61 texels). The range of a varied set (dots of
 // 37–131 texels, dashes, wedges, spatter, brush pieces) says little of any one element, and

@@ -212,12 +212,17 @@ TEST(ElementSizes, TheCatchmentEndsAtItsReach) {
 // Two dots joined by a bar with a bulge: the bulge is a shallow peak of its own, and its
 // boundaries with the dots are close to its depth; it must not chain the dots into one.
 TEST(ElementSizes, AShallowBulgeDoesNotChainTwoDotsTogether) {
-    const ElementSizes sizes = three_dots();
-    Plane p(20, 64);
-    for (int c : {20, 36})
+    const auto disc4 = [](Plane& q, int r0, int c0) {  // radius 4: 49 texels
         for (int dr = -4; dr <= 4; ++dr)
             for (int dc = -4; dc <= 4; ++dc)
-                if (dr * dr + dc * dc <= 16) p.at(10 + dr, c + dc) = 1.0f;
+                if (dr * dr + dc * dc <= 16) q.at(r0 + dr, c0 + dc) = 1.0f;
+    };
+    Plane exemplar(20, 80);
+    for (int c : {12, 40, 68}) disc4(exemplar, 10, c);
+    const ElementSizes sizes = element_sizes(exemplar);
+    ASSERT_EQ(sizes.max_area, 49);
+    Plane p(20, 64);
+    for (int c : {20, 36}) disc4(p, 10, c);
     for (int c = 24; c <= 32; ++c)
         for (int r = 9; r <= 11; ++r) p.at(r, c) = 1.0f;  // a bar three rows thick
     for (int r = 7; r <= 13; ++r)
@@ -264,4 +269,18 @@ TEST(ElementSizes, AFatOvalIsNotCutAlongItsRidge) {
     EXPECT_EQ(changes.trimmed, 0);  // it is all body: nothing thinner than the dots sticks out
     ASSERT_EQ(element_areas(p).size(), 1u);
     EXPECT_EQ(element_areas(p)[0], area);
+}
+
+// A band far larger than a few elements is not a merged pair: left as it is (and not
+// compared texel pair by texel pair).
+TEST(ElementSizes, ABandIsNotCutOrTrimmed) {
+    const ElementSizes sizes = three_dots();
+    Plane p(16, 128);
+    for (int r = 6; r <= 10; ++r)
+        for (int c = 10; c < 100; ++c) p.at(r, c) = 1.0f;  // 450 texels, over 4 × 29
+    for (int c = 100; c < 104; ++c) p.at(8, c) = 1.0f;     // with a thin tail
+    const Plane before = p;
+    const ElementChanges changes = impose_element_sizes(p, sizes, 0.0f, 4);
+    EXPECT_EQ(changes.split + changes.trimmed, 0);
+    for (size_t i = 0; i < p.size(); ++i) ASSERT_EQ(p.v[i], before.v[i]);
 }
