@@ -181,9 +181,28 @@ void join_shallow_necks(Blobs& b, const LocalGrid& g, const std::vector<float>& 
     b.count = count;
 }
 
-// Splits one element into its blobs when it has two or more and each keeps at least
-// `min_piece` texels once cut: texels with a neighbour of a later blob become paper, so no
-// two blobs touch even diagonally. Returns whether it split.
+// The 8-connected pieces of the grid texels marked in `in`.
+std::vector<std::vector<int>> pieces_of(const LocalGrid& g, const std::vector<uint8_t>& in) {
+    std::vector<std::vector<int>> pieces;
+    std::vector<uint8_t> seen(in.size(), 0);
+    for (int k = 0; k < int(in.size()); ++k) {
+        if (!in[size_t(k)] || seen[size_t(k)]) continue;
+        std::vector<int> piece{k};
+        seen[size_t(k)] = 1;
+        for (size_t q = 0; q < piece.size(); ++q)
+            g.neighbours(piece[q], 1, [&](int j) {
+                if (in[size_t(j)] && !seen[size_t(j)]) seen[size_t(j)] = 1, piece.push_back(j);
+            });
+        pieces.push_back(std::move(piece));
+    }
+    return pieces;
+}
+
+// Splits one element into its blobs when it has two or more: texels with a neighbour of a
+// later blob become paper, so no two blobs touch even diagonally. Only when every piece the
+// cut leaves has at least `min_piece` texels and every blob keeps one (cuts on two sides of
+// a thin blob could break it into fragments, or leave nothing of it). Returns whether it
+// split.
 bool split_element(Plane& ink, const std::vector<int>& members, const std::vector<int>& column, int min_piece,
                    float paper) {
     const LocalGrid g = local_grid(members, column, ink.cols);
@@ -203,22 +222,13 @@ bool split_element(Plane& ink, const std::vector<int>& members, const std::vecto
         else
             kept[size_t(k)] = 1;
     }
-    // Every piece the cut leaves (kept texels, 8-connected) must be a blob's worth: cuts on
-    // two sides of a thin blob could break it into fragments.
-    std::vector<uint8_t> seen(b.of.size(), 0);
-    int pieces = 0;
-    for (int k = 0; k < int(b.of.size()); ++k) {
-        if (!kept[size_t(k)] || seen[size_t(k)]) continue;
-        std::vector<int> piece{k};
-        seen[size_t(k)] = 1;
-        for (size_t q = 0; q < piece.size(); ++q)
-            g.neighbours(piece[q], 1, [&](int j) {
-                if (kept[size_t(j)] && !seen[size_t(j)]) seen[size_t(j)] = 1, piece.push_back(j);
-            });
+    std::vector<uint8_t> has_piece(size_t(b.count) + 1, 0);
+    for (const std::vector<int>& piece : pieces_of(g, kept)) {
         if (int(piece.size()) < min_piece) return false;
-        ++pieces;
+        has_piece[size_t(b.of[size_t(piece.front())])] = 1;  // kept texels of two blobs never touch
     }
-    if (pieces < 2) return false;
+    for (int id = 1; id <= b.count; ++id)
+        if (!has_piece[size_t(id)]) return false;
     for (int k : cut) ink.v[size_t(g.texel[size_t(k)])] = paper;
     return true;
 }
@@ -242,16 +252,10 @@ bool trim_element(Plane& ink, const std::vector<int>& members, const std::vector
             if (float(dr * dr + du * du) < rho * rho) body[size_t(j)] = 1;
         });
     }
+    std::vector<uint8_t> outside_body(size_t(n), 0);
+    for (int k = 0; k < n; ++k) outside_body[size_t(k)] = g.inside(k) && !body[size_t(k)];
     bool trimmed = false;
-    std::vector<uint8_t> seen(size_t(n), 0);
-    for (int k = 0; k < n; ++k) {
-        if (!g.inside(k) || body[size_t(k)] || seen[size_t(k)]) continue;
-        std::vector<int> piece{k};
-        seen[size_t(k)] = 1;
-        for (size_t q = 0; q < piece.size(); ++q)
-            g.neighbours(piece[q], 1, [&](int j) {
-                if (g.inside(j) && !body[size_t(j)] && !seen[size_t(j)]) seen[size_t(j)] = 1, piece.push_back(j);
-            });
+    for (const std::vector<int>& piece : pieces_of(g, outside_body)) {
         if (int(piece.size()) < min_piece) continue;
         for (int j : piece) ink.v[size_t(g.texel[size_t(j)])] = paper;
         trimmed = true;

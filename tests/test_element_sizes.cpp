@@ -284,3 +284,24 @@ TEST(ElementSizes, ABandIsNotCutOrTrimmed) {
     EXPECT_EQ(changes.split + changes.trimmed, 0);
     for (size_t i = 0; i < p.size(); ++i) ASSERT_EQ(p.v[i], before.v[i]);
 }
+
+// A small lobe on a dot, a peak of its own past a neck: split off, it would keep fewer
+// texels than half the exemplar's smallest element. Not split.
+TEST(ElementSizes, ALobeTooSmallToBeAnElementIsNotSplitOff) {
+    const auto disc = [](Plane& q, int r0, int c0, int r2) {
+        for (int dr = -4; dr <= 4; ++dr)
+            for (int dc = -4; dc <= 4; ++dc)
+                if (dr * dr + dc * dc <= r2) q.at(r0 + dr, c0 + dc) = 1.0f;
+    };
+    Plane exemplar(20, 80);
+    for (int c : {12, 40, 68}) disc(exemplar, 10, c, 16);  // 49 texels: a piece needs 25
+    const ElementSizes sizes = element_sizes(exemplar);
+    Plane p(20, 64);
+    disc(p, 10, 20, 16);
+    disc(p, 10, 27, 6);  // 21 texels, touching the dot's rim
+    ASSERT_EQ(element_areas(p).size(), 1u);
+    ASSERT_GT(element_areas(p)[0], sizes.max_area);
+    const ElementChanges changes = impose_element_sizes(p, sizes, 0.0f, 4);
+    EXPECT_EQ(changes.split, 0);
+    EXPECT_EQ(element_areas(p).size(), 1u);
+}

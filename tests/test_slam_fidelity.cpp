@@ -147,7 +147,8 @@ TEST(SlamFidelitySynthesis, RowsKeepTheirStatisticsWhereElementSizesAreImposed) 
         analyze_texture(pad_exemplar(ink, m, cols), make_pyramid_geometry(m.padded_rows, cols, m.scales, 4), 9);
     ASSERT_TRUE(target.elements.alike());
     const PyramidGeometry g = make_pyramid_geometry(m.padded_rows, length, m.scales, 4);
-    // The plane the last iteration starts from has elements for the step to mend (seed 2).
+    // One iteration before the last, the plane already has elements the step would mend
+    // (seed 2): a stand-in for what the last iteration's own pyramid pass leaves it.
     ElementChanges before_last;
     const auto look = [&](int iteration, const Plane& image) {
         if (iteration != 13) return;

@@ -51,7 +51,7 @@ TEST_F(SlamCli, WritesTheSlamAndTheContactSheet) {
     ASSERT_EQ(r.exit_code, 0) << r.output;
     for (const char* text : {"padded to 16 rows", "level  4  l = 1.0000", "self-similarity error", "cross-scale phase",
                              "RMS difference of adjacent levels", "fidelity to the exemplar", "largest grain over all levels",
-                             "element sizes",
+                             "element sizes not imposed: the exemplar's", "are unlike",
                              "wrote"})
         EXPECT_NE(r.output.find(text), std::string::npos) << text << "\n" << r.output;
     const Slam slam = read_slam(out);
@@ -64,6 +64,21 @@ TEST_F(SlamCli, WritesTheSlamAndTheContactSheet) {
     const ImageRGBA8 preview = read_image_rgba8(sheet);
     EXPECT_EQ(preview.width, 256);
     EXPECT_EQ(preview.height, 8 + 4 + 5 * (8 + 4));
+}
+
+// The report says when the exemplar's elements are alike and their sizes imposed.
+TEST_F(SlamCli, TheReportSaysWhenElementSizesAreImposed) {
+    const fs::path dir = test::temp_dir(), exemplar = dir / "same.png";
+    ImageRGBA8 image{.width = 128, .height = 8, .pixels = std::vector<uint8_t>(128 * 8 * 4, 255)};
+    for (int x = 2; x + 8 < 128; x += 14)  // identical 8 × 4 dashes
+        for (int i = x; i < x + 8; ++i)
+            for (int y = 2; y < 6; ++y) std::fill(image.at(i, y), image.at(i, y) + 3, uint8_t(0));
+    write_png(exemplar, image);
+    const auto r = run_linework("slam " + quote(exemplar) + " -o " + quote(dir / "same.exr") +
+                                " --levels 3 --length 256 --iterations 2 --report");
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("element sizes imposed: the exemplar's 9 elements are alike (32-32 texels)"), std::string::npos)
+        << r.output;
 }
 
 TEST_F(SlamCli, BadInputIsOneLineNamingTheFile) {
