@@ -21,7 +21,10 @@ def resident_mb():
 def growth_mb(step, rounds):
     """Resident growth over `rounds` calls of step(). A leak grows in every such window; a one-off
     jump (glibc opening another arena when threads contend on a loaded machine) does not, so a
-    window over the limit is measured once more and the second one decides."""
+    window over the limit is measured again, up to three windows in all, and any one under the
+    limit decides. Such jumps are common (the 30-session window: +5.1 MB then +0.27 MB in one run
+    of five beside a SLAM synthesis, +5.0 then +0.6 MB in a run alone), and two in a row failed
+    the suite once. A step that keeps 200 KB a call still fails: +5.7, +5.9, +5.9 MB."""
     before = resident_mb()
     for i in range(rounds):
         step(i)
@@ -29,13 +32,14 @@ def growth_mb(step, rounds):
     return resident_mb() - before
 
 
-def assert_flat(step, rounds, what, limit=4.0):
-    grown = growth_mb(step, rounds)
-    print(f"+{grown:.2f} MB after {what}")
-    if grown >= limit:
-        grown = growth_mb(step, rounds)
-        print(f"+{grown:.2f} MB after {what} again")
-    assert grown < limit, f"grew by {grown:.2f} MB in two windows of {what}"
+def assert_flat(step, rounds, what, limit=4.0, windows=3):
+    grown = []
+    for _ in range(windows):
+        grown.append(growth_mb(step, rounds))
+        print(f"+{grown[-1]:.2f} MB after {what}")
+        if grown[-1] < limit:
+            return
+    assert False, f"grew in every one of {windows} windows of {what}: " + ", ".join(f"+{g:.2f} MB" for g in grown)
 
 
 def test_a_thousand_renders_do_not_grow_the_process():
