@@ -119,8 +119,7 @@ std::vector<bool> split_round(std::vector<ScreenPath>& paths, VoteSet& votes, st
     auto add_piece = [&](ScreenPath& path, size_t p, size_t from, size_t to, const PathFit* keep) {
         const float shift = path.samples[from].s - path.samples.front().s;  // new arclength origin
         const bool whole = from == 0 && to + 1 == path.samples.size();
-        ScreenPath piece{.type = path.type, .closed = whole && path.closed, .visible = path.visible, .qi = path.qi,
-                         .source = path.source};
+        ScreenPath piece = empty_like(path, whole && path.closed);
         if (whole)
             piece.samples = std::move(path.samples);
         else

@@ -25,8 +25,7 @@ void append_still_pieces(ScreenPath&& path, const StillPath& recorded, const Sti
         const StillPiece& piece = record.pieces[i];
         // As path_split's pieces: open unless the whole loop, the other fields kept.
         const bool whole = piece.first == 0 && piece.count == n;
-        ScreenPath out{.type = path.type, .closed = whole && path.closed, .visible = path.visible, .qi = path.qi,
-                       .source = path.source};
+        ScreenPath out = empty_like(path, whole && path.closed);
         const size_t first = std::min<size_t>(piece.first, path.samples.size());
         const size_t last = std::min<size_t>(size_t(piece.first) + piece.count, path.samples.size());
         out.samples.assign(path.samples.begin() + std::ptrdiff_t(first), path.samples.begin() + std::ptrdiff_t(last));

@@ -42,11 +42,6 @@ glm::vec2 unit_or_zero(glm::vec2 d) {
 // The stroke builder's normal convention: (−dy, dx) of the direction d.
 glm::vec2 perp(glm::vec2 d) { return {-d.y, d.x}; }
 
-ScreenPath empty_like(const ScreenPath& path) {
-    return ScreenPath{
-        .type = path.type, .closed = false, .visible = path.visible, .qi = path.qi, .source = path.source, .samples = {}};
-}
-
 // Cumulative pixel arclength of the samples (open: the closing segment is not counted).
 std::vector<float> pixel_arclength(const ScreenPath& path) {
     std::vector<float> keys(path.samples.size(), 0.0f);

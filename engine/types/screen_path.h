@@ -39,6 +39,12 @@ struct ScreenPath {
     std::vector<ScreenSample> samples;
 };
 
+// A path with `path`'s type, visibility, occlusion level and source and no samples: open
+// unless `closed` (a piece of a path, or a path rebuilt from it).
+inline ScreenPath empty_like(const ScreenPath& path, bool closed = false) {
+    return ScreenPath{.type = path.type, .closed = closed, .visible = path.visible, .qi = path.qi, .source = path.source};
+}
+
 // The screen length of a loop's closing segment, from its last sample back to its first (0
 // for an open path).
 inline float closing_length(const ScreenPath& path) {
@@ -52,7 +58,7 @@ inline ScreenPath open_loop_at(const ScreenPath& path, size_t k) {
     const auto& s = path.samples;
     const size_t n = s.size();
     const float loop = s.back().s - s.front().s + closing_length(path);
-    ScreenPath open{.type = path.type, .closed = false, .visible = path.visible, .qi = path.qi, .source = path.source};
+    ScreenPath open = empty_like(path);
     open.samples.reserve(n + 1);
     for (size_t i = k; i < n; ++i) open.samples.push_back(s[i]);
     for (size_t i = 0; i <= k; ++i) {
