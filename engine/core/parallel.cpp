@@ -16,7 +16,14 @@
 
 namespace lw {
 
-size_t worker_count() { return std::max<size_t>(1, std::thread::hardware_concurrency()); }
+// Read once: std::thread::hardware_concurrency() reads /sys/devices/system/cpu/online with
+// three system calls each time (5.8 us a call on the 2-core VM), and every parallel_for and
+// team asked for it, which was most of a team's fork on a 0.1 ms pass (docs/BENCHMARKS.md,
+// "Two threads against one").
+size_t worker_count() {
+    static const size_t count = std::max<size_t>(1, std::thread::hardware_concurrency());
+    return count;
+}
 
 namespace {
 
