@@ -348,6 +348,29 @@ TEST(Coherence, SlidingComparesASharedEndWithItsOwnPath) {
     EXPECT_EQ(still.p90_dt, 0.0);
 }
 
+// A sample is compared with T on the previous frame's path where it lies, interpolated between
+// that path's samples, not with the nearest sample's T: samples 2 px apart that moved 0.7 px
+// along a texture that did not slide measure 0, and a texture sliding 0.5 px a frame measures
+// 0.5 px, whatever the samples' offset (matched to the nearest sample, both read 0.7 px).
+TEST(Coherence, SlidingIsMeasuredBetweenSamples) {
+    constexpr float kRho = 0.01f;  // periods a pixel
+    auto frame = [](int f, float offset, float slide) {
+        DumpPath path{.type = "silhouette", .line_set = "silhouette", .rho = kRho, .samples = {}};
+        for (int k = 0; k <= 20; ++k) {
+            const float x = 2.0f * float(k) + offset;
+            path.samples.push_back({{x, 5.0f}, x, kRho * (x - slide), kRho * (x - slide)});
+        }
+        return PathDump{.frame = f, .paths = {path}};
+    };
+    const SlidingMeasure still = measure_sliding({frame(0, 0.0f, 0.0f), frame(1, 0.7f, 0.0f)});
+    ASSERT_EQ(still.pairs, 21u);  // the last sample, 0.7 px past the path's end, meets that end
+    EXPECT_NEAR(still.median_px, 0.0, 1e-4);
+    EXPECT_NEAR(still.p90_px, 0.0, 1e-4);
+    const SlidingMeasure sliding = measure_sliding({frame(0, 0.0f, 0.0f), frame(1, 0.7f, 0.5f)});
+    EXPECT_NEAR(sliding.median_px, 0.5, 1e-4);
+    EXPECT_NEAR(sliding.p90_px, 0.5, 1e-4);
+}
+
 // Two paths of a set running 1 px apart (parallel silhouettes of nested parts) whose phases
 // swap each frame, as when the two trade places in the chaining: the full measure sees them
 // pop, though the pair of textures is the same every frame; the pairs where one path lies alone leave them out and keep the lone path's, and

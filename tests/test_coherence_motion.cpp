@@ -140,17 +140,19 @@ TEST_F(CoherenceMotion, LowPolyEdgesUnderAStillCamera) {
 }
 
 // A dolly toward the model: the texture's scale follows the view's zoom (the SLAM level
-// changes) and its phase stays on the lines. Measured: silhouettes 0.307 / 0.208 / 0.33,
-// suggestive contours 0.343 / 0.587 / 0.65 (the median was 0.147 until shared ends compared
-// with their own path: the tiling policy's median fell, ours stayed) — not the orbit's
-// goals: a perspective dolly
+// changes) and its phase stays on the lines. Measured: silhouettes 0.503 / 0.196 / 0.26,
+// suggestive contours 0.334 / 0.460 / 0.62. (Against the nearest sample a frame earlier,
+// before the measure interpolated between samples: 0.307 / 0.208 / 0.33 and 0.343 / 0.587 /
+// 0.65. The tiling policy's silhouette median was one sample spacing, 2 px, and is 1.2 px
+// between samples; ours stayed at 0.8 px. The median was 0.147 until shared ends compared
+// with their own path.) Not the orbit's goals: a perspective dolly
 // zooms near parts more than far ones, and a contour's votes carry only the zoom at the
 // subject's median depth along the line (coherence.cpp, gather_votes).
 TEST_F(CoherenceMotion, Dolly) {
     compare(scene("spot/spot.glb", R"("camera_path": {"keyframes": [
         {"time": 0, "eye": [0.3, 0.4, 3.2], "target": [0, 0.1, 0]},
         {"time": 1, "eye": [0.2, 0.3, 2.0], "target": [0, 0.1, 0]}]})"),
-            24, {"silhouette", "suggestive"}, {.median = 0.4, .p90 = 0.75, .pops = 0.9});
+            24, {"silhouette", "suggestive"}, {.median = 0.6, .p90 = 0.75, .pops = 0.9});
 }
 
 }  // namespace

@@ -207,11 +207,11 @@ SlidingMeasure measure_sliding(const std::vector<PathDump>& frames, float match_
         SampleGrid current(frames[f], std::max(match_px, 1.0f));
         for (const auto& path : frames[f].paths)
             for (const auto& s : path.samples) {
-                auto distance = [&](const SampleGrid::Entry& e) { return glm::length(e.sample().pixel - s.pixel); };
+                auto distance = [&](const SampleGrid::Entry& e) { return point_on_path(e, s.pixel).distance; };
                 const SampleGrid::Entry* matched = nullptr;
                 double best_dt = 0.0;
                 auto phase = [&](const SampleGrid::Entry& e) {
-                    const double dt = wrapped_dt(s.t, e.sample().t);
+                    const double dt = wrapped_dt(s.t, point_on_path(e, s.pixel).t);
                     if (!matched || dt < best_dt) matched = &e, best_dt = dt;
                     return dt;
                 };

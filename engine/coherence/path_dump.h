@@ -78,6 +78,12 @@ struct SlidingMeasure : SlidingStats {
     // lines" as the splat's limit. Reported beside the whole measure, not in its place.
     SlidingStats alone;
 };
+// Per sample of each frame after the first: |Δt| (wrapped to half a period) against T on the
+// previous frame's nearest path of the same line set within `match_px`, interpolated where
+// the sample lies between that path's samples, as measure_phase_error does. (Against the
+// nearest sample's own T, as until 2026-12-05, the measure could not see less than a sample
+// spacing, 2 px: a texture that did not slide read one spacing wherever the samples had
+// moved along the path, and one that slid by less read 0 or a spacing.)
 [[nodiscard]] SlidingMeasure measure_sliding(const std::vector<PathDump>& frames, float match_px = 1.5f);
 
 // How far one frame's parameterization is from a reference render of the same frame (a
