@@ -236,28 +236,36 @@ TEST_F(LinesTest, HiddenLinesAreHiddenAndCanBeDrawn) {
 
 // Threads over face blocks merge in block order: the same segments, bit for bit, in the same
 // order, at any thread count (18 blocks of 1024 faces here), and a workspace kept from view
-// to view (as a frame keeps it) changes nothing.
+// to view (as a frame keeps it) changes nothing. With mesh contours too: each member finds
+// the facing of the faces in proportion to its vertices, so the shares must tile the faces.
 TEST(LinesThreads, SameSegmentsInTheSameOrderAtAnyThreadCount) {
     const LoadedScene scene = load_scene(scene_for_model(test::data_dir() / "models/LeePerrySmith/LeePerrySmith.glb"));
     const LineMesh lm = build_line_mesh(scene.mesh, 30.0f);
-    LineParams params;
-    params.creases = params.borders = true;
-    const std::vector<LineSegment> one = extract_lines_reference(lm, scene.camera.eye, params, 1);
-    size_t suggestive = 0;
-    for (const LineSegment& s : one) suggestive += s.type == uint32_t(LineType::Suggestive);
-    ASSERT_GT(one.size(), 200u);
-    EXPECT_GT(suggestive, 10u);
-    ExtractWorkspace workspace;
-    std::vector<LineSegment> kept;
-    for (size_t threads : {2u, 3u, 7u, 1u, 2u}) {
-        const std::vector<LineSegment> many = extract_lines_reference(lm, scene.camera.eye, params, threads);
-        ASSERT_EQ(many.size(), one.size()) << threads << " threads";
-        EXPECT_EQ(std::memcmp(many.data(), one.data(), one.size() * sizeof(LineSegment)), 0) << threads << " threads";
-        // Another view first, so that the kept output and scratch hold other data.
-        extract_lines_reference(lm, scene.camera.eye + glm::vec3(3.0f, -1.0f, 0.0f), params, kept, workspace, threads);
-        extract_lines_reference(lm, scene.camera.eye, params, kept, workspace, threads);
-        ASSERT_EQ(kept.size(), one.size()) << threads << " threads, kept workspace";
-        EXPECT_EQ(std::memcmp(kept.data(), one.data(), one.size() * sizeof(LineSegment)), 0) << threads << " threads";
+    for (const ContourMode contours : {ContourMode::Smooth, ContourMode::Mesh, ContourMode::Auto}) {
+        SCOPED_TRACE(contour_mode_name(contours));
+        LineParams params;
+        params.creases = params.borders = true;
+        params.contours = contours;
+        const std::vector<LineSegment> one = extract_lines_reference(lm, scene.camera.eye, params, 1);
+        size_t suggestive = 0;
+        for (const LineSegment& s : one) suggestive += s.type == uint32_t(LineType::Suggestive);
+        ASSERT_GT(one.size(), 200u);
+        EXPECT_GT(suggestive, 10u);
+        ExtractWorkspace workspace;
+        std::vector<LineSegment> kept;
+        for (size_t threads : {2u, 3u, 7u, 1u, 2u}) {
+            const std::vector<LineSegment> many = extract_lines_reference(lm, scene.camera.eye, params, threads);
+            ASSERT_EQ(many.size(), one.size()) << threads << " threads";
+            EXPECT_EQ(std::memcmp(many.data(), one.data(), one.size() * sizeof(LineSegment)), 0)
+                << threads << " threads";
+            // Another view first, so that the kept output and scratch hold other data.
+            const glm::vec3 other_eye = scene.camera.eye + glm::vec3(3.0f, -1.0f, 0.0f);
+            extract_lines_reference(lm, other_eye, params, kept, workspace, threads);
+            extract_lines_reference(lm, scene.camera.eye, params, kept, workspace, threads);
+            ASSERT_EQ(kept.size(), one.size()) << threads << " threads, kept workspace";
+            EXPECT_EQ(std::memcmp(kept.data(), one.data(), one.size() * sizeof(LineSegment)), 0)
+                << threads << " threads";
+        }
     }
 }
 

@@ -15,7 +15,7 @@
 
 namespace lw {
 
-size_t worker_count();  // std::thread::hardware_concurrency, at least 1
+size_t worker_count();  // std::thread::hardware_concurrency, at least 1, read once per process
 
 // Returns the number of chunks used (≤ max_chunks, 0: ≤ worker_count()).
 size_t parallel_for(size_t count, size_t min_chunk,

@@ -310,12 +310,12 @@ private:
 // Faces are taken in blocks of this many, whatever the thread count, so that the output
 // order is the same for any count.
 constexpr size_t kBlockFaces = 1024;
-// Fewer faces than this a member and the team keeps one thread. A team costs a few
-// microseconds (fork, join, two or three barriers; 10 us until worker_count() stopped
-// reading /sys at every call). With two threads from 8192 faces, a 13k-face mesh (0.07 ms
-// a view) takes 1.69-1.75x less time; 3-6k-face meshes would gain only 1.15-1.44x, and a
-// frame's second core is often busy with lavapipe's threads. The blocks, and so the output,
-// do not change with the count.
+// A team has at most faces / this many members (one below twice this). A team costs a few
+// microseconds (fork, join, two or three barriers; 8.5 us more until worker_count() stopped
+// reading /sys at every call). With two threads from 8192 faces, a 13k-face mesh (0.07 ms a
+// view) runs 1.7-1.8x faster; 3-6k-face meshes would gain only 1.15-1.44x, and a frame's
+// second core is often busy with lavapipe's threads. The blocks, and so the output, do not
+// change with the count.
 constexpr size_t kMinFacesPerThread = 4096;
 
 // Pass 2 over one block of faces [begin, end), appending to `out`. First the faces a line

@@ -13,8 +13,9 @@
 # time") and "isec generated N lines". Each round evaluates the modifier with intersection
 # lines off, then on; the difference of the two "intersection time"s is what intersections
 # cost Line Art (the stage also bins the triangles into screen tiles, which occlusion needs
-# either way). The camera looks at the pair from four times its size, so that every triangle
-# is in the frame (Line Art leaves out what the camera does not see).
+# either way). The camera looks at the model's centre from four times the model's size, so
+# that every triangle of the pair is in the frame (Line Art leaves out what the camera does
+# not see).
 import math
 import sys
 import time
@@ -46,6 +47,8 @@ bpy.context.view_layer.objects.active = meshes[0]
 if len(meshes) > 1:
     bpy.ops.object.join()  # one object, as linework-bench flattens the model into one mesh
 a = bpy.context.view_layer.objects.active
+# World-space vertices: an importer may parent the meshes to empties (glTF nodes).
+bpy.ops.object.parent_clear(type="CLEAR_KEEP_TRANSFORM")
 bpy.ops.object.transform_apply(location=True, rotation=True, scale=True)
 bpy.context.view_layer.update()
 corners = [Vector(c) for c in a.bound_box]
