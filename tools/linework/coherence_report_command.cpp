@@ -156,7 +156,11 @@ Runner add_coherence_report_command(CLI::App& app) {
     auto o = std::make_shared<ReportOptions>();
     CLI::App* cmd = app.add_subcommand("coherence-report",
                                        "Measure sliding and stretch of strokes from --dump-paths folders; with "
-                                       "--against, the phase error of each frame against another render's dumps.");
+                                       "--against, the phase error of each frame against another render's dumps. "
+                                       "Sliding: each sample's phase change |dt| against T on the previous frame's "
+                                       "nearest path of the same line set (within 1.5 px), interpolated between that "
+                                       "path's samples; its median, 90th percentile and the share over a quarter "
+                                       "period (pops), also over the pairs where one path lies alone.");
     cmd->add_option("dumps", o->folders, "Dump folders written by `linework render --dump-paths`")->required();
     cmd->add_option("--against", o->against,
                     "Reference dump folder of the same frames (one render of the shot): print per frame how far "
