@@ -86,7 +86,9 @@ TEST(Outline, EachDrawingAndEachLevelHasItsOwn) {
         expect_square_outline(p, x0);
         EXPECT_EQ(p.visible, p.qi == 0);
         hidden += p.qi == 1;
-        if (p.qi == 1) EXPECT_EQ(x0, 400.0f);
+        if (p.qi == 1) {
+            EXPECT_EQ(x0, 400.0f);
+        }
     }
     EXPECT_EQ(hidden, 1u);
 }
