@@ -83,14 +83,36 @@ void vertex_passes(const LineVertexArrays& va, const glm::vec3& eye, const LineP
         vertex_pass(va, eye, t.sug_thresh, begin, end, ws);
 }
 
-// Whether faces [begin, end) face the eye, for mesh contours.
-void facing_pass(const LineMesh& lm, const glm::vec3& eye, size_t begin, size_t end, uint8_t* front) {
+// Each face's n = (x1 − x0) × (x2 − x0) and x0, once per pose (ExtractWorkspace::FacePlanes).
+void face_planes(const LineMesh& lm, ExtractWorkspace::FacePlanes& planes) {
+    const size_t n_faces = lm.mesh.faces.size();
+    for (auto* a : {&planes.nx, &planes.ny, &planes.nz, &planes.x0, &planes.y0, &planes.z0}) a->resize(n_faces);
     const auto& x = lm.mesh.positions;
-    for (size_t f = begin; f < end; ++f) {
+    for (size_t f = 0; f < n_faces; ++f) {
         const glm::uvec3 c = lm.mesh.faces[f];
-        const glm::vec3 a = x[c.y] - x[c.x], b = x[c.z] - x[c.x], v = eye - x[c.x];
-        const glm::vec3 n(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
-        front[f] = n.x * v.x + n.y * v.y + n.z * v.z > 0.0f;
+        const glm::vec3 a = x[c.y] - x[c.x], b = x[c.z] - x[c.x];
+        planes.nx[f] = a.y * b.z - a.z * b.y;
+        planes.ny[f] = a.z * b.x - a.x * b.z;
+        planes.nz[f] = a.x * b.y - a.y * b.x;
+        planes.x0[f] = x[c.x].x;
+        planes.y0[f] = x[c.x].y;
+        planes.z0[f] = x[c.x].z;
+    }
+    planes.generation = lm.generation;
+}
+
+// Whether faces [begin, end) face the eye, for mesh contours: n · (eye − x0) > 0 from the
+// pose's arrays, a loop GCC vectorizes (no FMA: -ffp-contract=off, so each lane gives the
+// GPU's bits). Per view it reads 24 bytes a face in order, where computing n read three
+// corners through the face's indices.
+__attribute__((target_clones("avx2", "default"))) void facing_pass(const ExtractWorkspace::FacePlanes& p,
+                                                                   const glm::vec3& eye, size_t begin, size_t end,
+                                                                   uint8_t* front) {
+    const float *nx = p.nx.data(), *ny = p.ny.data(), *nz = p.nz.data();
+    const float *x0 = p.x0.data(), *y0 = p.y0.data(), *z0 = p.z0.data();
+    for (size_t f = begin; f < end; ++f) {
+        const float vx = eye.x - x0[f], vy = eye.y - y0[f], vz = eye.z - z0[f];
+        front[f] = uint8_t(nx[f] * vx + ny[f] * vy + nz[f] * vz > 0.0f);
     }
 }
 
@@ -102,7 +124,7 @@ void optional_vertex_pass(const LineMesh& lm, const glm::vec3& eye, const LinePa
                           const ScaledThresholds& thresholds, size_t begin, size_t end, ExtractWorkspace& ws) {
     if (params.apparent_ridges) apparent_curvature(lm, eye, ws.ndotv.data(), begin, end, ws.apparent);
     if (params.silhouettes && params.contours != ContourMode::Smooth)
-        facing_pass(lm, eye, lm.mesh.faces.size() * begin / std::max<size_t>(1, lm.vertex_arrays.count),
+        facing_pass(ws.face_planes, eye, lm.mesh.faces.size() * begin / std::max<size_t>(1, lm.vertex_arrays.count),
                     lm.mesh.faces.size() * end / std::max<size_t>(1, lm.vertex_arrays.count), ws.front.data());
     if (params.principal_highlights)
         highlight_vertices(lm, eye, ws.ndotv.data(), thresholds.ph_thresh, begin, end, ws.principal_along.data(),
@@ -394,7 +416,11 @@ void extract_lines_reference(const LineMesh& lm, const glm::vec3& eye, const Lin
     ws.signs.resize(nv + kSignPadding);
     if (params.suggestive_highlights) ws.highlight_num.resize(nv);
     if (params.apparent_ridges) ws.apparent.resize(nv);
-    if (params.silhouettes && params.contours != ContourMode::Smooth) ws.front.resize(lm.mesh.faces.size());
+    if (params.silhouettes && params.contours != ContourMode::Smooth) {
+        ws.front.resize(lm.mesh.faces.size());
+        if (!holds_pose(ws.face_planes.generation, lm) || ws.face_planes.nx.size() != lm.mesh.faces.size())
+            face_planes(lm, ws.face_planes);
+    }
     if (params.principal_highlights) {
         ws.principal_along.resize(nv);
         ws.principal_strength.resize(nv);

@@ -35,6 +35,13 @@ struct ExtractWorkspace {
     std::vector<float> principal_along, principal_strength;  // principal highlights' (when drawn)
     std::vector<uint8_t> principal_flags;
     std::vector<uint8_t> front;  // per face, 1 where it faces the eye (mesh contours)
+    // Per pose, for mesh contours: each face's n = (x1 − x0) × (x2 − x0) and x0, as six
+    // arrays, so that a view's facing n · (eye − x0) > 0 is one streaming pass (the same
+    // operations as the GPU's `front_facing`, split between the pose and the view).
+    struct FacePlanes {
+        uint64_t generation = 0;  // LineMesh::generation of the arrays (0: none)
+        std::vector<float> nx, ny, nz, x0, y0, z0;
+    } face_planes;
     uint64_t principal_generation = 0;  // LineMesh::generation of principal_shapes
     std::vector<uint8_t> principal_shapes;  // per face, view-independent (principal_highlight_shapes)
     // Ridges and valleys do not depend on the view but for back-face culling: a mesh pose
