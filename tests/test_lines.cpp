@@ -269,6 +269,38 @@ TEST(LinesThreads, SameSegmentsInTheSameOrderAtAnyThreadCount) {
     }
 }
 
+// Mesh contours keep each face's normal and first corner per pose (ExtractWorkspace::
+// FacePlanes): a pose's first view computes the facing from the corners, its second fills
+// the arrays, later views read them. A workspace kept across a new pose (an animation frame)
+// finds the new pose's facing at each of those steps: the same segments as a fresh
+// workspace, and not the old pose's.
+TEST(LinesThreads, MeshContoursFollowANewPoseWithAKeptWorkspace) {
+    const LoadedScene scene = load_scene(scene_for_model(test::data_dir() / "models/spot/spot.glb"));
+    LineMesh lm = build_line_mesh(scene.mesh, 45.0f);
+    LineParams params;
+    params.contours = ContourMode::Mesh;
+    const glm::vec3 eye = scene.bounds.center() + 3.0f * scene.bounds.radius() * glm::vec3(0.6f, 0.3f, 0.74f);
+    ExtractWorkspace kept;
+    std::vector<LineSegment> first_pose, view;
+    const auto same = [](const std::vector<LineSegment>& a, const std::vector<LineSegment>& b) {
+        return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(LineSegment)) == 0;
+    };
+    for (int k = 0; k < 3; ++k) {  // corners, fill, stream
+        extract_lines_reference(lm, eye, params, view, kept);
+        if (k == 0) first_pose = view;
+        EXPECT_TRUE(same(view, first_pose)) << "view " << k << " of the first pose";
+    }
+    TriangleMesh moved = scene.mesh;
+    for (glm::vec3& p : moved.positions) p += glm::vec3(0.0f, 0.08f * std::sin(4.0f * p.x), 0.05f * p.y);
+    pose_line_mesh(lm, moved);
+    const std::vector<LineSegment> fresh = extract_lines_reference(lm, eye, params);
+    EXPECT_FALSE(same(fresh, first_pose)) << "the pose moved the contours";
+    for (int k = 0; k < 3; ++k) {
+        extract_lines_reference(lm, eye, params, view, kept);
+        EXPECT_TRUE(same(view, fresh)) << "view " << k << " of the new pose";
+    }
+}
+
 // The face scan finds the same candidate faces eight at a time (AVX2, where the CPU has
 // it) as one by one, on every combination of sign bytes: random bytes on random faces,
 // ranges that do not start or end on a multiple of eight.

@@ -83,22 +83,27 @@ void vertex_passes(const LineVertexArrays& va, const glm::vec3& eye, const LineP
         vertex_pass(va, eye, t.sug_thresh, begin, end, ws);
 }
 
-// Each face's n = (x1 − x0) × (x2 − x0) and x0, once per pose (ExtractWorkspace::FacePlanes).
-void face_planes(const LineMesh& lm, ExtractWorkspace::FacePlanes& planes) {
-    const size_t n_faces = lm.mesh.faces.size();
-    for (auto* a : {&planes.nx, &planes.ny, &planes.nz, &planes.x0, &planes.y0, &planes.z0}) a->resize(n_faces);
+// The facing of faces [begin, end) from their corners, and (kKeep, a pose's second view)
+// each face's n = (x1 − x0) × (x2 − x0) and x0 kept for its later views
+// (ExtractWorkspace::FacePlanes): the values facing_pass reads, in the same operations.
+template <bool kKeep>
+void facing_from_corners(const LineMesh& lm, const glm::vec3& eye, size_t begin, size_t end,
+                         ExtractWorkspace::FacePlanes& planes, uint8_t* front) {
     const auto& x = lm.mesh.positions;
-    for (size_t f = 0; f < n_faces; ++f) {
+    for (size_t f = begin; f < end; ++f) {
         const glm::uvec3 c = lm.mesh.faces[f];
-        const glm::vec3 a = x[c.y] - x[c.x], b = x[c.z] - x[c.x];
-        planes.nx[f] = a.y * b.z - a.z * b.y;
-        planes.ny[f] = a.z * b.x - a.x * b.z;
-        planes.nz[f] = a.x * b.y - a.y * b.x;
-        planes.x0[f] = x[c.x].x;
-        planes.y0[f] = x[c.x].y;
-        planes.z0[f] = x[c.x].z;
+        const glm::vec3 x0 = x[c.x], a = x[c.y] - x0, b = x[c.z] - x0, v = eye - x0;
+        const float nx = a.y * b.z - a.z * b.y, ny = a.z * b.x - a.x * b.z, nz = a.x * b.y - a.y * b.x;
+        if constexpr (kKeep) {
+            planes.nx[f] = nx;
+            planes.ny[f] = ny;
+            planes.nz[f] = nz;
+            planes.x0[f] = x0.x;
+            planes.y0[f] = x0.y;
+            planes.z0[f] = x0.z;
+        }
+        front[f] = uint8_t(nx * v.x + ny * v.y + nz * v.z > 0.0f);
     }
-    planes.generation = lm.generation;
 }
 
 // Whether faces [begin, end) face the eye, for mesh contours: n · (eye − x0) > 0 from the
@@ -108,12 +113,22 @@ void face_planes(const LineMesh& lm, ExtractWorkspace::FacePlanes& planes) {
 __attribute__((target_clones("avx2", "default"))) void facing_pass(const ExtractWorkspace::FacePlanes& p,
                                                                    const glm::vec3& eye, size_t begin, size_t end,
                                                                    uint8_t* front) {
-    const float *nx = p.nx.data(), *ny = p.ny.data(), *nz = p.nz.data();
-    const float *x0 = p.x0.data(), *y0 = p.y0.data(), *z0 = p.z0.data();
+    // (restrict: `front` is bytes, which may alias anything; without it GCC checks at run time.)
+    const float *__restrict nx = p.nx.data(), *__restrict ny = p.ny.data(), *__restrict nz = p.nz.data();
+    const float *__restrict x0 = p.x0.data(), *__restrict y0 = p.y0.data(), *__restrict z0 = p.z0.data();
+    uint8_t* __restrict out = front;
+    const float ex = eye.x, ey = eye.y, ez = eye.z;
     for (size_t f = begin; f < end; ++f) {
-        const float vx = eye.x - x0[f], vy = eye.y - y0[f], vz = eye.z - z0[f];
-        front[f] = uint8_t(nx[f] * vx + ny[f] * vy + nz[f] * vz > 0.0f);
+        const float vx = ex - x0[f], vy = ey - y0[f], vz = ez - z0[f];
+        out[f] = uint8_t(nx[f] * vx + ny[f] * vy + nz[f] * vz > 0.0f);
     }
+}
+
+// Once every share is filled, the arrays hold the pose.
+void planes_filled(const LineMesh& lm, ExtractWorkspace::FacePlanes& planes) {
+    if (planes.use != ExtractWorkspace::FacePlanes::Use::Fill) return;
+    planes.use = ExtractWorkspace::FacePlanes::Use::Stream;
+    planes.generation = lm.generation;
 }
 
 // The per-vertex values only rtsc's optional lines read, over vertices [begin, end) (and
@@ -123,9 +138,16 @@ __attribute__((target_clones("avx2", "default"))) void facing_pass(const Extract
 void optional_vertex_pass(const LineMesh& lm, const glm::vec3& eye, const LineParams& params,
                           const ScaledThresholds& thresholds, size_t begin, size_t end, ExtractWorkspace& ws) {
     if (params.apparent_ridges) apparent_curvature(lm, eye, ws.ndotv.data(), begin, end, ws.apparent);
-    if (params.silhouettes && params.contours != ContourMode::Smooth)
-        facing_pass(ws.face_planes, eye, lm.mesh.faces.size() * begin / std::max<size_t>(1, lm.vertex_arrays.count),
-                    lm.mesh.faces.size() * end / std::max<size_t>(1, lm.vertex_arrays.count), ws.front.data());
+    if (params.silhouettes && params.contours != ContourMode::Smooth) {
+        const size_t nv = std::max<size_t>(1, lm.vertex_arrays.count), faces = lm.mesh.faces.size();
+        const size_t first = faces * begin / nv, last = faces * end / nv;
+        using Use = ExtractWorkspace::FacePlanes::Use;
+        switch (ws.face_planes.use) {
+            case Use::Corners: facing_from_corners<false>(lm, eye, first, last, ws.face_planes, ws.front.data()); break;
+            case Use::Fill: facing_from_corners<true>(lm, eye, first, last, ws.face_planes, ws.front.data()); break;
+            case Use::Stream: facing_pass(ws.face_planes, eye, first, last, ws.front.data()); break;
+        }
+    }
     if (params.principal_highlights)
         highlight_vertices(lm, eye, ws.ndotv.data(), thresholds.ph_thresh, begin, end, ws.principal_along.data(),
                            ws.principal_strength.data(), ws.principal_flags.data());
@@ -416,10 +438,20 @@ void extract_lines_reference(const LineMesh& lm, const glm::vec3& eye, const Lin
     ws.signs.resize(nv + kSignPadding);
     if (params.suggestive_highlights) ws.highlight_num.resize(nv);
     if (params.apparent_ridges) ws.apparent.resize(nv);
+    ws.face_planes.use = ExtractWorkspace::FacePlanes::Use::Corners;
     if (params.silhouettes && params.contours != ContourMode::Smooth) {
-        ws.front.resize(lm.mesh.faces.size());
-        if (!holds_pose(ws.face_planes.generation, lm) || ws.face_planes.nx.size() != lm.mesh.faces.size())
-            face_planes(lm, ws.face_planes);
+        const size_t faces = lm.mesh.faces.size();
+        ws.front.resize(faces);
+        ExtractWorkspace::FacePlanes& planes = ws.face_planes;
+        using Use = ExtractWorkspace::FacePlanes::Use;
+        if (holds_pose(planes.generation, lm) && planes.nx.size() == faces) {
+            planes.use = Use::Stream;
+        } else if (holds_pose(planes.seen, lm)) {  // the vertex passes fill them, each its share of the faces
+            for (auto* a : {&planes.nx, &planes.ny, &planes.nz, &planes.x0, &planes.y0, &planes.z0}) a->resize(faces);
+            planes.generation = 0;
+            planes.use = Use::Fill;
+        }
+        planes.seen = lm.generation;
     }
     if (params.principal_highlights) {
         ws.principal_along.resize(nv);
@@ -443,6 +475,7 @@ void extract_lines_reference(const LineMesh& lm, const glm::vec3& eye, const Lin
     if (threads == 1) {  // straight into the output
         vertex_passes(lm.vertex_arrays, eye, params, thresholds, 0, nv, ws);
         optional_vertex_pass(lm, eye, params, thresholds, 0, nv, ws);
+        planes_filled(lm, ws.face_planes);
         if (params.apparent_ridges) apparent_derivative(lm, ws.ndotv.data(), thresholds.ar_thresh, 0, nv, ws.apparent);
         out.clear();
         for (size_t b = 0; b < blocks; ++b) face_block(b, out);
@@ -463,6 +496,7 @@ void extract_lines_reference(const LineMesh& lm, const glm::vec3& eye, const Lin
         vertex_passes(lm.vertex_arrays, eye, params, thresholds, first, last, ws);
         optional_vertex_pass(lm, eye, params, thresholds, first, last, ws);
         sync.arrive_and_wait();
+        if (member == 0) planes_filled(lm, ws.face_planes);  // (the others only read from here on)
         if (params.apparent_ridges) {  // reads the neighbours' q1
             apparent_derivative(lm, ws.ndotv.data(), thresholds.ar_thresh, first, last, ws.apparent);
             sync.arrive_and_wait();

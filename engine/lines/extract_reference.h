@@ -37,9 +37,13 @@ struct ExtractWorkspace {
     std::vector<uint8_t> front;  // per face, 1 where it faces the eye (mesh contours)
     // Per pose, for mesh contours: each face's n = (x1 − x0) × (x2 − x0) and x0, as six
     // arrays, so that a view's facing n · (eye − x0) > 0 is one streaming pass (the same
-    // operations as the GPU's `front_facing`, split between the pose and the view).
+    // operations as the GPU's `front_facing`, split between the pose and the view). As the
+    // ridge cache: a pose's first view (every frame of an animation) computes the facing
+    // from the corners and keeps nothing; its second fills the arrays; later views stream.
     struct FacePlanes {
         uint64_t generation = 0;  // LineMesh::generation of the arrays (0: none)
+        uint64_t seen = 0;        // the last pose viewed
+        enum class Use : uint8_t { Corners, Fill, Stream } use = Use::Corners;  // this view's
         std::vector<float> nx, ny, nz, x0, y0, z0;
     } face_planes;
     uint64_t principal_generation = 0;  // LineMesh::generation of principal_shapes

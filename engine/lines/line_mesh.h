@@ -74,9 +74,9 @@ struct LineMesh {
 };
 
 // Whether a per-pose cache filled from a line mesh of generation `cached` holds `mesh`'s
-// pose. The one rule of every such cache (ridges, principal highlight shapes, intersection
-// lines, the occlusion index): generation 0, a line mesh not made by build_line_mesh (tests
-// build them by hand), never is.
+// pose. The one rule of every such cache (ridges, principal highlight shapes, mesh contours'
+// face planes, intersection lines, the occlusion index): generation 0, a line mesh not made
+// by build_line_mesh (tests build them by hand), never is.
 inline bool holds_pose(uint64_t cached, const LineMesh& mesh) { return mesh.generation != 0 && cached == mesh.generation; }
 
 [[nodiscard]] LineMesh build_line_mesh(const TriangleMesh& mesh, float crease_angle_deg,
