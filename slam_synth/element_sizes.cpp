@@ -181,21 +181,12 @@ void join_shallow_necks(Blobs& b, const LocalGrid& g, const std::vector<float>& 
     b.count = count;
 }
 
-// The 8-connected pieces of the grid texels marked in `in`.
+// The 8-connected pieces of the grid texels marked in `in` (each piece's texels in order).
 std::vector<std::vector<int>> pieces_of(const LocalGrid& g, const std::vector<uint8_t>& in) {
-    std::vector<std::vector<int>> pieces;
-    std::vector<uint8_t> seen(in.size(), 0);
-    for (int k = 0; k < int(in.size()); ++k) {
-        if (!in[size_t(k)] || seen[size_t(k)]) continue;
-        std::vector<int> piece{k};
-        seen[size_t(k)] = 1;
-        for (size_t q = 0; q < piece.size(); ++q)
-            g.neighbours(piece[q], 1, [&](int j) {
-                if (in[size_t(j)] && !seen[size_t(j)]) seen[size_t(j)] = 1, piece.push_back(j);
-            });
-        pieces.push_back(std::move(piece));
-    }
-    return pieces;
+    std::vector<int> label;
+    const Plane shape(g.rows, g.cols);  // components() reads the grid's dimensions off a plane
+    const size_t count = components(shape, false, true, [&](size_t k) { return in[k] != 0; }, &label).size();
+    return members_of(label, count);
 }
 
 // Splits one element into its blobs when it has two or more: texels with a neighbour of a
@@ -203,10 +194,7 @@ std::vector<std::vector<int>> pieces_of(const LocalGrid& g, const std::vector<ui
 // cut leaves has at least `min_piece` texels and every blob keeps one (cuts on two sides of
 // a thin blob could break it into fragments, or leave nothing of it). Returns whether it
 // split.
-bool split_element(Plane& ink, const std::vector<int>& members, const std::vector<int>& column, int min_piece,
-                   float paper) {
-    const LocalGrid g = local_grid(members, column, ink.cols);
-    const std::vector<float> d = distance_to_paper(g);
+bool split_element(Plane& ink, const LocalGrid& g, const std::vector<float>& d, int min_piece, float paper) {
     Blobs b = watershed(g, d);
     join_shallow_necks(b, g, d);
     if (b.count < 2) return false;
@@ -238,10 +226,7 @@ bool split_element(Plane& ink, const std::vector<int>& members, const std::vecto
 // keeps the element's body; each piece left outside it of `min_piece` texels or more (an
 // attached curl or half dot, not the odd texel of an edge) becomes paper. Returns whether
 // anything was trimmed.
-bool trim_element(Plane& ink, const std::vector<int>& members, const std::vector<int>& column, float rho, int min_piece,
-                  float paper) {
-    const LocalGrid g = local_grid(members, column, ink.cols);
-    const std::vector<float> d = distance_to_paper(g);
+bool trim_element(Plane& ink, const LocalGrid& g, const std::vector<float>& d, float rho, int min_piece, float paper) {
     const int n = int(g.texel.size()), reach = int(std::ceil(rho));
     std::vector<uint8_t> body(size_t(n), 0);
     for (int k = 0; k < n; ++k) {
@@ -347,9 +332,11 @@ ElementChanges impose_element_sizes(Plane& ink, const ElementSizes& sizes, float
         // component is a band or a smear the sizes say nothing about (and the distance to
         // paper, compared pair by pair, would cost its area squared).
         if (c.area > sizes.max_area && c.area <= kMostMerged * sizes.max_area) {
-            if (split_element(ink, members[e], column, half_smallest, paper))
+            const LocalGrid g = local_grid(members[e], column, ink.cols);
+            const std::vector<float> d = distance_to_paper(g);
+            if (split_element(ink, g, d, half_smallest, paper))
                 ++changes.split;
-            else if (trim_element(ink, members[e], column, 0.5f * sizes.min_depth, kLeastTrim, paper))
+            else if (trim_element(ink, g, d, 0.5f * sizes.min_depth, kLeastTrim, paper))
                 ++changes.trimmed;
         }
     }
