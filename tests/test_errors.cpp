@@ -108,6 +108,14 @@ void write_fixtures(const fs::path& tmp) {
         blank.pixels.assign(size_t(64 * 16 * 4), uint8_t(255));
         write_png(tmp / "blank.png", blank);
     }
+    for (const auto& [folder, frames] : {std::pair{"dumps", 3}, std::pair{"shortdumps", 2}}) {
+        fs::create_directories(tmp / folder);
+        for (int f = 0; f < frames; ++f)
+            write(tmp / folder / ("frame_000" + std::to_string(f) + ".json"),
+                  R"({"frame": )" + std::to_string(f) + R"(, "width": 16, "height": 16, "paths": []})");
+    }
+    fs::create_directories(tmp / "baddump");
+    write(tmp / "baddump/frame_0000.json", R"({"width": 16, "height": 16, "paths": []})");
     fs::create_directories(tmp / "resume");
     fs::copy_file(tmp / "small.png", tmp / "resume/frame_0000.png");
 }

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
+#include "core/text.h"
 
 namespace lw {
 
@@ -71,7 +72,7 @@ PathDump parse_path_dump(const std::string& text, const std::string& name) {
             dump.paths.push_back(std::move(path));
         }
     } catch (const nlohmann::json::exception& e) {
-        throw Error(name + ": malformed path dump: " + e.what());
+        throw Error(name + ": malformed path dump: " + json_message(e.what()));
     }
     return dump;
 }

@@ -42,4 +42,12 @@ inline std::string one_line(std::string text, size_t max_length = 400) {
     return out;
 }
 
+// nlohmann::json's exception text without its "[json.exception.out_of_range.403] " tag, which
+// names the library's error class and means nothing to a user: "key 'frame' not found".
+inline std::string json_message(const std::string& what) {
+    if (what.rfind("[json.exception.", 0) != 0) return what;
+    const size_t end = what.find("] ");
+    return end == std::string::npos ? what : what.substr(end + 2);
+}
+
 }  // namespace lw

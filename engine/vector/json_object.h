@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
+#include "core/text.h"
 
 namespace lw {
 
@@ -20,7 +21,7 @@ inline nlohmann::json parse_json_object(const std::string& text, const std::stri
     try {
         root = nlohmann::json::parse(text);
     } catch (const nlohmann::json::exception& e) {  // syntax, and numbers past double's range
-        throw Error(where + ": not valid JSON (" + std::string(e.what()) + ")");
+        throw Error(where + ": not valid JSON (" + json_message(e.what()) + ")");
     }
     if (!root.is_object()) throw Error(where + ": " + shape);
     for (const auto& [key, value] : root.items()) {

@@ -10,9 +10,11 @@
 // parameterization is from REF's dump of the same frame (a farm chunk against one render).
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 
 #include "coherence/path_dump.h"
 #include "commands.h"
@@ -47,8 +49,13 @@ void print_measures(const std::string& what, const Measures& m, const Measures* 
     std::printf("    stretch: %.2f %% of %zu samples within [%.1f, %.1f) px per period; median %.1f px\n",
                 100.0 * m.stretch.share_in_band, m.stretch.samples, m.stretch.band_low, 2.0 * m.stretch.band_low,
                 m.stretch.median_ds_du);
+    // Fewer pairs than this and a median or a share of pops is a handful of samples (the
+    // tables of docs/BENCHMARKS.md leave such groups out).
+    constexpr size_t kFewPairs = 300;
+    if (m.sliding.pairs < kFewPairs)
+        std::printf("    (only %zu matched pairs: too few for these figures to mean much)\n", m.sliding.pairs);
     if (baseline && baseline->sliding.pairs > 0)
-        std::printf("    against the baseline: median %.3f, p90 %.3f, pops %.3f; in pixels: median %.3f, p90 %.3f\n",
+        std::printf("    ratios to the baseline (this / baseline): median %.3f, p90 %.3f, pops %.3f; in pixels: median %.3f, p90 %.3f\n",
                     ratio(m.sliding.median_dt, baseline->sliding.median_dt),
                     ratio(m.sliding.p90_dt, baseline->sliding.p90_dt), ratio(m.sliding.pops, baseline->sliding.pops),
                     ratio(m.sliding.median_px, baseline->sliding.median_px, 0.01),
@@ -63,7 +70,7 @@ void print_measures(const std::string& what, const Measures& m, const Measures* 
                     100.0 * a.pops);
         if (baseline && baseline->sliding.alone.pairs > 0) {
             const SlidingStats& b = baseline->sliding.alone;
-            std::printf("      against the baseline's such pairs: median %.3f, p90 %.3f, pops %.3f; in pixels: median %.3f, "
+            std::printf("      ratios to the baseline's such pairs: median %.3f, p90 %.3f, pops %.3f; in pixels: median %.3f, "
                         "p90 %.3f\n",
                         ratio(a.median_dt, b.median_dt), ratio(a.p90_dt, b.p90_dt), ratio(a.pops, b.pops),
                         ratio(a.median_px, b.median_px, 0.01), ratio(a.p90_px, b.p90_px, 0.01));
@@ -75,11 +82,13 @@ struct ReportOptions {
     std::vector<std::string> folders;
     std::string against;
     std::string baseline;
-    double max_p90 = -1.0;  // < 0: no threshold
+    std::optional<double> max_p90;
 };
 
 std::vector<PathDump> read_dumps(const std::string& folder) {
-    if (!std::filesystem::is_directory(folder)) throw Error(folder + ": no such dump folder");
+    if (!std::filesystem::exists(folder)) throw Error(folder + ": no such dump folder");
+    if (!std::filesystem::is_directory(folder))
+        throw Error(folder + ": not a folder (give the folder of frame_NNNN.json dumps that --dump-paths wrote)");
     std::vector<std::filesystem::path> files;
     for (const auto& entry : std::filesystem::directory_iterator(folder))
         if (entry.path().extension() == ".json" && entry.path().filename().string().rfind("frame_", 0) == 0)
@@ -102,13 +111,29 @@ int report_against(const std::string& folder, const std::vector<PathDump>& frame
         if (ref == reference.end()) throw Error(o.against + ": no dump of frame " + std::to_string(frame.frame));
         const PhaseError e = measure_phase_error(frame, *ref);
         // No sample near the reference's paths is no measure, not a zero one.
-        const bool bad = o.max_p90 >= 0.0 && (e.pairs == 0 || e.p90 > o.max_p90);
+        const bool bad = o.max_p90 && (e.pairs == 0 || e.p90 > *o.max_p90);
         over += bad;
         std::printf("  frame %d: median %.5f, p90 %.5f, max %.5f, %.2f %% over 0.25 (%zu samples)%s\n", frame.frame,
                     e.median, e.p90, e.max, 100.0 * e.over_quarter, e.pairs, !bad ? "" : e.pairs == 0 ? "  NO MATCHED SAMPLES" : "  OVER THE BOUND");
     }
-    if (o.max_p90 >= 0.0) std::printf("%d frame(s) with p90 over %.4g periods\n", over, o.max_p90);
+    if (o.max_p90) std::printf("%d frame(s) with p90 over %.4g periods\n", over, *o.max_p90);
     return over > 0 ? 1 : 0;
+}
+
+// A baseline is another render of the same shot: the same frames, or the ratios compare
+// different motions.
+std::string frame_span(const std::vector<PathDump>& frames) {
+    return std::to_string(frames.size()) + " frames, " + std::to_string(frames.front().frame) + "-" +
+           std::to_string(frames.back().frame);
+}
+void require_same_frames(const std::string& folder, const std::vector<PathDump>& frames, const std::string& baseline,
+                         const std::vector<PathDump>& baseline_frames) {
+    bool same = frames.size() == baseline_frames.size();
+    for (size_t i = 0; same && i < frames.size(); ++i) same = frames[i].frame == baseline_frames[i].frame;
+    if (!same)
+        throw Error(folder + " (" + frame_span(frames) + ") and the baseline " + baseline + " (" +
+                    frame_span(baseline_frames) + ") are not dumps of the same frames: render the baseline over the "
+                    "same --frames");
 }
 
 // The groups a report shows: all paths, each line set (each has its own texture and
@@ -132,10 +157,14 @@ std::vector<Group> groups_of(const std::vector<PathDump>& frames) {
 int run_report(const ReportOptions& o) {
     int status = 0;
     std::vector<std::pair<std::string, Measures>> baseline;
-    if (!o.baseline.empty())
-        for (const Group& g : groups_of(read_dumps(o.baseline))) baseline.emplace_back(g.name, measure(g.frames));
+    std::vector<PathDump> baseline_frames;
+    if (!o.baseline.empty()) {
+        baseline_frames = read_dumps(o.baseline);
+        for (const Group& g : groups_of(baseline_frames)) baseline.emplace_back(g.name, measure(g.frames));
+    }
     for (const std::string& folder : o.folders) {
         const std::vector<PathDump> frames = read_dumps(folder);
+        if (!o.baseline.empty()) require_same_frames(folder, frames, o.baseline, baseline_frames);
         if (!o.against.empty()) {
             status = std::max(status, report_against(folder, frames, o));
             continue;
@@ -169,9 +198,15 @@ Runner add_coherence_report_command(CLI::App& app) {
                     "Dump folder of the same shot under another policy (e.g. --param arclength): print each "
                     "measure's ratio to it as well (the coherence goal is median <= 0.2, p90 <= 0.35, pops <= 0.25)");
     cmd->add_option("--max-p90", o->max_p90, "With --against: exit 1 when a frame's 90th percentile passes this "
-                                             "many periods");
+                                             "many periods (0 or more)")
+        ->check(CLI::Validator(
+            [](std::string& text) {
+                const double v = std::strtod(text.c_str(), nullptr);
+                return std::isfinite(v) && v >= 0.0 ? std::string() : "must be a number of periods, 0 or more";
+            },
+            "PERIODS >= 0"));
     return [o] {
-        if (o->max_p90 >= 0.0 && o->against.empty()) throw usage_error("--max-p90 needs --against REF");
+        if (o->max_p90 && o->against.empty()) throw usage_error("--max-p90 needs --against REF");
         if (!o->baseline.empty() && !o->against.empty()) throw usage_error("--baseline and --against are two reports: give one");
         return run_report(*o);
     };

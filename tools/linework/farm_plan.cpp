@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "core/error.h"
+#include "core/text.h"
 #include "render_state.h"
 
 namespace lw::cli {
@@ -138,7 +139,7 @@ FarmPlan read_plan(const std::filesystem::path& dir) {
         }
         return plan;
     } catch (const nlohmann::json::exception& e) {
-        throw Error(file.string() + ": not a farm plan (" + e.what() + ")");
+        throw Error(file.string() + ": not a farm plan (" + json_message(e.what()) + ")");
     }
 }
 
