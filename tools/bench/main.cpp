@@ -289,30 +289,39 @@ int main(int argc, char** argv) {
                           "culled hidden ones: for comparing)");
     CLI::App* lines_cmd = app.add_subcommand("lines", "The whole line frame and its stages.");
     add_options(lines_cmd, lines);
-    lines_cmd->add_flag("--shaded", lines.shaded, "Draw the lines over toon shading instead of the background");
-    lines_cmd->add_flag("--extract-only", lines.extract_only,
+    CLI::Option* shaded =
+        lines_cmd->add_flag("--shaded", lines.shaded, "Draw the lines over toon shading instead of the background");
+    CLI::Option* extract_only = lines_cmd->add_flag("--extract-only", lines.extract_only,
                         "Time the host extraction alone (no device): one line `extract: median X ms`, to set beside "
                         "rtsc's per-view extraction");
+    shaded->excludes(extract_only);
     lines_cmd
         ->add_option("--threads", lines.threads,
                      "--extract-only: threads over vertex and face blocks; a list (1,2) times each count in turn, "
                      "run by run, and prints their speed-ups over the first")
         ->delimiter(',')
-        ->capture_default_str();
+        ->capture_default_str()
+        ->needs(extract_only);
     lines_cmd->add_option("--types", lines.types,
-                          "--extract-only: line types, e.g. silhouette,suggestive (default: the four default types)");
+                          "--extract-only: line types, e.g. silhouette,suggestive (default: the four default types)")
+        ->needs(extract_only)
+        ->check(CLI::Validator([](std::string& t) { return t.empty() ? "give at least one line type" : ""; }, "TYPES"));
     lines_cmd->add_option("--contours", lines.contours, "--extract-only: silhouettes smooth, mesh or auto")
         ->check(CLI::IsMember({"smooth", "mesh", "auto"}))
-        ->capture_default_str();
+        ->capture_default_str()
+        ->needs(extract_only);
     lines_cmd->add_option("--repeat", lines.repeat, "--extract-only: timed runs (after one warm-up)")
-        ->capture_default_str();
+        ->capture_default_str()
+        ->needs(extract_only);
     lines_cmd->add_option("--hidden-levels", lines.hidden_levels,
                           "Draw hidden lines dashed up to this occlusion level, counted exactly by a ray cast per hidden "
                           "sample (the CPU visibility time includes it)")
-        ->check(CLI::Range(0, 1000));
+        ->check(CLI::Range(0, 1000))
+        ->excludes(extract_only);
     lines_cmd->add_flag("--crossed-copy", lines.crossed_copy,
                         "--extract-only: add a copy of the model turned 30° about the vertical and moved by a third of "
-                        "its size, so that the two cut through each other (intersection lines)");
+                        "its size, so that the two cut through each other (intersection lines)")
+        ->needs(extract_only);
     lw::bench::RibbonBenchOptions ribbon;
     CLI::App* ribbon_cmd = lw::bench::add_ribbon_bench(app, ribbon);
     lw::bench::PatternBenchOptions pattern;
@@ -322,20 +331,23 @@ int main(int argc, char** argv) {
     lw::bench::SlamBenchOptions slam;
     CLI::App* slam_cmd = lw::bench::add_slam_bench(app, slam);
     lines_cmd->add_flag("--coherence", lines.coherence,
-                        "Also parameterize every visible path coherently (splat, votes, RANSAC) and time it");
+                        "Also parameterize every visible path coherently (splat, votes, RANSAC) and time it")
+        ->excludes(extract_only);
     lines_cmd->add_option("--orbit", lines.orbit_deg,
                           "Turn the camera this many degrees about the vertical each frame (default 0: a still view, "
                           "where the coherent parameterization keeps the paths that did not move and fits none)")
-        ->check(CLI::Range(-360.0, 360.0));
+        ->check(CLI::Range(-360.0, 360.0))
+        ->excludes(extract_only);
     lines_cmd->add_flag("--strokes", lines.strokes,
                         "The whole stylized frame: silhouettes and suggestive contours as coherent SLAM strokes "
-                        "(procedural dots, 6 px)");
+                        "(procedural dots, 6 px)")
+        ->excludes(extract_only);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
-        app.exit(e);
+        std::fprintf(stderr, "linework-bench: error: %s\nRun with --help for more information.\n", e.what());
         return 2;
     }
     try {
