@@ -66,6 +66,17 @@ void apply_frame_overrides(const RenderOptions& o, SceneDesc& desc) {
         throw usage_error(std::string(hidden_flag) + " styles hidden lines, --no-lines draws none: give one");
     if (o.lines_only) desc.style.draw_surface = false;
     if (o.no_lines) desc.lines.enabled = false;
+    // A scene that draws no lines ("lines": false, no --lines) drops what styles or writes them.
+    if (!desc.lines.enabled && !o.no_lines)
+        for (const auto& [given, flag] : {std::pair{hidden_flag != nullptr, hidden_flag ? hidden_flag : ""},
+                                          std::pair{!o.svg.empty(), "--svg"}, std::pair{!o.dump_paths.empty(), "--dump-paths"}})
+            if (given)
+                throw usage_error(std::string(flag) + ": " + o.scene.input +
+                                  " draws no lines (\"lines\": false; --lines TYPE,... draws them)");
+    if (o.no_lines)
+        for (const auto& [given, flag] : {std::pair{!o.dump_paths.empty(), "--dump-paths"}, std::pair{!o.scene.contours.empty(), "--contours"},
+                                          std::pair{!o.scene.curvature.empty(), "--curvature"}, std::pair{!o.scene.slam.empty(), "--slam"}})
+            if (given) throw usage_error(std::string(flag) + " shapes or writes lines, --no-lines draws none: give one");
     if (o.no_materials) desc.style.materials = false;
     if (!desc.lines.sets.empty() && hidden_flag) throw usage_error(std::string(hidden_flag) + " " + kHiddenBesideLineSets);
     if (!o.hidden.empty())
@@ -75,7 +86,7 @@ void apply_frame_overrides(const RenderOptions& o, SceneDesc& desc) {
             throw usage_error("--hidden-levels: hidden lines are not drawn (add --hidden dashed or --hidden faint)");
         desc.lines.hidden_levels = uint32_t(*o.hidden_levels);
     }
-    if (!o.svg.empty() && !desc.lines.enabled) throw usage_error("--svg needs lines (drop --no-lines)");
+    if (!o.svg.empty() && o.no_lines) throw usage_error("--svg needs lines (drop --no-lines)");
     if (o.orbit) desc.camera_path = CameraPath{.kind = CameraPath::Kind::Orbit, .orbit = {.degrees = *o.orbit}};
 }
 

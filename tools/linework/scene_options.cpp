@@ -115,6 +115,13 @@ SceneDesc scene_from_options(const SceneOptions& o) {
     }
     if (o.samples > 0) desc.style.samples = static_cast<uint32_t>(o.samples);
     if (o.lines) choose_line_types(*o.lines, desc.lines);
+    // A scene that draws no lines ("lines": false, and no --lines to turn them on): a flag
+    // that shapes them would be dropped in silence.
+    if (!desc.lines.enabled)
+        for (const auto& [given, flag] : {std::pair{!o.contours.empty(), "--contours"},
+                                          std::pair{!o.curvature.empty(), "--curvature"}, std::pair{!o.slam.empty(), "--slam"}})
+            if (given)
+                throw usage_error(std::string(flag) + ": " + o.input + " draws no lines (\"lines\": false; --lines TYPE,... draws them)");
     if (!o.contours.empty()) desc.lines.params.contours = contour_mode(o.contours);
     if (!o.curvature.empty()) desc.lines.params.curvature = curvature_fit(o.curvature);
     if (!o.slam.empty()) use_slam_strokes(desc.lines, o.slam, o.stroke_width);
