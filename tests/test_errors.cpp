@@ -70,6 +70,8 @@ void write_fixtures(const fs::path& tmp) {
     write(tmp / "sets.json", R"({"model": ")" + spot + R"(", "line_sets": [{"name": "rim"}]})");
     write(tmp / "sethidden.json",
           R"({"model": ")" + spot + R"(", "lines": {"hidden": "dashed"}, "line_sets": [{"name": "rim"}]})");
+    fs::create_directories(tmp / "folder.json");
+    write(tmp / "nolines.json", R"({"model": ")" + spot + R"(", "lines": false})");
     write(tmp / "badcolor.json", R"({"model": ")" + spot + R"(", "background": "#ff88"})");
     write(tmp / "twice.json", R"({"model": [")" + spot + R"(", ")" + spot + R"("]})");
     const std::string fox = (data / "models/Fox/Fox.glb").string(), man = (data / "models/CesiumMan/CesiumMan.glb").string();

@@ -237,8 +237,8 @@ TEST(GltfErrors, UnknownExtensionAndMissingFileNameThePath) {
     const fs::path obj = dir.path() / "model.obj";
     std::ofstream(obj) << "v 0 0 0\n";
     expect_load_error(obj, "extension");
-    expect_load_error(dir.path() / "missing.gltf", "not found");
-    expect_load_error(dir.path() / "missing.glb", "not found");
+    expect_load_error(dir.path() / "missing.gltf", "no such file");
+    expect_load_error(dir.path() / "missing.glb", "no such file");
 }
 
 TEST(GltfErrors, ShortBinIsAnError) {

@@ -120,7 +120,7 @@ tinygltf::Model parse_file(const std::filesystem::path& path, const std::string&
     if (extension != ".gltf" && extension != ".glb")
         throw Error(file + ": unsupported file extension '" + path.extension().string() + "' (expected .gltf or .glb)");
     std::error_code ec;
-    if (!std::filesystem::exists(path, ec)) throw Error(file + ": file not found");
+    if (!std::filesystem::exists(path, ec)) throw Error(file + ": no such file");
     if (!std::filesystem::is_regular_file(path, ec)) throw Error(file + ": not a regular file");
 
     tinygltf::TinyGLTF parser;

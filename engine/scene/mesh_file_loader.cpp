@@ -119,7 +119,7 @@ Model load_mesh_file(const std::filesystem::path& path) {
         throw Error(file + ": unsupported file extension" + extension_phrase(lower(path.extension().string())) +
                     " (expected .obj or .ply)");
     std::error_code ec;
-    if (!std::filesystem::exists(path, ec)) throw Error(file + ": file not found");
+    if (!std::filesystem::exists(path, ec)) throw Error(file + ": no such file");
     if (!std::filesystem::is_regular_file(path, ec)) throw Error(file + ": not a regular file");
     if (lower(path.extension().string()) == ".ply") check_ply_structure(path, file);
 

@@ -115,12 +115,14 @@ public:
             }
     }
 
-private:
+    // A number as messages write it: 0.1, not 0.100000.
     static std::string format(double x) {
         std::ostringstream s;
         s << x;
         return s.str();
     }
+
+private:
 
     const json& object_;
     std::string where_;

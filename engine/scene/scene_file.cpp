@@ -172,7 +172,7 @@ LineStyle read_line_type(ObjectReader& lines, LineType type, const std::filesyst
         // Ridges and valleys share rtsc's one rv_thresh.
         if (type == LineType::Valley && ridge_threshold && value != *threshold)
             r.fail_key("threshold", "ridges and valleys share one threshold (rtsc's rv_thresh); lines.ridge gives " +
-                                        std::to_string(*threshold));
+                                        ObjectReader::format(*threshold));
         ridge_threshold = ridge_threshold || type == LineType::Ridge;
         *threshold = value;
     }
@@ -206,7 +206,7 @@ LinesDesc read_lines(ObjectReader& parent, const std::filesystem::path& file) {
         desc.hidden_levels = uint32_t(n);
         if (n > 0 && desc.hidden == HiddenLines::None)
             r.fail_key("hidden_levels", "hidden lines are not drawn (\"hidden\" is \"none\"): set it to \"dashed\" or "
-                                        "\"faint\", or remove \"hidden_levels\" (null in Session.configure)");
+                                        "\"faint\", or remove \"hidden_levels\"");
     }
     if (r.has("sample_spacing")) desc.sample_spacing_px = static_cast<float>(r.number("sample_spacing", 0.25, 64.0));
     if (r.has("contours")) desc.params.contours = contour_mode(r.string_of("contours", {"smooth", "mesh", "auto"}));
@@ -223,6 +223,8 @@ bool is_model_path(const std::filesystem::path& path) {
 }
 
 void check_scene_or_model_path(const std::filesystem::path& path) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) throw Error(path.string() + ": a folder, not a model or a scene file");
     const std::string ext = lower(path.extension().string());
     if (is_model_path(path) || ext == ".json") return;
     throw Error(path.string() + ": unsupported model format" + extension_phrase(ext) +
@@ -313,7 +315,8 @@ SceneDesc parse_scene_json(const std::string& text, const std::filesystem::path&
     scene.source = source;
     ObjectReader r(root, "", source);
 
-    if (r.has("version") && r.number("version", 1, 1) != 1) r.fail_key("version", "unsupported");
+    if (r.has("version") && r.at("version") != 1)
+        r.fail_key("version", "this Linework reads version 1 scene files, got " + r.at("version").dump());
     if (r.has("description")) scene.description = r.string_of("description");
     if (r.has("layers")) scene.layers = read_layers(r, source);
     if (models_given && r.has("model")) r.fail_key("model", "not allowed beside a mesh given as arrays");
@@ -404,6 +407,9 @@ SceneDesc parse_scene_json(const std::string& text, const std::filesystem::path&
 }
 
 SceneDesc load_scene_file(const std::filesystem::path& path) {
+    std::error_code ec;
+    if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
+        throw Error(path.string() + ": not a regular file");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw Error(path.string() + ": cannot open scene file (" + (std::filesystem::exists(path) ? "unreadable" : "no such file") + ")");
     std::stringstream buffer;

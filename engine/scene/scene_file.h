@@ -90,7 +90,7 @@ inline constexpr const char* kHiddenBesideLineSets =
 
 // Throws lw::Error naming the file unless its extension is a model's (.gltf, .glb, .obj, .ply)
 // or a scene file's (.json): a PNG, an .stl or a typo gets "unsupported model format", not the
-// JSON parser's complaint about its first byte.
+// JSON parser's complaint about its first byte; a folder, whatever its name, is named one.
 void check_scene_or_model_path(const std::filesystem::path& path);
 
 }  // namespace lw
