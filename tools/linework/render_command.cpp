@@ -2,6 +2,7 @@
 //
 // A platform over SceneSession: options → scene description → session → the frame loop
 // writing files (render_output.h). --resume goes on from OUT/.linework-state.
+#include <algorithm>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
@@ -121,8 +122,21 @@ void print_header(const RenderOptions& o, const SceneSession& session, const Con
     if (!session.scene().mesh.indices.empty()) print_bounds(session.scene().bounds);
     std::printf("device: %s\n", ctx.info().describe().c_str());
     std::printf("size: %dx%d\n", desc.width, desc.height);
-    if (const LineMesh* lm = session.renderer().line_mesh())
+    if (const LineMesh* lm = session.renderer().line_mesh()) {
         std::printf("lines: %zu welded vertices, feature size %.4g\n", lm->mesh.positions.size(), double(lm->feature_size));
+        // What `auto` chose (line_mesh.h, coarse_faces), which the picture alone does not say.
+        if (desc.lines.enabled && desc.lines.params.contours == ContourMode::Auto) {
+            const size_t faces = lm->face_coarse.size();
+            const auto coarse = size_t(std::count(lm->face_coarse.begin(), lm->face_coarse.end(), uint8_t(1)));
+            std::printf("contours auto: %s (coarse: a median angle between neighbouring faces over %g degrees)\n",
+                        coarse == 0       ? "smooth, no model is coarse"
+                        : coarse == faces ? "mesh, the model is coarse"
+                                          : ("mesh on the coarse models' " + std::to_string(coarse) + " of " +
+                                             std::to_string(faces) + " faces, smooth elsewhere")
+                                                .c_str(),
+                        double(kCoarseDihedralDeg));
+        }
+    }
     if (!sequence) return;
     std::printf("frames: %d to %d", shot.range.first, shot.range.last);
     if (shot.part.first != shot.range.first || shot.part.last != shot.range.last)
