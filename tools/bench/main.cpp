@@ -295,6 +295,8 @@ int main(int argc, char** argv) {
                         "Time the host extraction alone (no device): one line `extract: median X ms`, to set beside "
                         "rtsc's per-view extraction");
     shaded->excludes(extract_only);
+    for (const char* frame_only : {"--size", "--frames", "--device", "--compute", "--samples"})
+        lines_cmd->get_option(frame_only)->excludes(extract_only);
     lines_cmd
         ->add_option("--threads", lines.threads,
                      "--extract-only: threads over vertex and face blocks; a list (1,2) times each count in turn, "

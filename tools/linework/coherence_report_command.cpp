@@ -53,7 +53,7 @@ void print_measures(const std::string& what, const Measures& m, const Measures* 
     // tables of docs/BENCHMARKS.md leave such groups out).
     constexpr size_t kFewPairs = 300;
     if (m.sliding.pairs < kFewPairs)
-        std::printf("    (only %zu matched pairs: too few for these figures to mean much)\n", m.sliding.pairs);
+        std::printf("    (only %zu matched pairs: too few for the sliding figures to mean much)\n", m.sliding.pairs);
     if (baseline && baseline->sliding.pairs > 0)
         std::printf("    ratios to the baseline (this / baseline): median %.3f, p90 %.3f, pops %.3f; in pixels: median %.3f, p90 %.3f\n",
                     ratio(m.sliding.median_dt, baseline->sliding.median_dt),

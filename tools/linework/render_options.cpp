@@ -66,15 +66,18 @@ void apply_frame_overrides(const RenderOptions& o, SceneDesc& desc) {
         throw usage_error(std::string(hidden_flag) + " styles hidden lines, --no-lines draws none: give one");
     if (o.lines_only) desc.style.draw_surface = false;
     if (o.no_lines) desc.lines.enabled = false;
-    // A scene that draws no lines ("lines": false, no --lines) drops what styles or writes them.
+    // A scene that draws no lines ("lines": false, no --lines) drops what styles or writes them
+    // (the dumps still hold a scene's vector layers).
     if (!desc.lines.enabled && !o.no_lines)
         for (const auto& [given, flag] : {std::pair{hidden_flag != nullptr, hidden_flag ? hidden_flag : ""},
-                                          std::pair{!o.svg.empty(), "--svg"}, std::pair{!o.dump_paths.empty(), "--dump-paths"}})
+                                          std::pair{!o.svg.empty(), "--svg"},
+                                          std::pair{!o.dump_paths.empty() && desc.layers.empty(), "--dump-paths"}})
             if (given)
                 throw usage_error(std::string(flag) + ": " + o.scene.input +
                                   " draws no lines (\"lines\": false; --lines TYPE,... draws them)");
     if (o.no_lines)
-        for (const auto& [given, flag] : {std::pair{!o.dump_paths.empty(), "--dump-paths"}, std::pair{!o.scene.contours.empty(), "--contours"},
+        for (const auto& [given, flag] : {std::pair{!o.dump_paths.empty() && desc.layers.empty(), "--dump-paths"},
+                                          std::pair{!o.scene.contours.empty(), "--contours"},
                                           std::pair{!o.scene.curvature.empty(), "--curvature"}, std::pair{!o.scene.slam.empty(), "--slam"}})
             if (given) throw usage_error(std::string(flag) + " shapes or writes lines, --no-lines draws none: give one");
     if (o.no_materials) desc.style.materials = false;

@@ -121,7 +121,7 @@ SceneDesc scene_from_options(const SceneOptions& o) {
         for (const auto& [given, flag] : {std::pair{!o.contours.empty(), "--contours"},
                                           std::pair{!o.curvature.empty(), "--curvature"}, std::pair{!o.slam.empty(), "--slam"}})
             if (given)
-                throw usage_error(std::string(flag) + ": " + o.input + " draws no lines (\"lines\": false; --lines TYPE,... draws them)");
+                throw usage_error(std::string(flag) + ": " + o.input + " draws no lines (\"lines\": false)");
     if (!o.contours.empty()) desc.lines.params.contours = contour_mode(o.contours);
     if (!o.curvature.empty()) desc.lines.params.curvature = curvature_fit(o.curvature);
     if (!o.slam.empty()) use_slam_strokes(desc.lines, o.slam, o.stroke_width);
