@@ -147,6 +147,11 @@ TEST(VectorLayerCli, ZoomKeepsTheTexturePeriod) {
     for (size_t i = 0; i < last.pixels.size(); i += 4)
         yellow += last.pixels[i] > 200 && last.pixels[i + 1] > 180 && last.pixels[i + 2] < 90;
     EXPECT_GT(yellow, 100u);
+    // Lines off, the dumps still hold the layers' paths (nothing else is refused for them).
+    const auto off = test::run_linework("render " + test::quote(scene) + " -o " + test::quote(dir / "off") +
+                                        " --device cpu --frames 0:0 --no-lines --dump-paths " + test::quote(dir / "off_dump"));
+    ASSERT_EQ(off.exit_code, 0) << off.output;
+    EXPECT_FALSE(read_path_dump(dir / "off_dump/frame_0000.json").paths.empty());
 }
 
 // Layer strokes have round caps, as their SVG has: a one-point stroke and a stroke shorter
