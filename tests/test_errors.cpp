@@ -71,6 +71,7 @@ void write_fixtures(const fs::path& tmp) {
     write(tmp / "sethidden.json",
           R"({"model": ")" + spot + R"(", "lines": {"hidden": "dashed"}, "line_sets": [{"name": "rim"}]})");
     fs::create_directories(tmp / "folder.json");
+    write(tmp / "keyed.json", R"({"model": ")" + spot + R"(", "camera_path": {"keyframes": [{"time": 0, "eye": [0, 0, 5], "target": [0, 0, 0]}]}})");
     write(tmp / "nolines.json", R"({"model": ")" + spot + R"(", "lines": false})");
     write(tmp / "badcolor.json", R"({"model": ")" + spot + R"(", "background": "#ff88"})");
     write(tmp / "twice.json", R"({"model": [")" + spot + R"(", ")" + spot + R"("]})");

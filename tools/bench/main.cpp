@@ -26,6 +26,7 @@
 #include <CLI/CLI.hpp>
 
 #include "core/error.h"
+#include "cli_numbers.h"
 #include "core/memory.h"
 #include "core/timer.h"
 #include "geometry/subdivide.h"
@@ -338,7 +339,7 @@ int main(int argc, char** argv) {
     lines_cmd->add_option("--orbit", lines.orbit_deg,
                           "Turn the camera this many degrees about the vertical each frame (default 0: a still view, "
                           "where the coherent parameterization keeps the paths that did not move and fits none)")
-        ->check(CLI::Range(-360.0, 360.0))
+        ->check(lw::cli::within(-360.0, 360.0, "degrees"))
         ->excludes(extract_only);
     lines_cmd->add_flag("--strokes", lines.strokes,
                         "The whole stylized frame: silhouettes and suggestive contours as coherent SLAM strokes "

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "core/error.h"
+#include "cli_numbers.h"
 #include "core/timer.h"
 #include "gpu/context.h"
 #include "ribbon/dp_gpu.h"
@@ -23,9 +24,9 @@ CLI::App* add_ribbon_bench(CLI::App& app, RibbonBenchOptions& o) {
         ->capture_default_str();
     cmd->add_option("--exemplar-size", o.exemplar_size, "Exemplar size WxH")->capture_default_str();
     cmd->add_option("--rows", o.rows, "DP rows timed, after one warm-up row")->check(CLI::Range(1, 1000))->capture_default_str();
-    cmd->add_option("--piece", o.piece, "Piece length δ (default b / 2)")->check(CLI::PositiveNumber);
+    cmd->add_option("--piece", o.piece, "Piece length δ (default b / 2)")->check(lw::cli::positive("pixels"));
     cmd->add_option("--scale", o.scale, "s, exemplar pixels across the ribbon (default: the exemplar height)")
-        ->check(CLI::PositiveNumber);
+        ->check(lw::cli::positive("exemplar pixels"));
     cmd->add_flag("--reference", o.reference, "Also time the plain C++ reference on the same rows");
     cmd->add_option("--device", o.device, "auto, cpu, gpu or an index")->capture_default_str();
     return cmd;

@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "commands.h"
+#include "cli_numbers.h"
 #include "core/image.h"
 #include "io/image_io.h"
 
@@ -58,7 +59,7 @@ Runner add_diff_command(CLI::App& app) {
         ->check(CLI::Range(0, 255))
         ->capture_default_str();
     cmd->add_option("--max-differing", o->max_differing, "Largest share of differing pixels allowed (0-1)")
-        ->check(CLI::Range(0.0, 1.0))
+        ->check(within(0.0, 1.0))
         ->capture_default_str();
     return [o] { return run_diff(*o); };
 }

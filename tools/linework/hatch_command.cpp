@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "commands.h"
+#include "cli_numbers.h"
 #include "core/error.h"
 #include "core/timer.h"
 #include "hatch/hatching.h"
@@ -110,15 +111,15 @@ Runner add_hatch_command(CLI::App& app) {
                     "KL2 above which a block is made again with a window larger by 2 (0: never; default:\n"
                     "3 times the median KL2 of blocks drawn from the training at random, since KL2's scale\n"
                     "depends on the training; a block looping on a few strokes scores tens)")
-        ->check(CLI::Range(0.0, 1e9));
+        ->check(within(0.0, 1e9));
     cmd->add_option("--plausible", o->plausible,
                     "c in (0, 1]: strokes whose Gibbs probability is at least c times the best are plausible")
-        ->check(CLI::Range(1e-6f, 1.0f))
+        ->check(within(1e-6, 1.0))
         ->capture_default_str();
     cmd->add_option("--along", o->along,
                     "Lay sequences along these paths (a stroke file: each stroke is a path), strokes turned\n"
                     "with the path and offset across it as in the training (the paper's Fig. 8)");
-    cmd->add_option("--seed", o->seed, "Seed of the random picks")->capture_default_str();
+    cmd->add_option("--seed", o->seed, "Seed of the random picks")->check(seed())->capture_default_str();
     cmd->add_flag("--kl2", o->kl2,
                   "Print one line per block on stdout: `block B strokes A-B KL2 V` (the rest goes to stderr)");
     return [o] { return run_hatch(*o); };

@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "commands.h"
+#include "cli_numbers.h"
 #include "core/error.h"
 #include "core/timer.h"
 #include "pattern/synthesis.h"
@@ -115,7 +116,7 @@ Runner add_pattern_command(CLI::App& app) {
                     "ε: the distance below which strokes are seen as one element (drawing units; default:\n"
                     "twice the median stroke width, so only touching strokes group). Crosses and flowers\n"
                     "need about half their size")
-        ->check(CLI::PositiveNumber);
+        ->check(positive("drawing units"));
     cmd->add_option("--rings", o->rings,
                     "k: neighbourhood size in graph steps (default 3 along a path, 2 in a region; 5 follows\n"
                     "smooth changes of orientation, length or thickness along a path)")
@@ -123,12 +124,12 @@ Runner add_pattern_command(CLI::App& app) {
     cmd->add_option("--variation", o->variation,
                     "v in [0, 1]: swap each element's orientation, length and width for similar reference\n"
                     "values, and bring back the reference's irregular positions (§3.3; default 0: none)")
-        ->check(CLI::Range(0.0f, 1.0f));
+        ->check(within(0.0, 1.0));
     cmd->add_option("--fit", o->fit, "Fit element boxes to stroke skeletons or to their contours (width included)")
         ->check(CLI::IsMember({"skeleton", "contour"}))
         ->capture_default_str();
     cmd->add_option("--lloyd", o->lloyd, "Lloyd iterations for the seeds")->check(CLI::Range(0, 1000))->capture_default_str();
-    cmd->add_option("--seed", o->seed, "Seed of the random choices (seeds, picks among matches, variation)")
+    cmd->add_option("--seed", o->seed, "Seed of the random choices (seeds, picks among matches, variation)")->check(seed())
         ->capture_default_str();
     return [o] { return run_pattern(*o); };
 }

@@ -4,6 +4,7 @@
 #include <charconv>
 
 #include "commands.h"
+#include "cli_numbers.h"
 
 namespace lw::cli {
 
@@ -38,7 +39,8 @@ void add_frame_options(CLI::App* cmd, RenderOptions& o) {
                 return {};
             },
             "INT in [0 - 1000]"));
-    cmd->add_option("--orbit", o.orbit, "Turn the camera DEG degrees about the bounding-box centre over the frames");
+    cmd->add_option("--orbit", o.orbit, "Turn the camera DEG degrees about the bounding-box centre over the frames")
+        ->check(within(-36000.0, 36000.0, "degrees"));
     cmd->add_option("--dump-paths", o.dump_paths,
                     "Write DIR/frame_NNNN.json per frame: visible paths, their line set, (ρ, φ), level and samples. "
                     "The dump needs every line set parameterized, which drops fragments under --min-stroke-length "
@@ -47,6 +49,15 @@ void add_frame_options(CLI::App* cmd, RenderOptions& o) {
 }
 
 void apply_frame_overrides(const RenderOptions& o, SceneDesc& desc) {
+    // Keyframes place every frame's camera: a flag that places it too would be dropped
+    // (--eye, --target, --up, --fov) or would drop the keyframes (--orbit).
+    if (desc.camera_path.kind == CameraPath::Kind::Keyframes)
+        for (const auto& [given, flag] : {std::pair{o.orbit.has_value(), "--orbit"}, std::pair{!o.eye.empty(), "--eye"},
+                                          std::pair{!o.target.empty(), "--target"}, std::pair{!o.up.empty(), "--up"},
+                                          std::pair{o.fov.has_value(), "--fov"}})
+            if (given)
+                throw usage_error(std::string(flag) + ": " + o.scene.input +
+                                  " moves its camera along \"camera_path\" keyframes; give the flag or the key, not both");
     if (o.fov) {
         if (!(*o.fov > 0.0f && *o.fov < 180.0f)) throw usage_error("--fov: must be between 0 and 180 degrees");
         desc.fov_deg = *o.fov;

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
+#include "cli_numbers.h"
 #include "core/error.h"
 #include "core/timer.h"
 #include "gpu/context.h"
@@ -192,15 +193,15 @@ Runner add_ribbon_command(CLI::App& app) {
     cmd->add_flag("--stitch", o->stitch, "Deform pieces so that their edges align better (§3.2, P = 32)");
     cmd->add_option("--piece", o->piece, "Piece length δ along the curve, output pixels (default: b / 2; much shorter pieces\n"
                     "let the DP repeat near-uniform stretches of the exemplar)")
-        ->check(CLI::PositiveNumber);
+        ->check(positive("pixels"));
     cmd->add_option("--width", o->width, "Ribbon width b, output pixels (default: s, one exemplar pixel per pixel)")
-        ->check(CLI::PositiveNumber);
+        ->check(positive("pixels"));
     cmd->add_option("--scale", o->scale,
                     "s: exemplar pixels across the ribbon; the pattern is drawn at b / s output pixels per\n"
                     "exemplar pixel (default: the height of the exemplar's band of opaque rows + 2 + 30 %:\n"
                     "the slack is how far the pattern may wander from the curve)")
-        ->check(CLI::PositiveNumber);
-    cmd->add_option("--seed", o->seed, "Chooses among equally good results, and the random baseline")
+        ->check(positive("exemplar pixels"));
+    cmd->add_option("--seed", o->seed, "Chooses among equally good results, and the random baseline")->check(seed())
         ->capture_default_str();
     cmd->add_option("--size", o->size, "Output size WxH (default: the ribbon's extent from the origin)");
     cmd->add_option("--dump-dp", o->dump,
@@ -232,7 +233,7 @@ Runner add_ribbon_exemplar_command(CLI::App& app) {
     cmd->add_option("name", o->name, "Pattern")->required()->check(CLI::IsMember(exemplar_names()));
     cmd->add_option("-o,--output", o->output, "Output PNG")->required()->check(output_file());
     cmd->add_option("--size", o->size, "Size WxH")->capture_default_str();
-    cmd->add_option("--seed", o->seed, "Variation seed")->capture_default_str();
+    cmd->add_option("--seed", o->seed, "Variation seed")->check(seed())->capture_default_str();
     return [o] { return run_exemplar(*o); };
 }
 

@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "commands.h"
+#include "cli_numbers.h"
 #include "core/color.h"
 
 namespace lw::cli {
@@ -38,18 +39,12 @@ void add_scene_options(CLI::App* cmd, SceneOptions& o, bool offline) {
                     "trimesh2 (the 3x3 solve of newer trimesh2, which an rtsc built from GitHub today links: every line "
                     "type then lies on that rtsc's lines; scene key lines.curvature)")
         ->check(CLI::IsMember({"exact", "trimesh2"}));
-    cmd->add_option("--slam", o.slam, "Draw silhouettes and suggestive contours as strokes textured by this SLAM (.exr)");
+    CLI::Option* slam =
+        cmd->add_option("--slam", o.slam, "Draw silhouettes and suggestive contours as strokes textured by this SLAM (.exr)");
     cmd->add_option("--stroke-width", o.stroke_width,
                     "Width of SLAM strokes in pixels, 0.1 to 64 as the scene key lines.TYPE.width (default 6)")
-        ->check(CLI::Validator(
-            [](const std::string& text) -> std::string {
-                char* end = nullptr;
-                const double w = std::strtod(text.c_str(), &end);
-                if (end != text.c_str() + text.size() || !(w >= 0.1 && w <= 64.0))
-                    return "must be between 0.1 and 64 pixels, got \"" + text + "\"";
-                return {};
-            },
-            "FLOAT in [0.1 - 64]"));
+        ->check(within(0.1, 64.0, "pixels"))
+        ->needs(slam);
     cmd->add_option("--param", o.param,
                     "Stroke parameterization: coherent (default; Bénard et al. 2010 §4), arclength (tiling) or "
                     "stretch (one texture per path)")
@@ -57,21 +52,21 @@ void add_scene_options(CLI::App* cmd, SceneOptions& o, bool offline) {
     cmd->add_option("--splat-radius", o.splat_radius,
                     "δ of the parameterization sprites, pixels (default: twice the sample spacing); larger keeps "
                     "fast lines coherent, smaller keeps nearby lines apart (§4.1)")
-        ->check(CLI::PositiveNumber);
+        ->check(positive("pixels"));
     cmd->add_flag("--validation", o.validation,
                   "Enable the Khronos validation layer; any warning or error fails the run (also LINEWORK_VALIDATION=1)");
     if (!offline) return;
     cmd->add_option("--length-scale", o.length_scale,
                     "κ: SLAM periods per native texture length (default: square texels, the SLAM's height over "
                     "the stroke width)")
-        ->check(CLI::PositiveNumber);
+        ->check(positive());
     cmd->add_option("--inlier-px", o.inlier_px, "RANSAC inlier distance along the path, pixels (§4.2)")
-        ->check(CLI::PositiveNumber)
+        ->check(positive("pixels"))
         ->capture_default_str();
     cmd->add_option("--min-stroke-length", o.min_stroke_length,
                     "Visible paths shorter than this many pixels are not drawn as strokes, splatted or dumped "
                     "(0 keeps every fragment)")
-        ->check(CLI::NonNegativeNumber)
+        ->check(non_negative("pixels"))
         ->capture_default_str();
 }
 
