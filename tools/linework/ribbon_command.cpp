@@ -87,6 +87,18 @@ int run_ribbon(const RibbonOptions& o) {
     }
     desc.width = size->x;
     desc.height = size->y;
+    // The curve is in output pixels: with a --size that misses it, the output would be blank.
+    const glm::vec2 lo = ribbon.min_corner(), hi = ribbon.max_corner();
+    const bool misses = hi.x <= 0.0f || hi.y <= 0.0f || lo.x >= float(size->x) || lo.y >= float(size->y);
+    const bool clipped = lo.x < 0.0f || lo.y < 0.0f || hi.x > float(size->x) || hi.y > float(size->y);
+    const std::string box = "x " + std::to_string(int(std::floor(lo.x))) + " to " + std::to_string(int(std::ceil(hi.x))) +
+                            ", y " + std::to_string(int(std::floor(lo.y))) + " to " + std::to_string(int(std::ceil(hi.y)));
+    if (misses)
+        throw usage_error("--size " + o.size + ": the ribbon along " + o.curve + " (" + box +
+                          ", in output pixels) lies wholly outside the image");
+    if (clipped)
+        std::fprintf(stderr, "ribbon: warning: the ribbon (%s) reaches past the %dx%d image and is cut there\n",
+                     box.c_str(), size->x, size->y);
     ForbiddenMask user;
     if (!o.avoid.empty()) {
         user = forbidden_from_image(read_image_rgba8(o.avoid));
@@ -147,6 +159,14 @@ int run_ribbon(const RibbonOptions& o) {
     if (s.stitch)
         std::printf("stitch: seam error %.1f -> %.1f (%.0f ms)\n", double(s.stitch->total_before()),
                     double(s.stitch->total_after()), s.stitch_ms);
+    // A box that overlaps the image does not mean the ribbon does (a wave's box is mostly
+    // empty). (Without --size the image holds the whole ribbon; an empty one there is the
+    // avoidance's, reported above.)
+    bool inked = false;
+    for (size_t i = 3; i < s.image.pixels.size() && !inked; i += 4) inked = s.image.pixels[i] != 0;
+    if (!inked && !o.size.empty())
+        throw usage_error("--size " + o.size + ": nothing of the ribbon along " + o.curve + " (" + box +
+                          ", in output pixels) falls inside the image");
     write_png(o.output, composite(s.image, o.transparent));
     std::printf("wrote %s\n", o.output.c_str());
     if (!o.dump.empty()) {
