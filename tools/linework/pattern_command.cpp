@@ -99,7 +99,7 @@ Runner add_pattern_command(CLI::App& app) {
         "reference element whose k-ring neighbourhood matches the elements already placed.\n"
         "Example: linework pattern scenes/patterns/flowers.svg --region scenes/curves/circle.json -o out.svg");
     cmd->add_option("reference", o->reference,
-                    "Reference strokes: SVG (path M/L/C/Z, polyline, polygon, line; stroke, stroke-width)\n"
+                    "Reference strokes: SVG (path M L H V C S Q T Z, polyline, polygon, line; stroke, stroke-width)\n"
                     "or JSON {\"strokes\": [{\"points\": [[x, y], ...], \"width\": w, \"color\": [r, g, b]}]}")
         ->required();
     cmd->add_option("-o,--output", o->output, "Output strokes: .svg (one <polyline>/<path> per stroke) or .json")
@@ -107,7 +107,7 @@ Runner add_pattern_command(CLI::App& app) {
         ->check(output_file());
     cmd->add_option("--path", o->path,
                     "Synthesize along this path (1D): JSON {\"points\": [[x, y], ...], \"closed\": bool} or an SVG\n"
-                    "file whose first <path> uses M/L/C/Z (as for `linework ribbon --curve`)");
+                    "file whose first <path> is the curve (commands M, L, H, V, C, S, Q, T, Z; as for `linework ribbon --curve`)");
     cmd->add_option("--region", o->region, "Synthesize inside this region (2D): a curve file as for --path, read as a polygon");
     cmd->add_option("--ref-path", o->ref_path,
                     "The reference's own path (default: the long midline of its bounding box)");

@@ -185,9 +185,20 @@ int render_frames(const RenderOptions& o, const Shot& shot, const FrameFiles& fi
         }
     }
     const int drawn = shot.part.last - shot.start + 1;
-    if (files.sequence) std::printf("time per frame: %.2f ms (mean of %d)\n", total_ms / std::max(drawn, 1), drawn);
-    if (files.sequence && !o.state_only)
-        std::printf("wrote %s/frame_%04d.png … frame_%04d.png\n", o.output.c_str(), shot.part.first, shot.part.last);
+    if (files.sequence)
+        std::printf("time per frame: %.2f ms (mean of %d%s)\n", total_ms / std::max(drawn, 1), drawn,
+                    o.warmup ? ", warm-up frames included" : "");
+    if (files.sequence && !o.state_only) {
+        // The first and last files of each kind written ("a … b", or one name for one frame).
+        const auto span = [&](const std::filesystem::path& first, const std::filesystem::path& last) {
+            std::printf("wrote %s%s%s\n", first.string().c_str(), first == last ? "" : " … ",
+                        first == last ? "" : last.filename().string().c_str());
+        };
+        const std::filesystem::path out(o.output);
+        span(out / frame_name(shot.part.first, "png"), out / frame_name(shot.part.last, "png"));
+        if (o.exr) span(out / frame_name(shot.part.first, "exr"), out / frame_name(shot.part.last, "exr"));
+        if (!o.svg.empty()) span(svg_path(files, shot.part.first), svg_path(files, shot.part.last));
+    }
     if (states > 0) std::printf("wrote %d states to %s\n", states, o.save_states.c_str());
     if (!o.dump_paths.empty() && !o.state_only) std::printf("wrote path dumps to %s\n", o.dump_paths.c_str());
     return 0;

@@ -41,13 +41,13 @@ std::string frame_name(int frame, const char* extension) {
     return name;
 }
 
-namespace {
-
 std::filesystem::path svg_path(const FrameFiles& files, int f) {
     std::filesystem::path svg(files.svg);
     if (files.sequence) svg = svg.parent_path() / (svg.stem().string() + "_" + frame_name(f, "svg").substr(6));
     return svg;
 }
+
+namespace {
 
 }  // namespace
 

@@ -29,6 +29,9 @@ struct FrameFiles {
     std::filesystem::path progress_state;  // what --resume goes on from (render_state.h)
 };
 
+// Frame f's SVG: --svg's name, with _NNNN before the extension in a sequence.
+[[nodiscard]] std::filesystem::path svg_path(const FrameFiles& files, int f);
+
 // Makes the output folder, the dump folder and the SVG's folder (when asked for); errors
 // name them.
 void create_folders(const FrameFiles& files);
