@@ -3,6 +3,7 @@
 // A platform over SceneSession: options → scene description → session → the frame loop
 // writing files (render_output.h). --resume goes on from OUT/.linework-state.
 #include <algorithm>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
@@ -143,6 +144,16 @@ void print_header(const RenderOptions& o, const SceneSession& session, const Con
         std::printf(", this part %d to %d", shot.part.first, shot.part.last);
     if (o.warmup) std::printf(", after %d warm-up frames", o.warmup);
     std::printf(" at %g fps%s\n", double(desc.animation.fps), o.state_only ? " (temporal state only)" : "");
+    // Past the clips' end the last pose holds (nothing loops): frames that only repeat it.
+    if (session.animated()) {
+        // Frame f is at f / fps seconds; the first one past the end only repeats the last pose.
+        const double end = double(session.duration_s()) * double(desc.animation.fps);
+        const int past = int(std::floor(end + 1e-3)) + 1;
+        if (shot.range.last >= past)
+            std::printf("animation: the clips end at %.3f s (frame %.4g at %g fps); frames %d to %d repeat the last pose\n",
+                        double(session.duration_s()), end, double(desc.animation.fps), std::max(past, shot.range.first),
+                        shot.range.last);
+    }
 }
 
 // Draws shot.start … shot.part.last, writing the part's frames (and their progress state)
