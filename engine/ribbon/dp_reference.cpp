@@ -267,7 +267,9 @@ std::string no_valid_position_message(const DpProblem& problem, size_t row) {
     const bool terminal = problem.closed && row + 1 == problem.rows.size();
     return "ribbon piece " + std::to_string(row) + (terminal ? " (terminal)" : "") + " of " +
            std::to_string(problem.rows.size()) +
-           ": no valid position in the exemplar, even letting the piece cut the pattern — it must fit in E "
+           ": no valid position in the " + std::to_string(problem.exemplar->width) + "x" +
+           std::to_string(problem.exemplar->height) +
+           " exemplar E, even letting the piece cut the pattern — it must fit in E "
            "horizontally and keep ink off forbidden pixels (C = " + std::to_string(problem.samples) +
            " exemplar pixels across the ribbon: try a shorter piece length δ or another scale s)";
 }

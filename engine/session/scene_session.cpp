@@ -318,6 +318,10 @@ double SceneSession::draw_ribbons(Frame& frame, uint64_t seed) {
                                         frame.image.color);
         } catch (const ParameterError& e) {  // the style's width and ribbon_scale set them
             throw Error(desc_.source.string() + ": line set " + set.name + ": " + e.what(), 1);
+        } catch (const Error& e) {  // an exemplar the paths cannot use: name it and the keys that shape its pieces
+            throw Error(desc_.source.string() + ": line set " + set.name + ", ribbon " + style.ribbon + ": " +
+                            e.what() + " (here s is \"ribbon_scale\" and δ half the set's \"width\")",
+                        e.exit_code());
         }
         ms += stats.ms;
         ribbon_reports_.push_back({set.name, stats});

@@ -127,7 +127,8 @@ int run_ribbon(const RibbonOptions& o) {
             progress_timer.reset();
         }
     };
-    const RibbonSynthesis s = synthesize_ribbon(ctx, exemplar, curve, desc);
+    // (An exemplar the pieces cannot use is named: δ is --piece, s is --scale.)
+    const RibbonSynthesis s = naming(o.exemplar, [&] { return synthesize_ribbon(ctx, exemplar, curve, desc); });
 
     double mean_row = 0.0;
     for (double ms : s.solution.row_ms) mean_row += ms;
