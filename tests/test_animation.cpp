@@ -447,9 +447,9 @@ TEST(SceneFileAnimation, ErrorsNameTheKey) {
     starts(scene_error(R"({"model": "a.glb", "animation": {"clip": -1}})"), "scenes/x.json: animation.clip: clip index");
     starts(scene_error(R"({"model": "a.glb", "animation": {"clip": ""}})"), "scenes/x.json: animation.clip: empty name");
     EXPECT_EQ(scene_error(R"({"model": "a.glb", "animation": {"fps": 0}})"),
-              "scenes/x.json: animation.fps: must be greater than 0, got 0");
+              "scenes/x.json: animation.fps: must be a number of frames a second over 0, up to 1000, got 0");
     EXPECT_EQ(scene_error(R"({"model": "a.glb", "animation": {"fps": -24}})"),
-              "scenes/x.json: animation.fps: must be between 0 and 1000, got -24");
+              "scenes/x.json: animation.fps: must be a number of frames a second over 0, up to 1000, got -24");
     EXPECT_EQ(scene_error(R"({"model": "a.glb", "animation": {"frames": [10, 4]}})"),
               "scenes/x.json: animation.frames: last frame 4 is before first frame 10");
     EXPECT_EQ(scene_error(R"({"model": "a.glb", "animation": {"frames": [1]}})"),

@@ -224,7 +224,8 @@ const std::vector<std::string>& exemplar_names() {
 
 ImageRGBA8 generate_exemplar(const std::string& name, int width, int height, uint64_t seed) {
     if (width < 16 || height < 16 || width > 4096 || height > 4096)
-        throw usage_error("exemplar size must be between 16x16 and 4096x4096");
+        throw ParameterError("exemplar size", " " + std::to_string(width) + "x" + std::to_string(height) +
+                                                  ": must be between 16x16 and 4096x4096");
     uint64_t name_hash = 1469598103934665603ull;  // FNV-1a: the same on every platform
     for (char c : name) name_hash = (name_hash ^ uint8_t(c)) * 1099511628211ull;
     Random rnd(seed ^ name_hash);

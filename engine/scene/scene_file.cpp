@@ -133,8 +133,10 @@ AnimationDesc read_animation(ObjectReader& parent, const std::filesystem::path& 
         }
     }
     if (r.has("fps")) {
-        desc.fps = static_cast<float>(r.number("fps", 0.0, 1000.0));
-        if (!(desc.fps > 0.0f)) r.fail_key("fps", "must be greater than 0, got " + r.at("fps").dump());
+        const json& fps = r.at("fps");
+        if (!fps.is_number() || !(fps.get<double>() > 0.0 && fps.get<double>() <= 1000.0))
+            r.fail_key("fps", "must be a number of frames a second over 0, up to 1000, got " + fps.dump());
+        desc.fps = fps.get<float>();
     }
     if (r.has("frames")) {
         const json& f = r.at("frames");
@@ -308,7 +310,7 @@ SceneDesc parse_scene_json(const std::string& text, const std::filesystem::path&
     } catch (const json::exception& e) {  // syntax, and numbers past double's range (out_of_range)
         std::string what = e.what();
         const auto colon = what.find("parse error");
-        throw Error(source.string() + ": invalid JSON: " + (colon == std::string::npos ? what : what.substr(colon)));
+        throw Error(source.string() + ": invalid JSON: " + (colon == std::string::npos ? json_message(what) : what.substr(colon)));
     }
 
     SceneDesc scene;

@@ -224,8 +224,6 @@ int run_render(const RenderOptions& o) {
     SceneDesc desc = scene_from_options(o.scene);
     apply_frame_overrides(o, desc);
     FrameFiles files{o.output, o.svg, o.state_only ? std::string() : o.dump_paths, o.exr};
-    if (!o.state_only) create_folders(files);
-    if (!o.save_states.empty()) create_folder(o.save_states, "the --save-states");
     const std::optional<RenderState> start_state = read_start_state(o);
 
     const bool validation = validation_on(o.scene);
@@ -264,6 +262,9 @@ int run_render(const RenderOptions& o) {
     files.progress_state = files.out_dir / (part_given ? ".linework-state-" + std::to_string(shot.part.first) + "-" +
                                                             std::to_string(shot.part.last)
                                                       : std::string(".linework-state"));
+    // Made once the scene has loaded, so that a scene that fails to load leaves no empty folders.
+    if (!o.state_only) create_folders(files);
+    if (!o.save_states.empty()) create_folder(o.save_states, "the --save-states");
     print_header(o, session, ctx, shot, files.sequence, load_timer.elapsed_ms());
 
     shot.start = first_frame(o, shot, files, start_state, session);
@@ -289,7 +290,7 @@ Runner add_render_command(CLI::App& app) {
         "Render a scene file or a glTF model headlessly to OUT/frame_0000.png.\n"
         "Without a camera in the scene (or --eye/--target), the camera frames the bounding box.");
     add_frame_options(cmd, *o);
-    cmd->add_option("-o,--output", o->output, "Output folder (created if missing; not with --state-only)");
+    cmd->add_option("-o,--output", o->output, "Output folder, created if missing (required, but not with --state-only)");
     cmd->add_option("--frames", o->frames,
                     "Render frames A:B (inclusive) to OUT/frame_NNNN.png (default: the scene's, else one frame)");
     cmd->add_option("--warmup", o->warmup, "Render K frames before A (or the part) without writing them, so it starts "

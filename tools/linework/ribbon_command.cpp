@@ -1,5 +1,6 @@
 // `linework ribbon` — a structured pattern synthesized along a curve (Zhou et al. 2013), and
 // `linework ribbon-exemplar` — the procedural exemplars it is shown with.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -89,13 +90,19 @@ int run_ribbon(const RibbonOptions& o) {
     desc.height = size->y;
     // The curve is in output pixels: with a --size that misses it, the output would be blank.
     const glm::vec2 lo = ribbon.min_corner(), hi = ribbon.max_corner();
-    const bool misses = hi.x <= 0.0f || hi.y <= 0.0f || lo.x >= float(size->x) || lo.y >= float(size->y);
+    // Piece by piece: a box that overlaps the image does not mean the ribbon does (a wave's box
+    // is mostly empty).
+    const bool misses = std::none_of(ribbon.pieces.begin(), ribbon.pieces.end(), [&](const RibbonPiece& p) {
+        const glm::vec2 a = glm::min(glm::min(p.top_left, p.top_right), glm::min(p.bottom_left, p.bottom_right));
+        const glm::vec2 b = glm::max(glm::max(p.top_left, p.top_right), glm::max(p.bottom_left, p.bottom_right));
+        return b.x > 0.0f && b.y > 0.0f && a.x < float(size->x) && a.y < float(size->y);
+    });
     const bool clipped = lo.x < 0.0f || lo.y < 0.0f || hi.x > float(size->x) || hi.y > float(size->y);
     const std::string box = "x " + std::to_string(int(std::floor(lo.x))) + " to " + std::to_string(int(std::ceil(hi.x))) +
                             ", y " + std::to_string(int(std::floor(lo.y))) + " to " + std::to_string(int(std::ceil(hi.y)));
     if (misses)
-        throw usage_error("--size " + o.size + ": the ribbon along " + o.curve + " (" + box +
-                          ", in output pixels) lies wholly outside the image");
+        throw usage_error("--size " + o.size + ": nothing of the ribbon along " + o.curve + " (" + box +
+                          ", in output pixels) falls inside the image");
     if (clipped)
         std::fprintf(stderr, "ribbon: warning: the ribbon (%s) reaches past the %dx%d image and is cut there\n",
                      box.c_str(), size->x, size->y);
@@ -160,14 +167,6 @@ int run_ribbon(const RibbonOptions& o) {
     if (s.stitch)
         std::printf("stitch: seam error %.1f -> %.1f (%.0f ms)\n", double(s.stitch->total_before()),
                     double(s.stitch->total_after()), s.stitch_ms);
-    // A box that overlaps the image does not mean the ribbon does (a wave's box is mostly
-    // empty). (Without --size the image holds the whole ribbon; an empty one there is the
-    // avoidance's, reported above.)
-    bool inked = false;
-    for (size_t i = 3; i < s.image.pixels.size() && !inked; i += 4) inked = s.image.pixels[i] != 0;
-    if (!inked && !o.size.empty())
-        throw usage_error("--size " + o.size + ": nothing of the ribbon along " + o.curve + " (" + box +
-                          ", in output pixels) falls inside the image");
     write_png(o.output, composite(s.image, o.transparent));
     std::printf("wrote %s\n", o.output.c_str());
     if (!o.dump.empty()) {
@@ -184,7 +183,8 @@ struct ExemplarOptions {
 
 int run_exemplar(const ExemplarOptions& o) {
     const glm::ivec2 size = parse_size(o.size, "--size");
-    const ImageRGBA8 image = generate_exemplar(o.name, size.x, size.y, o.seed);
+    const ImageRGBA8 image =
+        flags_named({{"exemplar size", "--size"}}, [&] { return generate_exemplar(o.name, size.x, size.y, o.seed); });
     write_png(o.output, image);
     std::printf("wrote %s (%s, %dx%d, seed %llu)\n", o.output.c_str(), o.name.c_str(), size.x, size.y,
                 static_cast<unsigned long long>(o.seed));
@@ -253,7 +253,7 @@ Runner add_ribbon_exemplar_command(CLI::App& app) {
         "chain, lace, zigzag, beads or rope (sizes and spacings vary with the seed).");
     cmd->add_option("name", o->name, "Pattern")->required()->check(CLI::IsMember(exemplar_names()));
     cmd->add_option("-o,--output", o->output, "Output PNG")->required()->check(output_file());
-    cmd->add_option("--size", o->size, "Size WxH")->capture_default_str();
+    cmd->add_option("--size", o->size, "Size WxH, 16x16 to 4096x4096")->capture_default_str();
     cmd->add_option("--seed", o->seed, "Variation seed")->check(seed())->capture_default_str();
     return [o] { return run_exemplar(*o); };
 }
