@@ -191,7 +191,8 @@ pyb::dict ribbon_info(const RibbonSynthesis& s, const RibbonSynthesisDesc& desc,
 
 // The engine's names of the ribbon's parameters → the Python arguments.
 constexpr std::initializer_list<std::pair<const char*, const char*>> kRibbonNames = {
-    {"ribbon width", "width"}, {"ribbon piece", "piece"}, {"ribbon scale", "scale"}, {"device", "device"}};
+    {"ribbon width", "width"}, {"ribbon piece", "piece"}, {"ribbon scale", "scale"}, {"ribbon size", "size"},
+    {"device", "device"}};
 
 pyb::object ribbon(const pyb::object& exemplar_value, const pyb::object& curve_value, bool closed,
                    std::optional<float> piece, std::optional<float> width, std::optional<float> scale, uint64_t seed,
@@ -231,6 +232,8 @@ pyb::object ribbon(const pyb::object& exemplar_value, const pyb::object& curve_v
         if (size->x > 16384 || size->y > 16384)
             throw pyb::value_error(curve_where + ": the curve reaches past 16384 pixels; give size");
     }
+    else
+        arguments_named(kRibbonNames, [&] { check_ribbon_in_image(built, size->x, size->y); });
     desc.width = size->x;
     desc.height = size->y;
     ForbiddenMask user;
@@ -259,8 +262,17 @@ pyb::object ribbon(const pyb::object& exemplar_value, const pyb::object& curve_v
     });
     check_validation(*ctx);
 
-    size_t cut = 0;
-    for (ValidityRule rule : s.solution.rules) cut += rule > ValidityRule::Empty ? 1 : 0;
+    size_t cut = 0, empty = 0;
+    for (ValidityRule rule : s.solution.rules) {
+        cut += rule > ValidityRule::Empty ? 1 : 0;
+        empty += rule == ValidityRule::Empty ? 1 : 0;
+    }
+    if (empty > 0) {  // as the command prints it: with every piece empty the image is blank
+        const std::string warning = std::to_string(empty) + " of " + std::to_string(s.solution.rules.size()) +
+                                    " pieces lie where no ink can avoid the overlap and are left empty "
+                                    "(info['empty_pieces'])";
+        if (PyErr_WarnEx(PyExc_RuntimeWarning, warning.c_str(), 1) != 0) throw pyb::error_already_set();
+    }
     if (cut > 0) {
         const std::string warning = std::to_string(cut) + " of " + std::to_string(s.solution.rules.size()) +
                                     " pieces cannot hold the whole pattern where the curve bends this tightly and may "

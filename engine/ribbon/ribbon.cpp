@@ -31,6 +31,22 @@ glm::vec2 Ribbon::max_corner() const {
     return hi;
 }
 
+void check_ribbon_in_image(const Ribbon& ribbon, int width, int height) {
+    const bool meets = std::any_of(ribbon.pieces.begin(), ribbon.pieces.end(), [&](const RibbonPiece& p) {
+        const glm::vec2 a = glm::min(glm::min(p.top_left, p.top_right), glm::min(p.bottom_left, p.bottom_right));
+        const glm::vec2 b = glm::max(glm::max(p.top_left, p.top_right), glm::max(p.bottom_left, p.bottom_right));
+        return b.x > 0.0f && b.y > 0.0f && a.x < float(width) && a.y < float(height);
+    });
+    if (meets || ribbon.pieces.empty()) return;
+    const glm::vec2 lo = ribbon.min_corner(), hi = ribbon.max_corner();
+    throw ParameterError("ribbon size", " " + std::to_string(width) + "x" + std::to_string(height) +
+                                            ": nothing of the ribbon (x " + std::to_string(int(std::floor(lo.x))) +
+                                            " to " + std::to_string(int(std::ceil(hi.x))) + ", y " +
+                                            std::to_string(int(std::floor(lo.y))) + " to " +
+                                            std::to_string(int(std::ceil(hi.y))) +
+                                            ", output pixels) falls inside the image");
+}
+
 Ribbon build_ribbon(const ArclengthCurve& curve, const RibbonParams& params) {
     if (!(params.width > 0.0f) || !std::isfinite(params.width))
         throw ParameterError("ribbon width", ": the ribbon width b must be a positive number of pixels");

@@ -63,4 +63,9 @@ struct Ribbon {
 // more than 100000 pieces.
 [[nodiscard]] Ribbon build_ribbon(const ArclengthCurve& curve, const RibbonParams& params);
 
+// An output of width × height pixels that no piece reaches into would be blank: a
+// ParameterError "ribbon size" saying where the ribbon lies. (Piece by piece: the ribbon's box
+// can overlap an image that the ribbon misses.)
+void check_ribbon_in_image(const Ribbon& ribbon, int width, int height);
+
 }  // namespace lw

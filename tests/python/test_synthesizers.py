@@ -316,6 +316,16 @@ def test_ribbon_bad_input_gives_the_command_lines_message(ribbon_inputs):
         linework.ribbon(exemplar, RIBBON_CURVE, device="quantum")
     with pytest.raises(ValueError, match="^avoid: the avoidance map is 8x8 but the output is 104x46$"):
         linework.ribbon(exemplar, RIBBON_CURVE, avoid=np.zeros((8, 8, 4), np.uint8))
+    # A size the ribbon misses would give a blank image: refused, as on the command line.
+    message = cli_error("ribbon", ribbon_inputs / "chain.png", "--curve", ribbon_inputs / "curve.json", "-o",
+                        ribbon_inputs / "x.png", "--size", "5x5")
+    assert message.startswith("--size 5x5: nothing of the ribbon")
+    with pytest.raises(ValueError) as e:
+        linework.ribbon(exemplar, RIBBON_CURVE, size=(5, 5))
+    assert str(e.value) == message[2:]
+    # An avoidance map that forbids everything empties every piece: said, not only in info.
+    with pytest.warns(RuntimeWarning, match="pieces lie where no ink can avoid the overlap"):
+        linework.ribbon(exemplar, RIBBON_CURVE, avoid=np.full((46, 104, 4), 255, np.uint8), reference=True)
 
 
 # ---- Stroke patterns --------------------------------------------------------------------

@@ -88,24 +88,14 @@ int run_ribbon(const RibbonOptions& o) {
     }
     desc.width = size->x;
     desc.height = size->y;
-    // The curve is in output pixels: with a --size that misses it, the output would be blank.
+    // The curve is in output pixels: a --size that misses the ribbon would give a blank image,
+    // one that cuts it a part.
+    if (!o.size.empty()) flags_named({{"ribbon size", "--size"}}, [&] { check_ribbon_in_image(ribbon, size->x, size->y); });
     const glm::vec2 lo = ribbon.min_corner(), hi = ribbon.max_corner();
-    // Piece by piece: a box that overlaps the image does not mean the ribbon does (a wave's box
-    // is mostly empty).
-    const bool misses = std::none_of(ribbon.pieces.begin(), ribbon.pieces.end(), [&](const RibbonPiece& p) {
-        const glm::vec2 a = glm::min(glm::min(p.top_left, p.top_right), glm::min(p.bottom_left, p.bottom_right));
-        const glm::vec2 b = glm::max(glm::max(p.top_left, p.top_right), glm::max(p.bottom_left, p.bottom_right));
-        return b.x > 0.0f && b.y > 0.0f && a.x < float(size->x) && a.y < float(size->y);
-    });
-    const bool clipped = lo.x < 0.0f || lo.y < 0.0f || hi.x > float(size->x) || hi.y > float(size->y);
-    const std::string box = "x " + std::to_string(int(std::floor(lo.x))) + " to " + std::to_string(int(std::ceil(hi.x))) +
-                            ", y " + std::to_string(int(std::floor(lo.y))) + " to " + std::to_string(int(std::ceil(hi.y)));
-    if (misses)
-        throw usage_error("--size " + o.size + ": nothing of the ribbon along " + o.curve + " (" + box +
-                          ", in output pixels) falls inside the image");
-    if (clipped)
-        std::fprintf(stderr, "ribbon: warning: the ribbon (%s) reaches past the %dx%d image and is cut there\n",
-                     box.c_str(), size->x, size->y);
+    if (lo.x < 0.0f || lo.y < 0.0f || hi.x > float(size->x) || hi.y > float(size->y))
+        std::fprintf(stderr, "ribbon: warning: the ribbon (x %d to %d, y %d to %d) reaches past the %dx%d image and is cut there\n",
+                     int(std::floor(lo.x)), int(std::ceil(hi.x)), int(std::floor(lo.y)), int(std::ceil(hi.y)), size->x,
+                     size->y);
     ForbiddenMask user;
     if (!o.avoid.empty()) {
         user = forbidden_from_image(read_image_rgba8(o.avoid));
