@@ -6,6 +6,7 @@
 // ValueError with the command line's message; a failure while running (Vulkan, a
 // validation message with LINEWORK_VALIDATION=1) raises RuntimeError.
 #include "convert.h"
+#include "core/text.h"
 
 #include <pybind11/stl/filesystem.h>
 
@@ -42,6 +43,9 @@ PYBIND11_MODULE(linework, m) {
     m.def(
         "write_png",
         [](const std::filesystem::path& path, const pybind11::array& image) {
+            // A PNG whatever the name says: a .jpg name would hold a PNG no reader expects.
+            if (lw::lower(path.extension().string()) != ".png")
+                throw pybind11::value_error("path: " + path.string() + ": write_png writes .png files");
             const lw::ImageRGBA8 pixels = lw::py::array_to_image(image, "image");
             lw::write_png(path, pixels);
         },

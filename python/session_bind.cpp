@@ -2,7 +2,9 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include "core/text.h"
 #include "scene/scene.h"
+#include "scene/scene_file.h"
 #include "session.h"
 
 namespace lw::py {
@@ -81,6 +83,9 @@ pyb::tuple load_mesh(const std::filesystem::path& path) {
     SceneDesc desc = scene_for_model(path);
     const LoadedScene scene = reading_input([&] {
         if (!std::filesystem::exists(path)) throw Error(path.string() + ": no such file");
+        if (!is_model_path(path))
+            throw Error(path.string() + ": unsupported model format" + extension_phrase(lower(path.extension().string())) +
+                        ": load_mesh reads .gltf, .glb, .obj and .ply models");
         return load_scene(desc);
     });
     TriangleMesh mesh = scene.mesh;
@@ -151,7 +156,9 @@ format; relative paths from the working folder), or None with vertices (N×3) an
 (M×3) — a dict may come beside them, without "model". device: "auto", "cpu" (lavapipe),
 "gpu" or an index of `linework devices`. size=(w, h), eye/target/up (x, y, z) and fov
 (degrees) override the scene's as the command line's flags do. coherent: parameterize
-every line set's paths (RANSAC from frame to frame) even where no style needs it.
+every line set's paths (RANSAC from frame to frame) even where no style needs it; as with
+`--dump-paths`, fragments under the minimum stroke length are then dropped and paths split
+where the parameterization does, so plain lines draw a little differently.
 validation: the Khronos layer on (None: LINEWORK_VALIDATION decides); a call that makes it
 speak raises RuntimeError. Bad input raises ValueError with the command line's message.)")
         .def(pyb::init([](const pyb::object& scene, const std::string& device, const pyb::object& size,

@@ -228,6 +228,7 @@ pyb::object hatch(const pyb::object& training, int count, int window, int block,
     if (!along.is_none()) {
         std::string along_where;
         const std::vector<Stroke> along_strokes = strokes_argument(along, "along", &along_where);
+        if (along_strokes.empty()) throw pyb::value_error("along: no strokes");  // as `--along` of an empty file
         paths = naming_input(along_where, [&] { return hatch_paths(along_strokes); });
     }
 

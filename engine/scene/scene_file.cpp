@@ -322,8 +322,15 @@ SceneDesc parse_scene_json(const std::string& text, const std::filesystem::path&
     if (r.has("description")) scene.description = r.string_of("description");
     if (r.has("layers")) scene.layers = read_layers(r, source);
     if (models_given && r.has("model")) r.fail_key("model", "not allowed beside a mesh given as arrays");
-    if (!r.has("model") && scene.layers.empty() && !models_given)
-        r.fail_key("model", "required (a .gltf/.glb path, or an array of them) unless the scene has layers");
+    if (!r.has("model") && scene.layers.empty() && !models_given) {
+        // A misspelt "model" is what is missing more often than a model: name the key first.
+        static const std::set<std::string> kTopKeys{"version", "description", "model", "size", "fov", "camera",
+                                                     "camera_path", "animation", "shading", "color", "materials",
+                                                     "background", "samples", "lines", "line_sets", "layers"};
+        for (const auto& [key, value] : root.items())
+            if (!kTopKeys.count(key)) r.fail_key(key, "unknown key (and no \"model\")");
+        r.fail_key("model", "required (a .gltf/.glb, .obj or .ply path, or an array of them) unless the scene has layers");
+    }
     if (r.has("model")) {
         const json& m = r.at("model");
         std::vector<std::string> names;

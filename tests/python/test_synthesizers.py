@@ -471,3 +471,6 @@ def test_hatch_bad_input_gives_the_command_lines_message(tmp_path):
         linework.hatch(training, count=0)
     with pytest.raises(ValueError, match=r"^training: expected a list of strokes, got one N×2 array"):
         linework.hatch(np.zeros((5, 2)), count=10)
+    # An empty list of paths is refused, as an --along file without strokes (not ignored).
+    with pytest.raises(ValueError, match="^along: no strokes$"):
+        linework.hatch(training, count=10, along=[])
