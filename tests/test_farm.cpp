@@ -120,11 +120,17 @@ TEST(Farm, ExactPlanRunHereEqualsOneRender) {
     ASSERT_EQ(made.exit_code, 0) << made.output;
     const nlohmann::json plan = read_plan(dir / "farm");
     for (const std::string a : plan.at("arguments")) EXPECT_NE(a, "--exr");
-    // Last chunk first: a task needing the state phase must fail cleanly without it.
-    const std::string last = plan.at("phases").back().at("tasks").back().at("shell");
-    const auto early = test::run_command("LINEWORK_VALIDATION=1 " + last + " 2>&1");
+    // Last chunk first: a task needing the state phase must fail cleanly without it, and
+    // `farm task` records the failure for `farm status` as the Slurm script does.
+    const std::string last = std::to_string(plan.at("phases").back().at("tasks").size() - 1);
+    const auto early = test::run_linework("farm task " + test::quote(dir / "farm") + " frames " + last);
     EXPECT_EQ(early.exit_code, 1) << early.output;
     EXPECT_NE(early.output.find("state_0008.lwstate: no render state"), std::string::npos) << early.output;
+    const auto failed = test::run_linework("farm status " + test::quote(dir / "farm"));
+    EXPECT_NE(failed.output.find("failed (exit 1, see"), std::string::npos) << failed.output;
+    std::ifstream log(dir / "farm/logs" / ("frames_" + last + ".log"));
+    const std::string logged((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
+    EXPECT_NE(logged.find("no render state"), std::string::npos) << logged;
     // Each task as a scheduler without our scripts runs it: `farm task DIR PHASE I`.
     for (const auto& phase : plan.at("phases"))
         for (size_t i = 0; i < phase.at("tasks").size(); ++i) {

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <memory>
 
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include "commands.h"
@@ -48,7 +49,9 @@ std::filesystem::path this_binary() {
 int run_farm(const FarmOptions& o, const CLI::App& cmd) {
     if (o.dir.empty()) throw usage_error("farm: --output (-o) DIR is required");
     if (o.frames.empty()) throw usage_error("farm: --frames A:B is required (the shot)");
-    if (o.chunk < 1) throw usage_error("farm: --chunk N (frames per task, 1 or more) is required");
+    if (o.chunk < 1)
+        throw usage_error(cmd.count("--chunk") > 0 ? "--chunk: must be 1 or more frames per task, got " + std::to_string(o.chunk)
+                                                   : std::string("farm: --chunk N (frames per task, 1 or more) is required"));
     if (o.warmup < -1 || (o.warmup == -1 && cmd.count("--warmup") > 0))
         throw usage_error("--warmup: must be 0 or more");
     if (o.exact == (o.warmup >= 0)) throw usage_error("farm: choose --exact or --warmup K (one of them)");
@@ -171,9 +174,48 @@ int run_status(const std::string& dir) {
     return missing.empty() ? 0 : 3;
 }
 
-// `farm task DIR PHASE I`: runs task I of the phase in the plan's working folder, in place of
-// this process (its exit code is the task's), so that a scheduler that hands out numbered
-// tasks (OpenCue's frames of a layer, Deadline's frames of a job) needs no script of ours.
+// Runs `command` with its output passed through to ours and appended to `log`; returns its
+// exit status (128 + the signal's number when a signal ended it, as a shell reports it).
+int run_logged(const std::vector<std::string>& command, const std::filesystem::path& log) {
+    int pipe_ends[2];
+    if (pipe(pipe_ends) != 0) throw Error(std::string("farm task: cannot make a pipe (") + std::strerror(errno) + ")");
+    std::fflush(stdout);
+    const pid_t child = fork();
+    if (child < 0) throw Error(std::string("farm task: cannot start the task (") + std::strerror(errno) + ")");
+    if (child == 0) {
+        dup2(pipe_ends[1], STDOUT_FILENO);
+        dup2(pipe_ends[1], STDERR_FILENO);
+        close(pipe_ends[0]);
+        close(pipe_ends[1]);
+        std::vector<char*> argv;
+        for (const std::string& a : command) argv.push_back(const_cast<char*>(a.c_str()));
+        argv.push_back(nullptr);
+        execv(argv[0], argv.data());
+        std::fprintf(stderr, "linework: error: %s: cannot run (%s)\n", command[0].c_str(), std::strerror(errno));
+        _exit(127);
+    }
+    close(pipe_ends[1]);
+    std::ofstream out(log, std::ios::app | std::ios::binary);
+    char buffer[4096];
+    for (ssize_t n; (n = read(pipe_ends[0], buffer, sizeof buffer)) != 0;) {
+        if (n < 0 && errno == EINTR) continue;
+        if (n < 0) break;
+        (void)!write(STDOUT_FILENO, buffer, size_t(n));
+        out.write(buffer, n);
+        out.flush();
+    }
+    close(pipe_ends[0]);
+    int status = 0;
+    while (waitpid(child, &status, 0) < 0 && errno == EINTR) {
+    }
+    return WIFEXITED(status) ? WEXITSTATUS(status) : WIFSIGNALED(status) ? 128 + WTERMSIG(status) : 1;
+}
+
+// `farm task DIR PHASE I`: runs task I of the phase in the plan's working folder, so that a
+// scheduler that hands out numbered tasks (OpenCue's frames of a layer, Deadline's frames of a
+// job) needs no script of ours. As the Slurm script does, it appends the task's output to
+// logs/PHASE_I.log and records its exit status in logs/ID.rc for `farm status`; the exit
+// code is the task's.
 int run_task(const FarmOptions& o) {
     const FarmPlan plan = read_plan(o.task_dir);
     const auto phase = std::find_if(plan.phases.begin(), plan.phases.end(),
@@ -187,13 +229,13 @@ int run_task(const FarmOptions& o) {
     std::error_code ec;
     std::filesystem::current_path(plan.request.working_dir, ec);
     if (ec) throw Error(plan.request.working_dir.string() + ": cannot run the task there (" + ec.message() + ")");
+    create_folder(plan.logs(), "log");
+    const std::filesystem::path log = plan.logs() / (phase->name + "_" + std::to_string(o.task_index) + ".log");
     std::printf("linework farm: task %s: %s\n", task.id.c_str(), shell_line(task.command).c_str());
-    std::fflush(stdout);
-    std::vector<char*> argv;
-    for (const std::string& a : task.command) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    execv(argv[0], argv.data());
-    throw Error(task.command[0] + ": cannot run (" + std::strerror(errno) + ")");
+    std::ofstream(log, std::ios::app) << "linework farm: task " << task.id << ": " << shell_line(task.command) << "\n";
+    const int rc = run_logged(task.command, log);
+    std::ofstream(plan.logs() / (task.id + ".rc")) << rc << "\n";
+    return rc;
 }
 
 }  // namespace

@@ -119,6 +119,8 @@ SceneDesc scene_from_options(const SceneOptions& o) {
                 throw usage_error(std::string(flag) + ": " + o.input + " draws no lines (\"lines\": false)");
     if (!o.contours.empty()) desc.lines.params.contours = contour_mode(o.contours);
     if (!o.curvature.empty()) desc.lines.params.curvature = curvature_fit(o.curvature);
+    // Read when the first frame is drawn; a farm plans its tasks from these options.
+    if (!o.slam.empty() && !std::filesystem::exists(o.slam)) throw Error(o.slam + ": no such SLAM file");
     if (!o.slam.empty()) use_slam_strokes(desc.lines, o.slam, o.stroke_width);
     return desc;
 }
