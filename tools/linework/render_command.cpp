@@ -67,6 +67,9 @@ bool ends_chunk(int f, FrameRange range, int chunk) {
 // pose the state was taken with.
 std::optional<RenderState> read_start_state(const RenderOptions& o) {
     if (o.start_state.empty()) return std::nullopt;
+    if (!std::filesystem::exists(o.start_state))
+        throw Error(o.start_state + ": no render state saved here yet (a farm's frames task needs its state phase to "
+                                    "have run; `render --save-states` writes them)");
     RenderState state = read_render_state(o.start_state);
     if (state.signature != o.state_signature)
         throw Error(o.start_state + ": saved by a render with other options (the scene, camera, style and line "
