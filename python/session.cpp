@@ -2,7 +2,9 @@
 // model, a dict or arrays; configure(); the camera by parts or by view matrix.
 #include "session.h"
 
+#include <cmath>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -15,6 +17,31 @@ namespace {
 
 using json = nlohmann::json;
 
+// The key path of the first float in `value` that is NaN or infinite ("lines.silhouette.width",
+// "camera.eye[0]"), or nothing: JSON has no such numbers, and the json module's own complaint
+// names no key.
+std::optional<std::string> non_finite_at(const pyb::handle& value, const std::string& path) {
+    if (pyb::isinstance<pyb::dict>(value)) {
+        for (const auto& [key, item] : pyb::reinterpret_borrow<pyb::dict>(value)) {
+            const std::string k = pyb::str(key);
+            if (auto at = non_finite_at(item, path.empty() ? k : path + "." + k)) return at;
+        }
+        return std::nullopt;
+    }
+    if (pyb::isinstance<pyb::list>(value) || pyb::isinstance<pyb::tuple>(value)) {
+        size_t i = 0;
+        for (const pyb::handle item : value)
+            if (auto at = non_finite_at(item, path + "[" + std::to_string(i++) + "]")) return at;
+        return std::nullopt;
+    }
+    if (pyb::hasattr(value, "tolist") && !pyb::isinstance<pyb::str>(value))
+        return non_finite_at(value.attr("tolist")(), path);
+    if (pyb::isinstance<pyb::float_>(value) && !std::isfinite(value.cast<double>()))
+        return (path.empty() ? std::string("the value") : path) + ": not a finite number (" +
+               std::string(pyb::str(value)) + ")";
+    return std::nullopt;
+}
+
 // Python data → JSON through the json module; NumPy arrays and scalars become lists/numbers.
 json to_json(const pyb::object& value, const std::string& name) {
     pyb::object dumps = pyb::module_::import("json").attr("dumps");
@@ -26,6 +53,7 @@ json to_json(const pyb::object& value, const std::string& name) {
     try {
         text = dumps(value, pyb::arg("default") = listed, pyb::arg("allow_nan") = false).cast<std::string>();
     } catch (pyb::error_already_set& e) {
+        if (const std::optional<std::string> at = non_finite_at(value, "")) throw pyb::value_error(name + ": " + *at);
         throw pyb::value_error(name + ": " + std::string(pyb::str(e.value())));
     }
     return json::parse(text);

@@ -127,6 +127,9 @@ def test_configure_is_a_scene_edit(tmp_path):
     # A bad key raises the scene parser's error and changes nothing.
     with pytest.raises(ValueError, match=r"lines\.silhouette\.width"):
         s.configure({"lines": {"silhouette": {"width": "wide"}}})
+    # JSON has no NaN: the key that holds one is named (the json module names none).
+    with pytest.raises(ValueError, match=r"^configure: camera\.eye\[1\]: not a finite number \(nan\)$"):
+        s.configure({"camera": {"eye": [0.0, float("nan"), 3.0]}})
     assert np.array_equal(s.render(), image)
     assert s.scene["lines"]["silhouette"]["width"] == 4
     # Size and camera change live; an orbit reopens the session (a camera path is its own).
