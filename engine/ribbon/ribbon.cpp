@@ -94,7 +94,7 @@ Ribbon build_ribbon(const ArclengthCurve& curve, const RibbonParams& params) {
     for (size_t i = 0; i + 1 < xs.size(); ++i)
         ribbon.pieces.push_back({top[i], bottom[i], bottom[i + 1], top[i + 1], tangent[i]});
     if (ribbon.closed && ribbon.pieces.size() < 2)
-        throw ParameterError("ribbon piece", ": a closed curve of length " + std::to_string(length) +
+        throw ParameterError("ribbon piece", ": a closed curve of length " + std::to_string(int(std::lround(length))) +
                                                  " px needs at least two pieces; use a shorter piece length");
     return ribbon;
 }

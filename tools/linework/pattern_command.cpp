@@ -66,11 +66,13 @@ int run_pattern(const PatternOptions& o) {
     const double analysis_ms = analysis_timer.elapsed_ms();
     size_t edges = 0;
     for (const auto& n : ref.distribution.neighbours) edges += n.size();
-    std::printf("reference: %s, %zu strokes -> %zu elements at scale ε = %g (%s fit), %s %s %.1f, %zu neighbour pairs (%.1f ms)\n",
+    // The reference's own frame: its bounding box's (default), or the file given for it.
+    const std::string frame = ref_frame_file.empty() ? "its bounding box's" : ref_frame_file + "'s";
+    std::printf("reference: %s, %zu strokes -> %zu elements at scale ε = %g (%s fit), %s %s %s %.1f, %zu neighbour pairs "
+                "(%.1f ms)\n",
                 o.reference.c_str(), ref.strokes.size(), ref.elements.size(), double(ref.epsilon), o.fit.c_str(),
-                along_path ? "chain along a path of length" : "unskewed Delaunay in an area of",
-                ref_frame_file.empty() ? "bounding-box" : ref_frame_file.c_str(), double(ref.measure), edges / 2,
-                analysis_ms);
+                along_path ? "a chain along" : "an unskewed Delaunay graph in", frame.c_str(),
+                along_path ? "midline, of length" : "region, of area", double(ref.measure), edges / 2, analysis_ms);
     std::fflush(stdout);
 
     const PatternSynthesis s = naming(along_path ? o.path : o.region, [&] { return synthesize_pattern(ref, target, desc); });

@@ -114,7 +114,8 @@ int run_slam(const SlamOptions& o) {
     const synth::SlamSynthesis s =
         flags_named({{"SLAM length", "--length"}, {"SLAM levels", "--levels"}}, [&] { return synth::synthesize_slam(ink, desc); });
     if (s.exemplar_cols != ink.cols)
-        std::printf("exemplar cropped to %d columns (a multiple of %d)\n", s.exemplar_cols, m.unit);
+        std::printf("exemplar cropped to %d column%s (a multiple of %d)\n", s.exemplar_cols, s.exemplar_cols == 1 ? "" : "s",
+                    m.unit);
     for (const synth::SlamLevelReport& r : s.reports)
         std::printf("  level %2d  l = %.4f  %5d texels  %7.1f ms%s\n", r.index, r.level, r.length, r.ms,
                     r.tiled ? "  (A_0.5 twice: what its synthesis computes, without the rounding)" : "");
