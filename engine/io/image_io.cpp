@@ -26,6 +26,7 @@ void write_png(const std::filesystem::path& path, const ImageRGBA8& image) {
 
 ImageRGBA8 read_image_rgba8(const std::filesystem::path& path) {
     if (!std::filesystem::exists(path)) throw Error(path.string() + ": no such file");
+    if (std::filesystem::is_directory(path)) throw Error(path.string() + ": a folder, not an image");
     // OpenImageIO's own readers allocate from the header as they open a file: cap what they
     // may believe (16384² RGBA is 1 GiB) so that a corrupt header fails fast (fuzz_image found
     // a 26-byte TGA that made it allocate for 20 s).

@@ -41,6 +41,7 @@ void write_slam(const std::filesystem::path& path, const Slam& slam) {
 Slam read_slam(const std::filesystem::path& path) {
     const std::string name = path.string();
     if (!std::filesystem::exists(path)) throw Error(name + ": no such SLAM file");
+    if (std::filesystem::is_directory(path)) throw Error(name + ": a folder, not a SLAM file (.exr)");
     auto in = OIIO::ImageInput::open(name);
     if (!in) throw Error(name + ": cannot read SLAM: " + OIIO::geterror());
     Slam slam;

@@ -11,6 +11,7 @@
 #include "core/error.h"
 #include "core/text.h"
 #include "vector/json_object.h"
+#include "vector/vector_file.h"
 #include "vector/xml.h"
 
 namespace lw {
@@ -18,14 +19,6 @@ namespace lw {
 namespace {
 
 constexpr double kMaxCoordinate = 1e6;  // output pixels; larger is surely a unit mistake
-
-std::string read_text(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw Error(path.string() + ": cannot open the curve file");
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    return buffer.str();
-}
 
 glm::vec2 checked_point(double x, double y, const std::string& where, const std::string& what) {
     if (!std::isfinite(x) || !std::isfinite(y) || std::abs(x) > kMaxCoordinate || std::abs(y) > kMaxCoordinate)
@@ -214,8 +207,7 @@ Curve2D parse_curve_svg(const std::string& svg, const std::string& where) {
 }
 
 Curve2D load_curve(const std::filesystem::path& path) {
-    if (!std::filesystem::exists(path)) throw Error(path.string() + ": no such file");
-    const std::string text = read_text(path);
+    const std::string text = read_vector_file(path, "curve");
     return lower(path.extension().string()) == ".svg" ? parse_curve_svg(text, path.string()) : parse_curve_json(text, path.string());
 }
 

@@ -15,21 +15,13 @@
 #include "core/text.h"
 #include "vector/curve.h"
 #include "vector/json_object.h"
+#include "vector/vector_file.h"
 
 namespace lw {
 
 namespace {
 
 constexpr double kMaxCoordinate = 1e6;  // as vector/curve.cpp: larger is surely a unit mistake
-
-std::string read_text(const std::filesystem::path& path) {
-    if (!std::filesystem::exists(path)) throw Error(path.string() + ": no such file");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw Error(path.string() + ": cannot open the stroke file");
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    return buffer.str();
-}
 
 // ---- JSON ----------------------------------------------------------------------------
 
@@ -122,7 +114,7 @@ StrokeSet parse_strokes_json(const std::string& text, const std::string& where) 
 }
 
 StrokeSet load_strokes(const std::filesystem::path& path) {
-    const std::string text = read_text(path);
+    const std::string text = read_vector_file(path, "stroke");
     const std::string ext = lower(path.extension().string());
     StrokeSet set = ext == ".svg" ? parse_strokes_svg(text, path.string()) : parse_strokes_json(text, path.string());
     if (set.strokes.empty()) throw Error(path.string() + ": no strokes");

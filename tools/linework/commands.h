@@ -51,7 +51,9 @@ void use_slam_strokes(LinesDesc& lines, const std::string& slam, float width);
 // that a run does not fail at its last step after minutes of work (the message names the
 // folder). render, view and farm make their folders instead (render's -o, --svg and
 // --dump-paths).
-[[nodiscard]] CLI::Validator output_file();
+// With `extension` (".png"), the name must end in it: the file is written in that format
+// whatever it is called, and a wrong name would fail only after the work.
+[[nodiscard]] CLI::Validator output_file(const std::string& extension = "");
 // Only the file part: not an existing folder, not a name ending in "/" (render's --svg,
 // whose folder render makes).
 [[nodiscard]] CLI::Validator output_file_name();

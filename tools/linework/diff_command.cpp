@@ -1,6 +1,7 @@
 // `linework diff A.png B.png` — the golden-image comparison the tests use.
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 
 #include "commands.h"
@@ -21,8 +22,15 @@ struct DiffOptions {
 };
 
 int run_diff(const DiffOptions& o) {
+    std::error_code ec;
+    for (const std::string& input : {o.a, o.b})
+        if (!o.out.empty() && std::filesystem::equivalent(o.out, input, ec))
+            throw usage_error("--out " + o.out + ": is the image " + input + " being compared; give another name");
     const ImageRGBA8 a = read_image_rgba8(o.a);
     const ImageRGBA8 b = read_image_rgba8(o.b);
+    if (a.width != b.width || a.height != b.height)
+        throw Error(o.a + " (" + std::to_string(a.width) + "x" + std::to_string(a.height) + ") and " + o.b + " (" +
+                    std::to_string(b.width) + "x" + std::to_string(b.height) + ") differ in size");
     const ImageDiff d = compare_images(a, b, o.tolerance);
     std::printf("max abs error: %d\n", d.max_abs_error);
     std::printf("rmse: %.4f\n", d.rmse);
@@ -50,11 +58,13 @@ Runner add_diff_command(CLI::App& app) {
         "exits 1 when any threshold is passed.");
     cmd->add_option("a", o->a, "First image")->required();
     cmd->add_option("b", o->b, "Second image")->required();
-    cmd->add_option("--out", o->out, "Write the amplified difference (|A-B| x 8) as PNG")->check(output_file());
+    cmd->add_option("--out", o->out, "Write the amplified difference (|A-B| x 8) as PNG")->check(output_file(".png"));
     cmd->add_option("--max-error", o->max_error, "Largest per-channel difference allowed (0-255)")
         ->check(CLI::Range(0, 255))
         ->capture_default_str();
-    cmd->add_option("--min-psnr", o->min_psnr, "Smallest PSNR allowed, dB")->capture_default_str();
+    cmd->add_option("--min-psnr", o->min_psnr, "Smallest PSNR allowed, dB")
+        ->check(within(0.0, 1000.0, "dB"))
+        ->capture_default_str();
     cmd->add_option("--tolerance", o->tolerance, "Per-channel difference under which a pixel still matches")
         ->check(CLI::Range(0, 255))
         ->capture_default_str();

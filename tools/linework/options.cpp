@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "commands.h"
+#include "core/text.h"
 #include "core/error.h"
 #include "gpu/context.h"
 #include "scene/style.h"
@@ -34,10 +35,12 @@ std::string file_name_problem(const std::string& text) {
 }
 }  // namespace
 
-CLI::Validator output_file() {
+CLI::Validator output_file(const std::string& extension) {
     return CLI::Validator(
-        [](const std::string& text) -> std::string {
+        [extension](const std::string& text) -> std::string {
             if (std::string problem = file_name_problem(text); !problem.empty()) return problem;
+            if (!extension.empty() && lower(std::filesystem::path(text).extension().string()) != extension)
+                return text + ": the file is written as " + extension + "; give a name ending in " + extension;
             const std::filesystem::path folder = std::filesystem::path(text).parent_path();
             const std::filesystem::path where = folder.empty() ? "." : folder;
             std::error_code error;

@@ -109,6 +109,7 @@ CameraOverride camera_override(const RenderOptions& o) {
     if (!o.eye.empty()) c.eye = parse_vec3(o.eye, "--eye");
     if (!o.target.empty()) c.target = parse_vec3(o.target, "--target");
     if (!o.up.empty()) c.up = parse_vec3(o.up, "--up");
+    if (c.up && !(glm::length(*c.up) > 0.0f)) throw usage_error("--up: " + o.up + ": a zero vector has no direction");
     return c;
 }
 

@@ -199,7 +199,7 @@ Runner add_ribbon_command(CLI::App& app) {
                     "Curve in output pixels: JSON {\"points\": [[x, y], ...], \"closed\": bool} or an SVG\n"
                     "file whose first <path> is the curve (commands M, L, H, V, C, S, Q, T, Z)")
         ->required();
-    cmd->add_option("-o,--output", o->output, "Output PNG")->required()->check(output_file());
+    cmd->add_option("-o,--output", o->output, "Output PNG")->required()->check(output_file(".png"));
     cmd->add_flag("--closed", o->closed, "Close the curve: the last piece connects back to the first (§1.5)");
     cmd->add_flag("--stitch", o->stitch, "Deform pieces so that their edges align better (§3.2, P = 32)");
     cmd->add_option("--piece", o->piece, "Piece length δ along the curve, output pixels (default: b / 2; much shorter pieces\n"
@@ -242,7 +242,7 @@ Runner add_ribbon_exemplar_command(CLI::App& app) {
         "Generate a structured-pattern exemplar for `linework ribbon` from signed distances:\n"
         "chain, lace, zigzag, beads or rope (sizes and spacings vary with the seed).");
     cmd->add_option("name", o->name, "Pattern")->required()->check(CLI::IsMember(exemplar_names()));
-    cmd->add_option("-o,--output", o->output, "Output PNG")->required()->check(output_file());
+    cmd->add_option("-o,--output", o->output, "Output PNG")->required()->check(output_file(".png"));
     cmd->add_option("--size", o->size, "Size WxH, 16x16 to 4096x4096")->capture_default_str();
     cmd->add_option("--seed", o->seed, "Variation seed")->check(seed())->capture_default_str();
     return [o] { return run_exemplar(*o); };

@@ -23,7 +23,8 @@ void add_scene_options(CLI::App* cmd, SceneOptions& o, bool offline) {
                     "lines over a plate (default: the scene's \"background\", else white)");
     cmd->add_option("--samples", o.samples,
                     "Samples per pixel of the shaded surface: 1, 4 or 8 (MSAA; lines and strokes are antialiased "
-                    "by their own coverage whatever this is; default: the scene's \"samples\", else 4)")
+                    "by their own coverage whatever this is; default: the scene's \"samples\", else 4, but 1 in the viewer on a "
+                    "CPU device)")
         ->check(CLI::IsMember({1, 4, 8}));
     cmd->add_option("--lines", o.lines,
                     "Line types to draw, comma-separated, instead of the scene's: silhouette, suggestive, crease, border "

@@ -159,7 +159,7 @@ Runner add_slam_command(CLI::App& app) {
                     "Exemplar image, 4–64 rows across the stroke: its alpha is the ink when it has any\n"
                     "translucent pixel, else 1 − luminance")
         ->required();
-    cmd->add_option("-o,--output", o->output, "Output SLAM file (.exr)")->required()->check(output_file());
+    cmd->add_option("-o,--output", o->output, "Output SLAM file (.exr)")->required()->check(output_file(".exr"));
     cmd->add_option("--levels", o->levels,
                     "Levels from 0.5 to 1.0. Each is synthesized at l·Lmax rounded to the pyramid's unit "
                     "(2^(scales+1) texels: 32 for a 32-row exemplar), so past Lmax/(2·unit) + 1 levels (17 for "
@@ -174,7 +174,7 @@ Runner add_slam_command(CLI::App& app) {
         ->capture_default_str();
     cmd->add_option("--seed", o->seed, "Seed of the white noise W_source")->check(seed())->capture_default_str();
     cmd->add_option("--preview", o->preview, "Write a contact sheet of the exemplar and every level (PNG)")
-        ->check(output_file());
+        ->check(output_file(".png"));
     cmd->add_option("--threads", o->threads, "Levels synthesized in parallel (default: one per core)")
         ->check(CLI::Range(0, 256));
     cmd->add_flag("--global", o->global, "Impose every statistic per texture (the 1D model), not mean/variance per row");

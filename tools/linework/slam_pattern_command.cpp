@@ -45,7 +45,7 @@ Runner add_slam_pattern_command(CLI::App& app) {
     cmd->add_option("pattern", o->pattern, "dots, dashes or pencil")
         ->required()
         ->check(CLI::IsMember({"dots", "dashes", "pencil"}));
-    cmd->add_option("-o,--output", o->output, "Output SLAM file (.exr)")->required()->check(output_file());
+    cmd->add_option("-o,--output", o->output, "Output SLAM file (.exr)")->required()->check(output_file(".exr"));
     cmd->add_option("--levels", o->levels, "Levels from 0.5 to 1.0")->check(CLI::Range(2, 256))->capture_default_str();
     cmd->add_option("--length", o->length, "Texture length, texels")->check(CLI::Range(16, 16384))->capture_default_str();
     cmd->add_option("--height", o->height, "Texture height (across the stroke), texels")

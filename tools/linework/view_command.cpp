@@ -14,6 +14,7 @@
 #include <GLFW/glfw3.h>
 
 #include "commands.h"
+#include "render_state.h"
 #include "core/timer.h"
 #include "io/image_io.h"
 #include "platform/swapchain.h"
@@ -83,12 +84,13 @@ uint32_t viewer_samples(const SurfaceStyle& style, const Context& ctx) {
 }  // namespace
 
 int run_view(const ViewOptions& o) {
-    if (o.benchmark < 0) throw usage_error("--benchmark: must be 0 or more frames");
+    if (o.benchmark < 0) throw usage_error("--benchmark: must be 1 or more frames");
     if (o.subdivide < 0 || o.subdivide > 4) throw usage_error("--subdivide: 0 to 4");
     std::unique_ptr<ScriptPlayer> player;
     if (!o.script.empty()) player = std::make_unique<ScriptPlayer>(read_script(o.script));
     const SceneDesc desc = scene_from_options(o.scene);
     if (desc.models.empty()) throw Error(o.scene.input + ": the viewer needs a 3D model (this scene has layers alone)");
+    create_folder(o.output, "screenshot");  // as render makes its -o: a screenshot must not end the session
 
     Window window({.width = desc.width, .height = desc.height,
                    .title = "linework — " + std::filesystem::path(o.scene.input).filename().string()});
@@ -195,9 +197,11 @@ Runner add_view_command(CLI::App& app) {
                     "resize W H, minimize, restore, screenshot PATH.png, save PATH.json, quit");
     cmd->add_option("--benchmark", o->benchmark,
                     "Render N frames (after 10 warm-up frames) of a slow orbit without vsync, print the frame "
-                    "time and fps, exit");
+                    "time and fps, exit")
+        ->check(CLI::Range(1, 100000000));
     cmd->add_option("--subdivide", o->subdivide, "Midpoint subdivisions of the model (each ×4 triangles; benchmarks)");
-    cmd->add_option("-o,--output", o->output, "Folder of screenshots (F12) and saved views (F5)")->capture_default_str();
+    cmd->add_option("-o,--output", o->output, "Folder of screenshots (F12) and saved views (F5), made if missing")
+        ->capture_default_str();
     cmd->add_flag("--no-vsync", o->no_vsync, "Present without waiting for the display (mailbox or immediate)");
     cmd->add_flag("--no-panel", o->no_panel, "Start with the panel hidden (F1 shows it)");
     return [o] { return run_view(*o); };

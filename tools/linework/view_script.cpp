@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "core/text.h"
 #include "view_keys.h"
 
 namespace lw::cli {
@@ -84,6 +85,12 @@ std::vector<ScriptCommand> parse_script(const std::string& text, const std::stri
 }
 
 std::vector<ScriptCommand> read_script(const std::filesystem::path& path) {
+    std::error_code ec;
+    if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
+        throw Error(path.string() + ": not a regular file (a script is a text file of commands)");
+    if (const std::string ext = lower(path.extension().string()); ext == ".png" || ext == ".exr" || ext == ".json")
+        throw Error(path.string() + ": a script is a text file of commands, not a" + (ext == ".json" ? " JSON" : "n image") +
+                    " file");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw Error(path.string() + ": cannot open script");
     std::stringstream buffer;
