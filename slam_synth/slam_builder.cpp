@@ -57,13 +57,13 @@ Plane pad_exemplar(const Plane& exemplar, const SlamModel& model, int cols) {
     return padded;
 }
 
-SlamSynthesis synthesize_slam(const Plane& exemplar, const SlamSynthesisDesc& desc) {
+SlamPlan check_slam_synthesis(const Plane& exemplar, const SlamSynthesisDesc& desc) {
     const std::string& name = desc.exemplar_name;
-    SlamSynthesis out;
-    out.model = slam_model(exemplar.rows, name);
-    const SlamModel& m = out.model;
-    out.exemplar_cols = exemplar.cols / m.unit * m.unit;
-    if (out.exemplar_cols < m.padded_rows)
+    SlamPlan plan;
+    plan.model = slam_model(exemplar.rows, name);
+    const SlamModel& m = plan.model;
+    plan.exemplar_cols = exemplar.cols / m.unit * m.unit;
+    if (plan.exemplar_cols < m.padded_rows)
         throw Error(name + ": " + std::to_string(exemplar.cols) + " columns; a " + std::to_string(exemplar.rows) +
                     "-row exemplar needs at least " + std::to_string(m.padded_rows) + " along the stroke");
     if (desc.length % (2 * m.unit) != 0 || desc.length < 2 * m.unit)
@@ -71,6 +71,16 @@ SlamSynthesis synthesize_slam(const Plane& exemplar, const SlamSynthesisDesc& de
                                                 std::to_string(2 * m.unit) + " (twice the pyramid unit of a " +
                                                 std::to_string(exemplar.rows) + "-row exemplar)");
     if (desc.levels < 2) throw ParameterError("SLAM levels", ": at least 2");
+    return plan;
+}
+
+SlamSynthesis synthesize_slam(const Plane& exemplar, const SlamSynthesisDesc& desc) {
+    const std::string& name = desc.exemplar_name;
+    SlamSynthesis out;
+    const SlamPlan plan = check_slam_synthesis(exemplar, desc);
+    out.model = plan.model;
+    out.exemplar_cols = plan.exemplar_cols;
+    const SlamModel& m = out.model;
 
     Timer analysis;
     const Plane padded = pad_exemplar(exemplar, m, out.exemplar_cols);

@@ -68,8 +68,17 @@ struct SlamSynthesis {
     double analysis_ms = 0, synthesis_ms = 0;
 };
 
-// Throws lw::Error naming desc.exemplar_name for an exemplar too short for the pyramid, and
-// for a length that is not a multiple of 2·unit.
+// The checks synthesize_slam makes before any work, for callers that print a header first:
+// throws lw::Error naming desc.exemplar_name for an exemplar too short for the pyramid, and
+// ParameterError ("SLAM length", "SLAM levels") for a length that is not a multiple of
+// 2·unit or fewer than 2 levels. Returns the model and the cropped column count.
+struct SlamPlan {
+    SlamModel model;
+    int exemplar_cols = 0;
+};
+[[nodiscard]] SlamPlan check_slam_synthesis(const Plane& exemplar, const SlamSynthesisDesc& desc);
+
+// Throws as check_slam_synthesis does, and lw::Error for an exemplar with no ink.
 [[nodiscard]] SlamSynthesis synthesize_slam(const Plane& exemplar, const SlamSynthesisDesc& desc);
 
 // The padded exemplar (zeros above and below) cropped to `cols` columns.

@@ -2,6 +2,7 @@
 // so the document and the program cannot drift apart.
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <regex>
 #include <sstream>
 #include <string>
@@ -102,6 +103,12 @@ void write_fixtures(const fs::path& tmp) {
     write(tmp / "strokeskey.json", R"({"strokes": [], "colour": 1})");
     const auto small = test::run_linework("ribbon-exemplar beads -o " + test::quote(tmp / "small.png") + " --size 16x16");
     ASSERT_EQ(small.exit_code, 0) << small.output;
+    {
+        // A PNG cut after its header: libpng's complaint comes in several lines.
+        std::ifstream png(tmp / "small.png", std::ios::binary);
+        const std::string bytes((std::istreambuf_iterator<char>(png)), std::istreambuf_iterator<char>());
+        write(tmp / "cut.png", bytes.substr(0, 60));
+    }
     const auto tall = test::run_linework("ribbon-exemplar beads -o " + test::quote(tmp / "tall.png") + " --size 64x100");
     ASSERT_EQ(tall.exit_code, 0) << tall.output;
     {
@@ -135,6 +142,10 @@ TEST(ErrorTable, EveryRowGivesItsMessageAndExitCode) {
         const auto r = test::run_linework(substitute(row.command, tmp));
         EXPECT_EQ(r.exit_code, row.exit_code) << r.output;
         EXPECT_NE(r.output.find(substitute(row.message, tmp)), std::string::npos) << r.output;
+        // A bad command line is refused before any work: its error is the first thing printed.
+        if (row.exit_code == 2) {
+            EXPECT_EQ(r.output.rfind("linework: error: ", 0), 0u) << r.output;
+        }
         if (row.exit_code == 1) {
             EXPECT_EQ(r.output.find("internal error"), std::string::npos) << r.output;
             EXPECT_NE(r.output.find("linework: error: "), std::string::npos) << r.output;

@@ -3,6 +3,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include "core/error.h"
+#include "core/text.h"
 
 namespace lw {
 
@@ -10,10 +11,10 @@ namespace {
 
 void write_image(const std::filesystem::path& path, const OIIO::ImageSpec& spec, const void* data) {
     auto out = OIIO::ImageOutput::create(path.string());
-    if (!out) throw Error(path.string() + ": cannot write: " + OIIO::geterror());
-    if (!out->open(path.string(), spec)) throw Error(path.string() + ": cannot open for writing: " + out->geterror());
-    if (!out->write_image(spec.format, data)) throw Error(path.string() + ": write failed: " + out->geterror());
-    if (!out->close()) throw Error(path.string() + ": close failed: " + out->geterror());
+    if (!out) throw Error(path.string() + ": cannot write: " + one_line(OIIO::geterror()));
+    if (!out->open(path.string(), spec)) throw Error(path.string() + ": cannot open for writing: " + one_line(out->geterror()));
+    if (!out->write_image(spec.format, data)) throw Error(path.string() + ": write failed: " + one_line(out->geterror()));
+    if (!out->close()) throw Error(path.string() + ": close failed: " + one_line(out->geterror()));
 }
 
 }  // namespace
@@ -35,7 +36,7 @@ ImageRGBA8 read_image_rgba8(const std::filesystem::path& path) {
     OIIO::ImageSpec config;
     config.attribute("oiio:UnassociatedAlpha", 1);  // no premultiplication: bytes as stored
     auto in = OIIO::ImageInput::open(path.string(), &config);
-    if (!in) throw Error(path.string() + ": cannot read image: " + OIIO::geterror());
+    if (!in) throw Error(path.string() + ": cannot read image: " + one_line(OIIO::geterror()));
     const OIIO::ImageSpec& spec = in->spec();
     if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
         throw Error(path.string() + ": empty image");
@@ -45,7 +46,7 @@ ImageRGBA8 read_image_rgba8(const std::filesystem::path& path) {
                     " with " + std::to_string(spec.nchannels) + " channels is too large (at most 16384x16384, 64 channels)");
     std::vector<uint8_t> raw(size_t(spec.width) * spec.height * spec.nchannels);
     if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::UINT8, raw.data()))
-        throw Error(path.string() + ": read failed: " + in->geterror());
+        throw Error(path.string() + ": read failed: " + one_line(in->geterror()));
     in->close();
 
     ImageRGBA8 image{spec.width, spec.height, std::vector<uint8_t>(size_t(spec.width) * spec.height * 4)};

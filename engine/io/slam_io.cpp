@@ -5,13 +5,14 @@
 #include <OpenImageIO/imageio.h>
 
 #include "core/error.h"
+#include "core/text.h"
 
 namespace lw {
 
 void write_slam(const std::filesystem::path& path, const Slam& slam) {
     const std::string name = path.string();
     auto out = OIIO::ImageOutput::create(name);
-    if (!out) throw Error(name + ": cannot write: " + OIIO::geterror());
+    if (!out) throw Error(name + ": cannot write: " + one_line(OIIO::geterror()));
     if (!out->supports("multiimage")) throw Error(name + ": SLAM files must be OpenEXR (.exr)");
     std::vector<OIIO::ImageSpec> specs(size_t(slam.levels));
     for (int i = 0; i < slam.levels; ++i) {
@@ -27,15 +28,15 @@ void write_slam(const std::filesystem::path& path, const Slam& slam) {
         spec.attribute("name", "level" + std::to_string(i));
     }
     if (!out->open(name, int(specs.size()), specs.data()))
-        throw Error(name + ": cannot open for writing: " + out->geterror());
+        throw Error(name + ": cannot open for writing: " + one_line(out->geterror()));
     const size_t part = size_t(slam.length) * slam.height;
     for (int i = 0; i < slam.levels; ++i) {
         if (i > 0 && !out->open(name, specs[size_t(i)], OIIO::ImageOutput::AppendSubimage))
-            throw Error(name + ": cannot append level " + std::to_string(i) + ": " + out->geterror());
+            throw Error(name + ": cannot append level " + std::to_string(i) + ": " + one_line(out->geterror()));
         if (!out->write_image(OIIO::TypeDesc::FLOAT, slam.ink.data() + part * size_t(i)))
-            throw Error(name + ": write failed: " + out->geterror());
+            throw Error(name + ": write failed: " + one_line(out->geterror()));
     }
-    if (!out->close()) throw Error(name + ": close failed: " + out->geterror());
+    if (!out->close()) throw Error(name + ": close failed: " + one_line(out->geterror()));
 }
 
 Slam read_slam(const std::filesystem::path& path) {
@@ -43,7 +44,7 @@ Slam read_slam(const std::filesystem::path& path) {
     if (!std::filesystem::exists(path)) throw Error(name + ": no such SLAM file");
     if (std::filesystem::is_directory(path)) throw Error(name + ": a folder, not a SLAM file (.exr)");
     auto in = OIIO::ImageInput::open(name);
-    if (!in) throw Error(name + ": cannot read SLAM: " + OIIO::geterror());
+    if (!in) throw Error(name + ": cannot read SLAM: " + one_line(OIIO::geterror()));
     Slam slam;
     const OIIO::ImageSpec& first = in->spec();
     slam.levels = first.get_int_attribute("linework:levels", 0);
@@ -67,7 +68,7 @@ Slam read_slam(const std::filesystem::path& path) {
                         std::to_string(spec.height) + ", level 0 is " + std::to_string(slam.length) + "x" +
                         std::to_string(slam.height));
         if (!in->read_image(i, 0, 0, 1, OIIO::TypeDesc::FLOAT, slam.ink.data() + part * size_t(i)))
-            throw Error(name + ": cannot read level " + std::to_string(i) + ": " + in->geterror());
+            throw Error(name + ": cannot read level " + std::to_string(i) + ": " + one_line(in->geterror()));
     }
     return slam;
 }

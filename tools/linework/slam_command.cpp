@@ -101,7 +101,10 @@ int run_slam(const SlamOptions& o) {
                                   .scope = o.global ? synth::StatisticsScope::Global : synth::StatisticsScope::Rows,
                                   .threads = o.threads,
                                   .exemplar_name = o.exemplar};
-    const synth::SlamModel m = synth::slam_model(ink.rows, o.exemplar);
+    // Every refusal before the header, so that a wrong --length is the only line printed.
+    const synth::SlamModel m =
+        flags_named({{"SLAM length", "--length"}, {"SLAM levels", "--levels"}}, [&] { return synth::check_slam_synthesis(ink, desc); })
+            .model;
     std::printf("exemplar: %s (%dx%d), padded to %d rows; %d scales, 4 orientations, Na = 9; %s statistics\n",
                 o.exemplar.c_str(), ink.cols, ink.rows, m.padded_rows, m.scales,
                 o.global ? "global (1D)" : "per-row mean/variance (1.5D)");
