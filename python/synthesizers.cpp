@@ -66,6 +66,13 @@ void check_range(double value, double lo, double hi, const char* name) {
                                " to " + number_text(hi));
 }
 
+uint64_t seed_argument(int64_t value, uint64_t max) {
+    if (value < 0 || uint64_t(value) > max)
+        throw pyb::value_error("seed: must be a whole number from 0 to " + std::to_string(std::min<uint64_t>(max, INT64_MAX)) +
+                               ", got " + std::to_string(value));
+    return uint64_t(value);
+}
+
 void check_positive(double value, const char* name) {
     if (!(value > 0.0) || std::isinf(value))
         throw pyb::value_error(std::string(name) + ": must be a positive number, got " + number_text(value));
@@ -93,7 +100,7 @@ ImageRGBA8 exemplar_argument(const pyb::handle& value, std::string* where) {
     return array_to_image(a, "exemplar");
 }
 
-pyb::array_t<float> slam(const pyb::object& exemplar, int levels, int length, int iterations, uint32_t seed,
+pyb::array_t<float> slam(const pyb::object& exemplar, int levels, int length, int iterations, int64_t seed,
                          bool global_statistics, int threads) {
     check_range(levels, 2, 256, "levels");
     check_range(length, 16, 16384, "length");
@@ -105,7 +112,7 @@ pyb::array_t<float> slam(const pyb::object& exemplar, int levels, int length, in
         .levels = levels,
         .length = length,
         .iterations = iterations,
-        .seed = seed,
+        .seed = uint32_t(seed_argument(seed, UINT32_MAX)),
         .scope = global_statistics ? synth::StatisticsScope::Global : synth::StatisticsScope::Rows,
         .threads = threads,
         .exemplar_name = where,
@@ -120,7 +127,7 @@ pyb::array_t<float> slam(const pyb::object& exemplar, int levels, int length, in
     return slam_array(std::move(out));
 }
 
-pyb::array_t<float> slam_pattern(const std::string& name, int levels, int length, int height, uint32_t seed) {
+pyb::array_t<float> slam_pattern(const std::string& name, int levels, int length, int height, int64_t seed) {
     if (name != "dots" && name != "dashes" && name != "pencil")
         throw pyb::value_error("name: expected dots, dashes or pencil, got \"" + name + "\"");
     check_range(levels, 2, 256, "levels");
@@ -130,7 +137,7 @@ pyb::array_t<float> slam_pattern(const std::string& name, int levels, int length
     const SlamPattern pattern = name == "dots"     ? SlamPattern::Dots
                                 : name == "dashes" ? SlamPattern::Dashes
                                                    : SlamPattern::Pencil;
-    return slam_array(make_procedural_slam(pattern, levels, length, height, seed));
+    return slam_array(make_procedural_slam(pattern, levels, length, height, uint32_t(seed_argument(seed, UINT32_MAX))));
 }
 
 pyb::array_t<float> read_slam_file(const std::filesystem::path& path) {
@@ -138,14 +145,15 @@ pyb::array_t<float> read_slam_file(const std::filesystem::path& path) {
 }
 
 void write_slam_file(const std::filesystem::path& path, const pyb::array& ink, const std::string& exemplar_name,
-                     uint32_t seed) {
+                     int64_t seed) {
     if (path.extension() != ".exr") throw pyb::value_error("path: " + path.string() + ": a SLAM file is OpenEXR (.exr)");
     const auto a = pyb::array_t<float, pyb::array::c_style | pyb::array::forcecast>::ensure(ink);
     if (!a || a.ndim() != 3) throw pyb::value_error("ink: expected a float array of shape (levels, height, length)");
     if (a.shape(0) < 2 || a.shape(1) < 1 || a.shape(2) < 1)
         throw pyb::value_error("ink: a SLAM needs at least 2 levels and one texel per level");
     Slam slam{.levels = int(a.shape(0)), .length = int(a.shape(2)), .height = int(a.shape(1)),
-              .ink = std::vector<float>(a.data(), a.data() + a.size()), .exemplar = exemplar_name, .seed = seed};
+              .ink = std::vector<float>(a.data(), a.data() + a.size()), .exemplar = exemplar_name,
+              .seed = uint32_t(seed_argument(seed, UINT32_MAX))};
     for (float v : slam.ink)
         if (!(v >= 0.0f && v <= 1.0f)) throw pyb::value_error("ink: values must lie in [0, 1]");
     write_slam(path, slam);
@@ -195,7 +203,7 @@ constexpr std::initializer_list<std::pair<const char*, const char*>> kRibbonName
     {"device", "device"}};
 
 pyb::object ribbon(const pyb::object& exemplar_value, const pyb::object& curve_value, bool closed,
-                   std::optional<float> piece, std::optional<float> width, std::optional<float> scale, uint64_t seed,
+                   std::optional<float> piece, std::optional<float> width, std::optional<float> scale, int64_t seed,
                    bool stitch, std::optional<std::tuple<int, int>> size_value, const pyb::object& avoid,
                    bool transparent, bool reference, const std::string& device, bool return_info) {
     // Arguments first, then the inputs, as the command line does.
@@ -222,7 +230,7 @@ pyb::object ribbon(const pyb::object& exemplar_value, const pyb::object& curve_v
     desc.params.scale = scale.value_or(default_ribbon_scale(exemplar));
     desc.params.width = width.value_or(desc.params.scale);
     desc.params.piece = piece.value_or(std::max(1.0f, std::round(desc.params.width / 2.0f)));
-    desc.seed = seed;
+    desc.seed = seed_argument(seed);
     desc.stitch = stitch;
     if (reference) desc.site = ComputeSite::Host;  // else the device's choice: the host on CPU devices
     const Ribbon built = arguments_named(kRibbonNames, [&] { return build_ribbon(curve, desc.params); });
@@ -285,20 +293,20 @@ pyb::object ribbon(const pyb::object& exemplar_value, const pyb::object& curve_v
     return pyb::make_tuple(out, info);
 }
 
-pyb::array_t<uint8_t> ribbon_exemplar(const std::string& name, int width, int height, uint64_t seed) {
+pyb::array_t<uint8_t> ribbon_exemplar(const std::string& name, int width, int height, int64_t seed) {
     const std::vector<std::string>& names = exemplar_names();
     if (std::find(names.begin(), names.end(), name) == names.end())
         throw pyb::value_error("name: unknown exemplar \"" + name + "\" (chain, lace, zigzag, beads or rope)");
     if (width < 16 || height < 16 || width > 4096 || height > 4096)
         throw pyb::value_error("width, height: the exemplar size must be between 16x16 and 4096x4096");
-    return image_to_array(generate_exemplar(name, width, height, seed));
+    return image_to_array(generate_exemplar(name, width, height, seed_argument(seed)));
 }
 
 }  // namespace
 
 void bind_synthesizers(pyb::module_& m) {
     m.def("slam", &slam, "exemplar"_a, pyb::kw_only(), "levels"_a = 17, "length"_a = 1024, "iterations"_a = 15,
-          "seed"_a = 1u, "global_statistics"_a = false, "threads"_a = 0,
+          "seed"_a = int64_t(1), "global_statistics"_a = false, "threads"_a = 0,
           R"(A self-similar line artmap (SLAM) synthesized from one stroke exemplar (Bénard et al. 2010,
 §3.2), as `linework slam` makes it. Each level A_l, l = 0.5 … 1, is a Portilla–Simoncelli
 texture synthesized at length l·Lmax from a seed W_l of a seed pyramid built so that
@@ -319,7 +327,7 @@ Returns float32 ink in [0, 1] of shape (levels, H, length), [level][row][x], lev
 0.5 … 1.0: what `linework slam` writes (write it with linework.write_slam).
 Raises ValueError for a bad argument or exemplar, with the command line's message.)");
     m.def("slam_pattern", &slam_pattern, "name"_a, pyb::kw_only(), "levels"_a = 17, "length"_a = 1024, "height"_a = 32,
-          "seed"_a = 1u,
+          "seed"_a = int64_t(1),
           R"(A procedural, exactly self-similar SLAM as `linework slam-pattern` writes it: a periodic
 pattern P at level 0.5 and A_l = (1 − α)·P(u) + α·P(2u), α = 2l − 1.
 
@@ -331,11 +339,11 @@ Returns float32 ink of shape (levels, height, length).)");
 (levels, height, length), levels ordered 0.5 … 1.0. Raises ValueError naming the file for a
 missing or malformed one.)");
     m.def("write_slam", &write_slam_file, "path"_a, "ink"_a, pyb::kw_only(), "exemplar_name"_a = "python",
-          "seed"_a = 0u,
+          "seed"_a = int64_t(0),
           R"(Writes ink of shape (levels ≥ 2, height, length), values in [0, 1], as a SLAM file (.exr) that
 scene files can name as a style's "slam"; exemplar_name and seed go into its metadata.)");
     m.def("ribbon", &ribbon, "exemplar"_a, "curve"_a, pyb::kw_only(), "closed"_a = false, "piece"_a = pyb::none(),
-          "width"_a = pyb::none(), "scale"_a = pyb::none(), "seed"_a = uint64_t(1), "stitch"_a = false,
+          "width"_a = pyb::none(), "scale"_a = pyb::none(), "seed"_a = int64_t(1), "stitch"_a = false,
           "size"_a = pyb::none(), "avoid"_a = pyb::none(), "transparent"_a = false, "reference"_a = false,
           "device"_a = "auto", "return_info"_a = false,
           R"(A structured pattern synthesized along a curve (Zhou, Lasram & Lefebvre 2013), as
@@ -368,7 +376,7 @@ closed_by_first_dp, dp_ms, stitch_ms, device, and with stitch stitch_before/stit
 Raises ValueError naming the argument for bad values, RuntimeError for a failed run or a
 validation message (LINEWORK_VALIDATION=1).)");
     m.def("ribbon_exemplar", &ribbon_exemplar, "name"_a, pyb::kw_only(), "width"_a = 192, "height"_a = 64,
-          "seed"_a = uint64_t(1),
+          "seed"_a = int64_t(1),
           R"(A procedural structured-pattern exemplar for linework.ribbon, as `linework ribbon-exemplar`
 writes it: 'chain', 'lace', 'zigzag', 'beads' or 'rope', drawn from signed distances with
 sizes and spacings varied by seed; width and height 16–4096. Returns H×W×4 uint8 (straight

@@ -154,7 +154,7 @@ PatternFrame frame_argument(const pyb::handle& value, const std::string& name, b
 
 pyb::object pattern(const pyb::object& reference, const pyb::object& path, const pyb::object& region,
                     const pyb::object& ref_path, const pyb::object& ref_region, bool closed, std::optional<float> scale,
-                    std::optional<int> rings, float variation, const std::string& fit, int lloyd, uint64_t seed,
+                    std::optional<int> rings, float variation, const std::string& fit, int lloyd, int64_t seed,
                     bool return_info) {
     const bool along_path = !path.is_none();
     if (along_path == !region.is_none()) throw pyb::value_error("give exactly one of path and region");
@@ -182,7 +182,7 @@ pyb::object pattern(const pyb::object& reference, const pyb::object& path, const
     desc.fit = fit == "skeleton" ? FitMode::Skeleton : FitMode::Contour;
     desc.rings = rings.value_or(0);
     desc.variation = variation;
-    desc.seed = seed;
+    desc.seed = seed_argument(seed);
     desc.lloyd_iterations = lloyd;
     PatternSynthesis s;
     size_t elements = 0;
@@ -211,7 +211,7 @@ pyb::object pattern(const pyb::object& reference, const pyb::object& path, const
 // ---- Hatching ---------------------------------------------------------------------------
 
 pyb::object hatch(const pyb::object& training, int count, int window, int block, std::optional<double> threshold,
-                  float plausible, const pyb::object& along, uint64_t seed, bool return_info) {
+                  float plausible, const pyb::object& along, int64_t seed, bool return_info) {
     check_range(count, 1, 1000000, "count");
     check_range(window, 1, 1000, "window");
     check_range(block, 2, 100000, "block");
@@ -239,7 +239,7 @@ pyb::object hatch(const pyb::object& training, int count, int window, int block,
     desc.threshold = threshold.value_or(-1.0);
     desc.plausible = plausible;
     // As the command line: one generator for every path; blocks numbered across paths.
-    Rng rng(seed);
+    Rng rng(seed_argument(seed));
     size_t restarts = 0;
     std::vector<HatchBlock> kept;
     auto report = [&](const HatchBlock& b, bool is_kept) {
@@ -273,7 +273,7 @@ pyb::object hatch(const pyb::object& training, int count, int window, int block,
 void bind_stroke_synthesizers(pyb::module_& m) {
     m.def("pattern", &pattern, "reference"_a, pyb::kw_only(), "path"_a = pyb::none(), "region"_a = pyb::none(),
           "ref_path"_a = pyb::none(), "ref_region"_a = pyb::none(), "closed"_a = false, "scale"_a = pyb::none(),
-          "rings"_a = pyb::none(), "variation"_a = 0.0f, "fit"_a = "contour", "lloyd"_a = 30, "seed"_a = uint64_t(1),
+          "rings"_a = pyb::none(), "variation"_a = 0.0f, "fit"_a = "contour", "lloyd"_a = 30, "seed"_a = int64_t(1),
           "return_info"_a = false,
           R"(A stroke pattern like a reference, synthesized along a path (1D) or in a region (2D)
 (Barla, Breslav, Thollot, Sillion & Markosian 2006), as `linework pattern` makes it. The
@@ -302,7 +302,7 @@ Returns the synthesized strokes as a list of dicts {"points": N×2 float32, "wid
 (per target element, the reference element it copies), centers (M×2), first_stroke (element
 e owns strokes first_stroke[e] to first_stroke[e + 1]) and timings.)");
     m.def("hatch", &hatch, "training"_a, pyb::kw_only(), "count"_a, "window"_a = 6, "block"_a = 50,
-          "threshold"_a = pyb::none(), "plausible"_a = 0.5f, "along"_a = pyb::none(), "seed"_a = uint64_t(1),
+          "threshold"_a = pyb::none(), "plausible"_a = 0.5f, "along"_a = pyb::none(), "seed"_a = int64_t(1),
           "return_info"_a = false,
           R"(Continues a hand-drawn hatching sequence by example (Jodoin, Epstein, Granger-Piché &
 Ostromoukhov 2002), as `linework hatch` does. Each next stroke is copied from the training

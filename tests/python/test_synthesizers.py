@@ -233,6 +233,13 @@ def test_slam_bad_input_gives_the_command_lines_message(tmp_path):
         linework.write_slam(tmp_path / "a.png", np.zeros((2, 4, 16), np.float32))
     with pytest.raises(ValueError, match=r"^ink: values must lie in \[0, 1\]$"):
         linework.write_slam(tmp_path / "a.exr", np.full((2, 4, 16), 2.0, np.float32))
+    # Seeds are whole numbers from 0 (a ValueError, not pybind11's TypeError listing signatures).
+    with pytest.raises(ValueError, match=r"^seed: must be a whole number from 0 to 4294967295, got -1$"):
+        linework.slam_pattern("dots", seed=-1)
+    with pytest.raises(ValueError, match=r"^seed: must be a whole number from 0 to 4294967295, got 4294967296$"):
+        linework.slam(exemplar, seed=2**32)
+    with pytest.raises(ValueError, match=r"^seed: must be a whole number from 0 to 9223372036854775807, got -5$"):
+        linework.ribbon_exemplar("chain", seed=-5)
 
 
 # ---- Ribbons ----------------------------------------------------------------------------
