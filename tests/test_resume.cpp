@@ -1,11 +1,20 @@
 // Offline renders: Ctrl-C stops after the frame in hand, --resume goes on from the saved
 // parameterization and gives the frames of an unbroken run (also when the last frame's
 // state was lost to a kill); nothing is left half-written.
+#include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <thread>
+#include <vector>
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <gtest/gtest.h>
 
@@ -80,6 +89,60 @@ TEST(Resume, InterruptedAndResumedSequenceEqualsAnUnbrokenOne) {
     EXPECT_EQ(other.exit_code, 1) << other.output;
     EXPECT_NE(other.output.find(".linework-state: written by a render with other options"), std::string::npos)
         << other.output;
+}
+
+// A second Ctrl-C does not wait for the frame in hand: a ribbon style can take minutes a
+// frame (here a 1024-texel exemplar along a drawing's strokes), and the first Ctrl-C only
+// asks for a stop after it. The process dies of the signal, with nothing written.
+TEST(Resume, ASecondInterruptStopsAtOnce) {
+    const fs::path dir = test::temp_dir();
+    ASSERT_EQ(test::run_linework("ribbon-exemplar rope --size 1024x48 -o " + test::quote(dir / "rope.png")).exit_code, 0);
+    std::ofstream(dir / "slow.json") << R"({"size": [160, 120], "layers": [{"strokes": ")"
+                                     << (test::source_dir() / "scenes/patterns/flowers.svg").string()
+                                     << R"(", "ribbon": "rope.png"}]})";
+    const std::string exe = LW_LINEWORK_EXE, scene = (dir / "slow.json").string(), out = (dir / "out").string();
+    const fs::path log = dir / "log.txt";
+    posix_spawn_file_actions_t files;
+    posix_spawn_file_actions_init(&files);
+    posix_spawn_file_actions_addopen(&files, STDOUT_FILENO, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    posix_spawn_file_actions_adddup2(&files, STDOUT_FILENO, STDERR_FILENO);
+    std::vector<std::string> args = {exe, "render", scene, "-o", out, "--device", "cpu", "--frames", "0:1"};
+    std::vector<char*> argv;
+    for (std::string& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    pid_t pid = 0;
+    ASSERT_EQ(posix_spawn(&pid, exe.c_str(), &files, nullptr, argv.data(), environ), 0);
+    posix_spawn_file_actions_destroy(&files);
+
+    const auto log_holds = [&](const std::string& text) {
+        std::ifstream in(log);
+        return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()).find(text) !=
+               std::string::npos;
+    };
+    // Waits up to 60 s for `done`; false if it never came.
+    const auto wait_for = [](const auto& done) {
+        for (int i = 0; i < 6000; ++i) {
+            if (done()) return true;
+            std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        }
+        return false;
+    };
+    int status = 0;
+    bool ended = false;
+    const auto exited = [&] { return ended = ended || waitpid(pid, &status, WNOHANG) == pid; };
+    ASSERT_TRUE(wait_for([&] { return log_holds("size: 160x120") || exited(); }) && !ended)
+        << "the render did not start its frame";
+    kill(pid, SIGINT);
+    ASSERT_TRUE(wait_for([&] { return log_holds("stopping after the frame in hand"); }));
+    kill(pid, SIGINT);
+    const bool stopped = wait_for(exited);
+    if (!stopped) {
+        kill(pid, SIGKILL);
+        waitpid(pid, &status, 0);
+    }
+    ASSERT_TRUE(stopped) << "the render went on after a second Ctrl-C";
+    EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGINT);
+    EXPECT_FALSE(fs::exists(out + "/frame_0000.png"));
 }
 
 // A still camera on a dense model: the paths kept from frame to frame (still_paths.h) travel

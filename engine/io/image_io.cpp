@@ -40,6 +40,12 @@ ImageRGBA8 read_image_rgba8(const std::filesystem::path& path) {
     const OIIO::ImageSpec& spec = in->spec();
     if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
         throw Error(path.string() + ": empty image");
+    // A SLAM file (io/slam_io.h) opens as an image of its first level: as a ribbon exemplar
+    // it gave an opaque 1024-texel pattern whose DP ran for many minutes, in diff it compared
+    // one level of many.
+    if (const int levels = spec.get_int_attribute("linework:levels", 0); levels > 0)
+        throw Error(path.string() + ": a SLAM file (" + std::to_string(levels) + " levels of " + std::to_string(spec.width) +
+                    "x" + std::to_string(spec.height) + "), not an image: a SLAM goes in a style's \"slam\" or --slam");
     // Before allocating: a header may claim any size (found by tests/fuzz/fuzz_image).
     if (spec.width > 16384 || spec.height > 16384 || spec.nchannels > 64)
         throw Error(path.string() + ": image of " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +

@@ -54,9 +54,10 @@ void use_slam_strokes(LinesDesc& lines, const std::string& slam, float width);
 // With `extension` (".png"), the name must end in it: the file is written in that format
 // whatever it is called, and a wrong name would fail only after the work.
 [[nodiscard]] CLI::Validator output_file(const std::string& extension = "");
-// Only the file part: not an existing folder, not a name ending in "/" (render's --svg,
-// whose folder render makes).
-[[nodiscard]] CLI::Validator output_file_name();
+// Only the file part: not an existing folder, not a name ending in "/", and with
+// `extension` ending in it (render's --svg, whose folder render makes: an SVG named
+// frame_0000.png replaced the frame it was named after).
+[[nodiscard]] CLI::Validator output_file_name(const std::string& extension = "");
 // 1 (after one line on stderr) when validation was on and reported anything, else 0.
 int exit_code_after_validation(const Context& ctx, bool validation);
 // The "bounds:" line render and view print: the model's box in scene units (what a camera

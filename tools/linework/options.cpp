@@ -27,10 +27,12 @@ bool parse_float(const std::string& text, float* out) {
 }
 
 // The file part of an output path: not a folder (an existing one, or a name ending in "/").
-std::string file_name_problem(const std::string& text) {
+std::string file_name_problem(const std::string& text, const std::string& extension) {
     std::error_code error;
     if (!std::filesystem::path(text).has_filename() || std::filesystem::is_directory(text, error))
         return text + ": is a folder; give a file name";
+    if (!extension.empty() && lower(std::filesystem::path(text).extension().string()) != extension)
+        return text + ": the file is written as " + extension + "; give a name ending in " + extension;
     return {};
 }
 }  // namespace
@@ -38,9 +40,7 @@ std::string file_name_problem(const std::string& text) {
 CLI::Validator output_file(const std::string& extension) {
     return CLI::Validator(
         [extension](const std::string& text) -> std::string {
-            if (std::string problem = file_name_problem(text); !problem.empty()) return problem;
-            if (!extension.empty() && lower(std::filesystem::path(text).extension().string()) != extension)
-                return text + ": the file is written as " + extension + "; give a name ending in " + extension;
+            if (std::string problem = file_name_problem(text, extension); !problem.empty()) return problem;
             const std::filesystem::path folder = std::filesystem::path(text).parent_path();
             const std::filesystem::path where = folder.empty() ? "." : folder;
             std::error_code error;
@@ -60,8 +60,9 @@ CLI::Validator output_file(const std::string& extension) {
         "", "output file");
 }
 
-CLI::Validator output_file_name() {
-    return CLI::Validator(file_name_problem, "", "output file name");
+CLI::Validator output_file_name(const std::string& extension) {
+    return CLI::Validator([extension](const std::string& text) { return file_name_problem(text, extension); }, "",
+                          "output file name");
 }
 
 glm::vec3 parse_vec3(const std::string& text, const std::string& option) {

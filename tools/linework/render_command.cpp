@@ -10,6 +10,8 @@
 #include <memory>
 #include <optional>
 
+#include <unistd.h>
+
 #include "commands.h"
 #include "core/timer.h"
 #include "progress.h"
@@ -25,13 +27,26 @@ namespace {
 volatile std::sig_atomic_t g_interrupted = 0;
 
 // Ctrl-C (SIGINT), or a scheduler's SIGTERM (scancel, requeue, pre-emption), finishes the
-// frame in hand, writes it and the state, and stops (exit code 130).
+// frame in hand, writes it and the state, and stops (exit code 130). A second one stops at
+// once, as the signal's default would: a frame can take minutes (a ribbon style), and every
+// file is written under a temporary name and renamed, so nothing half-written is left.
+void on_stop_signal(int signal) {
+    if (g_interrupted) {
+        std::signal(signal, SIG_DFL);
+        std::raise(signal);
+        return;
+    }
+    g_interrupted = 1;
+    static const char message[] = "\nlinework: stopping after the frame in hand (again to stop at once)\n";
+    [[maybe_unused]] const ssize_t written = ::write(STDERR_FILENO, message, sizeof message - 1);  // async-signal-safe
+}
+
 class StopOnSignal {
 public:
     StopOnSignal() {
         g_interrupted = 0;
-        int_ = std::signal(SIGINT, [](int) { g_interrupted = 1; });
-        term_ = std::signal(SIGTERM, [](int) { g_interrupted = 1; });
+        int_ = std::signal(SIGINT, on_stop_signal);
+        term_ = std::signal(SIGTERM, on_stop_signal);
     }
     ~StopOnSignal() {
         std::signal(SIGINT, int_);

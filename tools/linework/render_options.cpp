@@ -23,7 +23,7 @@ void add_frame_options(CLI::App* cmd, RenderOptions& o) {
     cmd->add_option("--svg", o.svg, "Also write the lines as SVG, drawn as the PNG draws them (filled shapes per line set, hidden lines "
                     "in NAME-hidden, centre lines in a hidden NAME-centerlines group; under --frames FILE_NNNN.svg; its "
                     "folder is made if missing)")
-        ->check(output_file_name());
+        ->check(output_file_name(".svg"));
     cmd->add_option("--hidden", o.hidden, "Hidden lines: none (default), dashed or faint")
         ->check(CLI::IsMember({"none", "dashed", "faint"}));
     cmd->add_option("--hidden-levels", o.hidden_levels,
