@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/error.h"
 #include "core/random.h"
 #include "pattern/cluster.h"
 #include "pattern/fidelity.h"
@@ -121,6 +122,30 @@ TEST(PatternCluster, OverlappingSketchyStrokesMergeAndDashesContinue) {
     EXPECT_LT(continuation(fit_element(dashes, {0}, FitMode::Skeleton), fit_element(dashes, {1}, FitMode::Skeleton), 5.0f), 5.0f);
     EXPECT_EQ(cluster_strokes(dashes, 5.0f, FitMode::Skeleton).size(), 1u);
     EXPECT_EQ(cluster_strokes(dashes, 3.0f, FitMode::Skeleton).size(), 5u);
+}
+
+// A region must be simple: a figure eight's lobes cancel in the shoelace area (Lloyd's sample
+// grid, spaced by that area, never ended), a bow tie's exactly.
+TEST(PatternDistribution, ARegionThatCrossesItselfIsRefused) {
+    EXPECT_TRUE(polygon_is_simple({{0, 0}, {300, 0}, {300, 300}, {0, 300}}));
+    EXPECT_TRUE(polygon_is_simple({{0, 0}, {300, 0}, {300, 0}, {300, 300}, {0, 300}, {0, 0}}));  // repeated corners
+    EXPECT_FALSE(polygon_is_simple({{0, 0}, {200, 200}, {200, 0}, {0, 200}}));                   // bow tie
+    EXPECT_FALSE(polygon_is_simple({{0, 0}, {100, 0}, {100, 100}, {50, 0}, {0, 100}}));          // touches an edge
+    std::vector<glm::vec2> eight;
+    for (int i = 0; i < 64; ++i) {
+        const float t = 2.0f * kPi * float(i) / 64.0f;
+        eight.push_back({100.0f * std::sin(t), 60.0f * std::sin(t) * std::cos(t)});
+    }
+    EXPECT_FALSE(polygon_is_simple(eight));
+    PatternFrame region;
+    region.curve.points = eight;
+    region.curve.closed = true;
+    try {
+        (void)frame_measure(region);
+        ADD_FAILURE() << "a figure eight was measured";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("the region crosses itself"), std::string::npos) << e.what();
+    }
 }
 
 TEST(PatternDistribution, DelaunayKeepsOnlyUnskewedTrianglesAndLloydEvensTheSpacing) {

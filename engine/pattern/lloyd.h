@@ -27,6 +27,11 @@ namespace lw {
 // Shoelace area (absolute) and even–odd point-in-polygon test of a closed polygon.
 [[nodiscard]] float polygon_area(const std::vector<glm::vec2>& polygon);
 [[nodiscard]] bool inside_polygon(const std::vector<glm::vec2>& polygon, glm::vec2 p);
+// No two edges meet but neighbours at their shared corner (repeated consecutive points are
+// one corner). A figure eight's lobes cancel in the shoelace sum (its area read 2e-12 and
+// Lloyd's sample grid went on for ever): a region must be simple. CGAL's sweep
+// (engine/pattern/delaunay.cpp, with the other CGAL call).
+[[nodiscard]] bool polygon_is_simple(const std::vector<glm::vec2>& polygon);
 
 // Sorted arc lengths in [0, length] (closed: [0, length)).
 [[nodiscard]] std::vector<float> lloyd_1d(int count, float length, bool closed, int iterations, Rng& rng);

@@ -72,7 +72,8 @@ struct PatternFrame {
 };
 // The default reference frame: the strokes' bounding box, or its long midline for a path.
 [[nodiscard]] PatternFrame bounding_frame(const std::vector<Stroke>& strokes, bool along_path);
-// Length of the path or area of the region.
+// Length of the path or area of the region; throws lw::Error for a region that crosses
+// itself (polygon_is_simple).
 [[nodiscard]] float frame_measure(const PatternFrame& frame);
 
 struct PatternAnalysis {
