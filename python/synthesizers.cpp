@@ -66,11 +66,11 @@ void check_range(double value, double lo, double hi, const char* name) {
                                " to " + number_text(hi));
 }
 
-uint64_t seed_argument(int64_t value, uint64_t max) {
-    if (value < 0 || uint64_t(value) > max)
-        throw pyb::value_error("seed: must be a whole number from 0 to " + std::to_string(std::min<uint64_t>(max, INT64_MAX)) +
-                               ", got " + std::to_string(value));
-    return uint64_t(value);
+uint64_t seed_argument(const pyb::int_& value, uint64_t max) {
+    if (value < pyb::int_(0) || value > pyb::int_(max))
+        throw pyb::value_error("seed: must be a whole number from 0 to " + std::to_string(max) + ", got " +
+                               pyb::str(static_cast<const pyb::handle&>(value)).cast<std::string>());
+    return value.cast<uint64_t>();
 }
 
 void check_positive(double value, const char* name) {
@@ -100,7 +100,7 @@ ImageRGBA8 exemplar_argument(const pyb::handle& value, std::string* where) {
     return array_to_image(a, "exemplar");
 }
 
-pyb::array_t<float> slam(const pyb::object& exemplar, int levels, int length, int iterations, int64_t seed,
+pyb::array_t<float> slam(const pyb::object& exemplar, int levels, int length, int iterations, const pyb::int_& seed,
                          bool global_statistics, int threads) {
     check_range(levels, 2, 256, "levels");
     check_range(length, 16, 16384, "length");
@@ -127,7 +127,7 @@ pyb::array_t<float> slam(const pyb::object& exemplar, int levels, int length, in
     return slam_array(std::move(out));
 }
 
-pyb::array_t<float> slam_pattern(const std::string& name, int levels, int length, int height, int64_t seed) {
+pyb::array_t<float> slam_pattern(const std::string& name, int levels, int length, int height, const pyb::int_& seed) {
     if (name != "dots" && name != "dashes" && name != "pencil")
         throw pyb::value_error("name: expected dots, dashes or pencil, got \"" + name + "\"");
     check_range(levels, 2, 256, "levels");
@@ -145,7 +145,7 @@ pyb::array_t<float> read_slam_file(const std::filesystem::path& path) {
 }
 
 void write_slam_file(const std::filesystem::path& path, const pyb::array& ink, const std::string& exemplar_name,
-                     int64_t seed) {
+                     const pyb::int_& seed) {
     if (path.extension() != ".exr") throw pyb::value_error("path: " + path.string() + ": a SLAM file is OpenEXR (.exr)");
     const auto a = pyb::array_t<float, pyb::array::c_style | pyb::array::forcecast>::ensure(ink);
     if (!a || a.ndim() != 3) throw pyb::value_error("ink: expected a float array of shape (levels, height, length)");
@@ -203,7 +203,7 @@ constexpr std::initializer_list<std::pair<const char*, const char*>> kRibbonName
     {"device", "device"}};
 
 pyb::object ribbon(const pyb::object& exemplar_value, const pyb::object& curve_value, bool closed,
-                   std::optional<float> piece, std::optional<float> width, std::optional<float> scale, int64_t seed,
+                   std::optional<float> piece, std::optional<float> width, std::optional<float> scale, const pyb::int_& seed,
                    bool stitch, std::optional<std::tuple<int, int>> size_value, const pyb::object& avoid,
                    bool transparent, bool reference, const std::string& device, bool return_info) {
     // Arguments first, then the inputs, as the command line does.
@@ -293,7 +293,7 @@ pyb::object ribbon(const pyb::object& exemplar_value, const pyb::object& curve_v
     return pyb::make_tuple(out, info);
 }
 
-pyb::array_t<uint8_t> ribbon_exemplar(const std::string& name, int width, int height, int64_t seed) {
+pyb::array_t<uint8_t> ribbon_exemplar(const std::string& name, int width, int height, const pyb::int_& seed) {
     const std::vector<std::string>& names = exemplar_names();
     if (std::find(names.begin(), names.end(), name) == names.end())
         throw pyb::value_error("name: unknown exemplar \"" + name + "\" (chain, lace, zigzag, beads or rope)");

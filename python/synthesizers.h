@@ -47,7 +47,7 @@ void check_range(double value, double lo, double hi, const char* name);
 void check_positive(double value, const char* name);
 // A seed taken as a Python int: ValueError "seed: must be a whole number from 0 to MAX, got V"
 // for a negative one or one past `max` (as an unsigned argument pybind11 gave a TypeError
-// listing every signature, and the command line reads '-1' as 2^64 - 1 without its check).
-uint64_t seed_argument(int64_t value, uint64_t max = UINT64_MAX);
+// listing every signature), as the command line's --seed says.
+uint64_t seed_argument(const pyb::int_& value, uint64_t max = UINT64_MAX);
 
 }  // namespace lw::py

@@ -6,7 +6,9 @@
 // `linework` and `linework-bench`; the engine never sees a flag (DESIGN.md).
 #pragma once
 
+#include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <sstream>
 #include <string>
@@ -56,13 +58,17 @@ inline CLI::Validator within(double lo, double hi, const std::string& unit = "")
                                     (unit.empty() ? "" : " " + unit));
 }
 
-// A seed: a whole number, 0 or more, as digits (CLI11 reads "-1" into an unsigned seed as
-// 2^64 - 1 without a word).
-inline CLI::Validator seed() {
+// A seed: a whole number from 0 to `max`, as digits (CLI11 reads "-1" into an unsigned seed
+// as 2^64 - 1 without a word, and 99999999999999999999 as 0).
+inline CLI::Validator seed(uint64_t max = UINT64_MAX) {
     return CLI::Validator(
-        [](std::string& text) -> std::string {
-            if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos)
-                return "must be a whole number, 0 or more, got \"" + text + "\"";
+        [max](std::string& text) -> std::string {
+            uint64_t value = 0;
+            const char* end = text.data() + text.size();
+            const auto [at, problem] = std::from_chars(text.data(), end, value);
+            if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos || problem != std::errc() ||
+                at != end || value > max)
+                return "must be a whole number from 0 to " + std::to_string(max) + ", got \"" + text + "\"";
             return {};
         },
         "SEED");

@@ -238,8 +238,12 @@ def test_slam_bad_input_gives_the_command_lines_message(tmp_path):
         linework.slam_pattern("dots", seed=-1)
     with pytest.raises(ValueError, match=r"^seed: must be a whole number from 0 to 4294967295, got 4294967296$"):
         linework.slam(exemplar, seed=2**32)
-    with pytest.raises(ValueError, match=r"^seed: must be a whole number from 0 to 9223372036854775807, got -5$"):
+    with pytest.raises(ValueError, match=r"^seed: must be a whole number from 0 to 18446744073709551615, got -5$"):
         linework.ribbon_exemplar("chain", seed=-5)
+    with pytest.raises(ValueError, match=r"^seed: must be a whole number from 0 to 18446744073709551615, got 18446744073709551616$"):
+        linework.ribbon_exemplar("chain", seed=2**64)
+    assert np.array_equal(linework.ribbon_exemplar("chain", seed=2**64 - 1),
+                          linework.ribbon_exemplar("chain", seed=2**64 - 1))
 
 
 # ---- Ribbons ----------------------------------------------------------------------------

@@ -175,7 +175,7 @@ Runner add_slam_command(CLI::App& app) {
     cmd->add_option("--iterations", o->iterations, "Synthesis iterations per level (textureSynth uses 50)")
         ->check(CLI::Range(1, 1000))
         ->capture_default_str();
-    cmd->add_option("--seed", o->seed, "Seed of the white noise W_source")->check(seed())->capture_default_str();
+    cmd->add_option("--seed", o->seed, "Seed of the white noise W_source")->check(seed(UINT32_MAX))->capture_default_str();
     cmd->add_option("--preview", o->preview, "Write a contact sheet of the exemplar and every level (PNG)")
         ->check(output_file(".png"));
     cmd->add_option("--threads", o->threads, "Levels synthesized in parallel (default: one per core)")

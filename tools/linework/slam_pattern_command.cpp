@@ -51,7 +51,7 @@ Runner add_slam_pattern_command(CLI::App& app) {
     cmd->add_option("--height", o->height, "Texture height (across the stroke), texels")
         ->check(CLI::Range(1, 1024))
         ->capture_default_str();
-    cmd->add_option("--seed", o->seed, "Seed of the element jitter")->check(seed())->capture_default_str();
+    cmd->add_option("--seed", o->seed, "Seed of the element jitter")->check(seed(UINT32_MAX))->capture_default_str();
     return [o] { return run_pattern(*o); };
 }
 
