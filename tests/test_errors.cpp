@@ -69,6 +69,14 @@ void write_fixtures(const fs::path& tmp) {
     write(tmp / "badsamples.json", R"({"model": ")" + spot + R"(", "samples": 2})");
     write(tmp / "setsuffix.json", R"({"model": ")" + spot + R"(", "line_sets": [{"name": "rim-hidden"}]})");
     write(tmp / "sets.json", R"({"model": ")" + spot + R"(", "line_sets": [{"name": "rim"}]})");
+    write(tmp / "setwidth.json", R"({"model": ")" + spot +
+                                     R"(", "lines": {"silhouette": {"width": 9}}, "line_sets": [{"name": "a"}]})");
+    write(tmp / "minmax.json", R"({"model": ")" + spot +
+                                   R"(", "line_sets": [{"name": "a", "style": {"chaining": {"min_length": 100, "max_length": 20}}}]})");
+    write(tmp / "negramp.json", R"({"model": ")" + spot +
+                                    R"(", "line_sets": [{"name": "a", "style": {"width_modifiers": [{"input": "along", "ramp": [[0, -1], [1, -3]]}]}}]})");
+    write(tmp / "colorramp.json", R"({"model": ")" + spot +
+                                      R"(", "line_sets": [{"name": "a", "style": {"color_modifiers": [{"input": "along", "ramp": [[1, [1, 0, 0]], [0, [0, 0, 1]]]}]}}]})");
     write(tmp / "sethidden.json",
           R"({"model": ")" + spot + R"(", "lines": {"hidden": "dashed"}, "line_sets": [{"name": "rim"}]})");
     fs::create_directories(tmp / "folder.json");

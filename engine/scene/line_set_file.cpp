@@ -71,6 +71,14 @@ std::vector<ScalarModifier> scalar_modifiers(ObjectReader& style, const std::str
             const std::string b = r.string_of("blend", {"multiply", "replace", "add"});
             m.blend = b == "multiply" ? ModifierBlend::Multiply : b == "replace" ? ModifierBlend::Replace : ModifierBlend::Add;
         }
+        // A negative factor or width draws nothing (a ramp of [[0, -1], [1, -3]] left a blank
+        // frame); subtracting is what "add" is for.
+        if (m.blend != ModifierBlend::Add)
+            for (const glm::vec2& p : m.ramp.points)
+                if (p.y < 0.0f)
+                    r.fail_key("ramp", std::string("values are ") +
+                                           (m.blend == ModifierBlend::Multiply ? "factors" : "the values themselves") +
+                                           " here and must be 0 or more (\"blend\": \"add\" subtracts)");
         r.reject_unknown();
         out.push_back(std::move(m));
     }
@@ -86,15 +94,20 @@ std::vector<ColorModifier> color_modifiers(ObjectReader& style, const std::files
         ColorModifier m{.input = input(r)};
         std::tie(m.range_min, m.range_max) = range(r);
         if (!r.has("ramp")) r.fail_key("ramp", "required: [[x, [r, g, b]], ...]");
+        if (!r.at("ramp").is_array()) r.fail_key("ramp", "expected [[x, [r, g, b]], ...]");
         for (const json& p : r.at("ramp")) {
             if (!p.is_array() || p.size() != 2 || !p[0].is_number() || !p[1].is_array() || p[1].size() != 3)
                 r.fail_key("ramp", "expected [[x, [r, g, b]], ...]");
-            glm::vec3 c;
+            const float x = p[0].get<float>();
+            if (!(x >= 0.0f && x <= 1.0f) || (!m.ramp.points.empty() && !(x >= m.ramp.points.back().first)))
+                r.fail_key("ramp", "x must increase within [0, 1]");
+            glm::vec3 c(0.0f);
             for (int k = 0; k < 3; ++k) {
                 if (!p[1][k].is_number()) r.fail_key("ramp", "colours are three numbers in [0, 1]");
                 c[k] = p[1][k].get<float>();
+                if (!(c[k] >= 0.0f && c[k] <= 1.0f)) r.fail_key("ramp", "colours are three numbers in [0, 1]");
             }
-            m.ramp.points.push_back({p[0].get<float>(), c});
+            m.ramp.points.push_back({x, c});
         }
         if (m.ramp.points.empty()) r.fail_key("ramp", "expected at least one point");
         if (r.has("influence")) m.influence = float(r.number("influence", 0.0, 1.0));
@@ -209,6 +222,10 @@ LineSetStyle read_style(ObjectReader& set, const std::filesystem::path& file) {
         if (c.has("min_length")) style.chaining.min_length_px = float(c.number("min_length", 0.0, 1e6));
         if (c.has("max_length")) style.chaining.max_length_px = float(c.number("max_length", 1.0, 1e6));
         if (c.has("outline")) style.chaining.outline = c.boolean("outline");
+        // Runs are cut to max_length and then dropped under min_length: nothing would be drawn.
+        if (style.chaining.max_length_px > 0.0f && style.chaining.min_length_px > style.chaining.max_length_px)
+            c.fail_key("min_length", "is over max_length (" + ObjectReader::format(style.chaining.max_length_px) +
+                                         " px): every run would be cut shorter than it and dropped");
         c.reject_unknown();
     }
     r.reject_unknown();

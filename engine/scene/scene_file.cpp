@@ -410,6 +410,20 @@ SceneDesc parse_scene_json(const std::string& text, const std::filesystem::path&
         // itself, so beside "line_sets" they would change nothing.
         if (scene.lines.hidden != HiddenLines::None || scene.lines.hidden_levels > 0)
             r.fail_key("lines.hidden", std::string(kHiddenBesideLineSets));
+        // Likewise a type's style and "enabled" under "lines" (they were ignored in silence); its
+        // extraction settings (threshold, fade, angle) still apply to every set.
+        if (r.has("lines") && r.at("lines").is_object())
+            for (int t = 0; t < kLineTypeCount; ++t) {
+                const std::string name = line_type_name(static_cast<LineType>(t));
+                const json& lines = r.at("lines");
+                if (!lines.contains(name)) continue;
+                for (const char* key : {"enabled", "width", "color", "slam", "taper", "ribbon", "ribbon_scale"})
+                    if (lines[name].contains(key))
+                        r.fail_key("lines." + name + "." + key,
+                                   "styles the \"lines\" shorthand's " + name +
+                                       " lines only; with \"line_sets\" a set selects and draws them (\"select\": "
+                                       "{\"types\": [...]}, \"style\"); threshold, fade and angle still apply");
+            }
     }
     r.reject_unknown();
     return scene;

@@ -162,15 +162,21 @@ std::string scene_json(const SceneDesc& desc, const ViewCamera& camera, const st
         for (int t = 0; t < kLineTypeCount; ++t) {
             const LineType type = LineType(t);
             const LineStyle& s = lines.styles[size_t(t)];
-            json entry{{"enabled", line_type_enabled(lines.params, type)}, {"width", round6(s.width)}, {"color", vec3(s.color)}};
-            if (!s.slam.empty()) entry["slam"] = relative_to(s.slam, dest_dir);
-            if (s.taper_px > 0.0f) entry["taper"] = round6(s.taper_px);
-            if (!s.ribbon.empty()) entry["ribbon"] = relative_to(s.ribbon, dest_dir);
-            if (s.ribbon_scale > 0.0f) entry["ribbon_scale"] = round6(s.ribbon_scale);
+            json entry = json::object();
+            // A type's switch and style belong to the shorthand (the reader refuses them beside
+            // line sets, which select and draw the types themselves); its extraction settings
+            // apply either way.
+            if (lines.sets.empty()) {
+                entry = {{"enabled", line_type_enabled(lines.params, type)}, {"width", round6(s.width)}, {"color", vec3(s.color)}};
+                if (!s.slam.empty()) entry["slam"] = relative_to(s.slam, dest_dir);
+                if (s.taper_px > 0.0f) entry["taper"] = round6(s.taper_px);
+                if (!s.ribbon.empty()) entry["ribbon"] = relative_to(s.ribbon, dest_dir);
+                if (s.ribbon_scale > 0.0f) entry["ribbon_scale"] = round6(s.ribbon_scale);
+            }
             if (const float* threshold = line_type_threshold(lines.params, type)) entry["threshold"] = round6(*threshold);
             if (type == LineType::Suggestive) entry["fade"] = lines.params.fade;
             if (type == LineType::Crease) entry["angle"] = round6(lines.params.crease_angle_deg);
-            l[line_type_name(type)] = entry;
+            if (!entry.empty()) l[line_type_name(type)] = entry;
         }
         // Hidden-line settings style the shorthand's lines only (the reader refuses them beside
         // line sets), and levels only where hidden lines are drawn.
