@@ -152,6 +152,7 @@ Hatching hatch(const HatchTraining& t, const HatchDesc& desc, const std::vector<
         const HatchSequence seq = generate_hatching(t, desc, rng, on_block);
         out.threshold = seq.threshold;
         out.strokes = place_on_line(t, seq.ids);
+        out.generated = seq.ids.size();
         return out;
     }
     std::vector<float> steps(t.step);
@@ -177,6 +178,7 @@ Hatching hatch(const HatchTraining& t, const HatchDesc& desc, const std::vector<
         stroke_offset += seq.ids.size();
         out.strokes.insert(out.strokes.end(), placed.begin(), placed.end());
     }
+    out.generated = stroke_offset;
     return out;
 }
 

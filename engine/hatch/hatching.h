@@ -93,6 +93,10 @@ struct HatchSequence {
 struct Hatching {
     std::vector<Stroke> strokes;
     double threshold = 0.0;  // the KL2 threshold used (the last sequence's; 0: none)
+    // Strokes generated (and numbered in the blocks on_block hears): along paths, each
+    // path's sequence is generated a little past its length, and the strokes past its end
+    // are not placed, so `strokes` may hold fewer.
+    size_t generated = 0;
 };
 [[nodiscard]] Hatching hatch(const HatchTraining& training, const HatchDesc& desc, const std::vector<ArclengthCurve>& paths,
                              Rng& rng, const std::function<void(const HatchBlock&, bool kept)>& on_block = {});

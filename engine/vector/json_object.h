@@ -2,7 +2,9 @@
 // whose keys are all known; every error names the file (`where`).
 #pragma once
 
+#include <algorithm>
 #include <initializer_list>
+#include <utility>
 #include <string>
 #include <string_view>
 
@@ -24,6 +26,13 @@ inline nlohmann::json parse_json_object(const std::string& text, const std::stri
         throw Error(where + ": not valid JSON (" + json_message(e.what()) + ")");
     }
     if (!root.is_object()) throw Error(where + ": " + shape);
+    // The other kind of file, given where this one is wanted (a curve as --along, a stroke
+    // file as --curve): said as such, not as its first key being unknown.
+    const std::pair<std::string_view, const char*> kinds[] = {{"points", "a curve file ({\"points\": [...]})"},
+                                                              {"strokes", "a stroke file ({\"strokes\": [...]})"}};
+    for (const auto& [key, kind] : kinds)
+        if (root.contains(key) && std::find(keys.begin(), keys.end(), key) == keys.end())
+            throw Error(where + ": is " + kind + "; " + shape);
     for (const auto& [key, value] : root.items()) {
         bool known = false;
         for (std::string_view k : keys) known = known || key == k;

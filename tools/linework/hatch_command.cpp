@@ -71,10 +71,18 @@ int run_hatch(const HatchOptions& o) {
     out.strokes = std::move(h.strokes);
     const double threshold = h.threshold;
     const double generation_ms = generation.elapsed_ms();
-    std::fprintf(info, "generated %zu strokes%s with window %d in blocks of %d (%.1f ms); %zu block(s) generated again, "
+    // Along paths each path is a sequence of its own, in blocks of up to --block strokes, and
+    // the strokes generated past a path's end are dropped: say both, as the block lines
+    // number the generated strokes.
+    const std::string along =
+        paths.empty() ? ""
+                      : " along " + std::to_string(paths.size()) + " path(s), one sequence each, " +
+                            std::to_string(out.strokes.size()) + " placed (" +
+                            std::to_string(h.generated - out.strokes.size()) + " ran past a path's end),";
+    std::fprintf(info, "generated %zu strokes%s with window %d in blocks of %s%d (%.1f ms); %zu block(s) generated again, "
                  "%zu kept above the KL2 threshold %.3g\n",
-                 out.strokes.size(), paths.empty() ? "" : (" along " + std::to_string(paths.size()) + " path(s)").c_str(),
-                 o.window, o.block, generation_ms, restarts, over, threshold);
+                 h.generated, along.c_str(), o.window, paths.empty() ? "" : "up to ", o.block, generation_ms, restarts, over,
+                 threshold);
     save_strokes(o.output, out);
     std::fprintf(info, "wrote %s (%.1f ms in all)\n", o.output.c_str(), total.elapsed_ms());
     return 0;

@@ -218,7 +218,7 @@ Runner add_ribbon_command(CLI::App& app) {
     cmd->add_option("--dump-dp", o->dump,
                     "Write the DP result as JSON: pieces, positions [[u, v], ...], seam_costs, total_cost,\n"
                     "greedy_cost, random_cost, valid_counts, row_ms")
-        ->check(output_file());
+        ->check(output_file(".json"));
     cmd->add_option("--avoid", o->avoid, "Avoidance map (PNG of the output size): alpha >= 128 is forbidden (§3.1)");
     cmd->add_flag("--transparent", o->transparent, "Keep the transparent background (default: over white)");
     cmd->add_option("--compute", o->compute,
