@@ -45,6 +45,9 @@ void read_camera(ObjectReader& parent, const std::filesystem::path& file, SceneD
         r.reject_unknown();
         return;
     }
+    // A misspelt key ("targt") is named before the key it stands for is said to be missing.
+    for (const char* key : {"up", "fov", "near", "far"}) (void)r.has(key);
+    r.reject_unknown();
     if (!has_eye) r.fail_key("eye", "required");
     if (!has_target) r.fail_key("target", "required");
     camera.eye = r.vec3("eye");
@@ -268,7 +271,10 @@ std::vector<VectorLayerDesc> read_layers(ObjectReader& scene, const std::filesys
         if (layer.strokes.empty()) r.fail_key("strokes", "expected a stroke file (.json or .svg)");
         layer.strokes = scene_detail::resolve_against(file, layer.strokes);
         if (r.has("color")) layer.color = r.color("color");
-        if (r.has("width_scale")) layer.width_scale = static_cast<float>(r.number("width_scale", 0.0, 1000.0));
+        if (r.has("width_scale")) {
+            layer.width_scale = static_cast<float>(r.number("width_scale", 0.0, 1000.0));
+            if (!(layer.width_scale > 0.0f)) r.fail_key("width_scale", "must be over 0 (0 draws nothing)");
+        }
         if (r.has("scale_widths")) layer.scale_widths = r.boolean("scale_widths");
         if (r.has("outline")) layer.outline = r.boolean("outline");
         if (r.has("fill")) layer.fill = r.color("fill");
@@ -278,6 +284,9 @@ std::vector<VectorLayerDesc> read_layers(ObjectReader& scene, const std::filesys
             r.fail_key("ribbon", "a layer is drawn with a SLAM or a ribbon, not both");
         if (r.has("ribbon_scale")) layer.ribbon_scale = static_cast<float>(r.number("ribbon_scale", 1.0, 4096.0));
         if (r.has("taper")) layer.taper_px = static_cast<float>(r.number("taper", 0.0, 4096.0));
+        // Settings that would draw nothing, or change nothing, were taken in silence.
+        if (!layer.outline && !layer.fill && layer.ribbon.empty())
+            r.fail_key("outline", "false and no \"fill\": the layer would draw nothing");
         if (r.has("transform")) {
             ObjectReader t(r.at("transform"), r.path("transform"), file);
             layer.keys.push_back({0.0f, read_layer_transform(t)});

@@ -75,21 +75,27 @@ json geometry_modifiers(const std::vector<GeometryModifier>& modifiers) {
 }
 
 json line_set_style(const LineSetStyle& s, const std::filesystem::path& dest_dir) {
-    json style{{"color", vec3(s.color)}, {"alpha", round6(s.alpha)}, {"width", round6(s.width)},
-               {"cap", s.cap == Cap::Butt ? "butt" : s.cap == Cap::Round ? "round" : "square"},
-               {"join", s.join == Join::Round ? "round" : "mitre"},
-               {"taper_in", round6(s.taper_in_px)}, {"taper_out", round6(s.taper_out_px)}, {"fade", s.fade}};
-    if (!s.slam.empty()) style["slam"] = relative_to(s.slam, dest_dir);
-    if (!s.ribbon.empty()) style["ribbon"] = relative_to(s.ribbon, dest_dir);
-    if (s.ribbon_scale > 0.0f) style["ribbon_scale"] = round6(s.ribbon_scale);
-    if (!s.dashes.empty()) {
-        json dashes = json::array();
-        for (float d : s.dashes) dashes.push_back(round6(d));
-        style["dashes"] = dashes;
+    json style{{"width", round6(s.width)}};
+    if (!s.ribbon.empty()) {
+        // A ribbon set takes no stroke-renderer keys (the reader refuses them there).
+        style["ribbon"] = relative_to(s.ribbon, dest_dir);
+        if (s.ribbon_scale > 0.0f) style["ribbon_scale"] = round6(s.ribbon_scale);
+    } else {
+        style.update({{"color", vec3(s.color)}, {"alpha", round6(s.alpha)},
+                      {"cap", s.cap == Cap::Butt ? "butt" : s.cap == Cap::Round ? "round" : "square"},
+                      {"join", s.join == Join::Round ? "round" : "mitre"},
+                      {"taper_in", round6(s.taper_in_px)}, {"taper_out", round6(s.taper_out_px)}, {"fade", s.fade}});
+        if (!s.slam.empty()) style["slam"] = relative_to(s.slam, dest_dir);
+        if (s.ribbon_scale > 0.0f) style["ribbon_scale"] = round6(s.ribbon_scale);
+        if (!s.dashes.empty()) {
+            json dashes = json::array();
+            for (float d : s.dashes) dashes.push_back(round6(d));
+            style["dashes"] = dashes;
+        }
+        if (!s.width_modifiers.empty()) style["width_modifiers"] = scalar_modifiers(s.width_modifiers);
+        if (!s.alpha_modifiers.empty()) style["alpha_modifiers"] = scalar_modifiers(s.alpha_modifiers);
+        if (!s.color_modifiers.empty()) style["color_modifiers"] = color_modifiers(s.color_modifiers);
     }
-    if (!s.width_modifiers.empty()) style["width_modifiers"] = scalar_modifiers(s.width_modifiers);
-    if (!s.alpha_modifiers.empty()) style["alpha_modifiers"] = scalar_modifiers(s.alpha_modifiers);
-    if (!s.color_modifiers.empty()) style["color_modifiers"] = color_modifiers(s.color_modifiers);
     if (!s.geometry.empty()) style["geometry"] = geometry_modifiers(s.geometry);
     json chaining{{"split_angle", round6(s.chaining.split_angle_deg)}, {"min_length", round6(s.chaining.min_length_px)}};
     if (s.chaining.max_length_px > 0.0f) chaining["max_length"] = round6(s.chaining.max_length_px);

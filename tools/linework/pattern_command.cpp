@@ -79,8 +79,9 @@ int run_pattern(const PatternOptions& o) {
     std::printf("target: %s %.1f, %zu seeds (N_ref·A_tar/A_ref) after %d Lloyd iterations (%.1f ms)\n",
                 along_path ? "path length" : "region area", double(frame_measure(target)), s.source.size(), o.lloyd,
                 s.lloyd_ms);
-    std::printf("synthesis: %d-ring neighbourhoods, %d elements matched a reference neighbourhood, %d took the "
-                "closest (%.1f ms); variation %g\n",
+    // The first element, at the centre, has no neighbours placed yet: it is neither.
+    std::printf("synthesis: %d-ring neighbourhoods, the centre element and then %d elements that matched a reference "
+                "neighbourhood, %d that took the closest (%.1f ms); variation %g\n",
                 s.rings, s.matched, s.fallback, s.match_ms, double(o.variation));
     save_strokes(o.output, s.strokes);
     std::printf("wrote %s (%zu strokes, %.1f ms in all)\n", o.output.c_str(), s.strokes.strokes.size(), total.elapsed_ms());
@@ -101,7 +102,8 @@ Runner add_pattern_command(CLI::App& app) {
         "reference element whose k-ring neighbourhood matches the elements already placed.\n"
         "Example: linework pattern scenes/patterns/flowers.svg --region scenes/curves/circle.json -o out.svg");
     cmd->add_option("reference", o->reference,
-                    "Reference strokes: SVG (path M L H V C S Q T Z, polyline, polygon, line; stroke, stroke-width)\n"
+                    "Reference strokes: SVG (path M L H V C S Q T Z, polyline, polygon, line, rect, circle, ellipse,\n"
+                    "use; stroke, stroke-width)\n"
                     "or JSON {\"strokes\": [{\"points\": [[x, y], ...], \"width\": w, \"color\": [r, g, b]}]}")
         ->required();
     cmd->add_option("-o,--output", o->output, "Output strokes: .svg (one <polyline>/<path> per stroke) or .json")

@@ -190,7 +190,8 @@ Runner add_ribbon_command(CLI::App& app) {
         "Synthesize a structured pattern along a curve (Zhou, Lasram & Lefebvre 2013).\n"
         "The ribbon of width b around the curve is cut into pieces of length δ; each piece\n"
         "copies a part of the exemplar (rotated to follow the curve, never stretched), chosen\n"
-        "by dynamic programming on the GPU so that neighbouring pieces match along their\n"
+        "by dynamic programming (a Vulkan compute pass on a GPU, its C++ reference on a CPU\n"
+        "device; --compute) so that neighbouring pieces match along their\n"
         "shared edge. Where the ribbon folds over or overlaps itself the pattern is kept out.\n"
         "Example: linework ribbon scenes/exemplars/chain.png --curve scenes/curves/wave.json -o chain.png");
     cmd->add_option("exemplar", o->exemplar, "Exemplar image: RGBA, alpha outlines the pattern (alpha >= 128 is ink)")

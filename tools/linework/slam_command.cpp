@@ -169,7 +169,9 @@ Runner add_slam_command(CLI::App& app) {
                     "32 rows at 1024) adjacent levels share lengths; the authors step by at least the stroke's width")
         ->check(CLI::Range(2, 256))
         ->capture_default_str();
-    cmd->add_option("--length", o->length, "Lmax: texels of level 1.0 (and of every stored level)")
+    cmd->add_option("--length", o->length,
+                    "Lmax: texels of level 1.0 (and of every stored level); a multiple of twice the exemplar's pyramid\n"
+                    "unit (64 for a 32-row exemplar, printed in the error otherwise)")
         ->check(CLI::Range(16, 16384))
         ->capture_default_str();
     cmd->add_option("--iterations", o->iterations, "Synthesis iterations per level (textureSynth uses 50)")
