@@ -66,7 +66,13 @@ void check_range(double value, double lo, double hi, const char* name) {
                                " to " + number_text(hi));
 }
 
-uint64_t seed_argument(const pyb::int_& value, uint64_t max) {
+uint64_t seed_argument(const pyb::object& seed, uint64_t max) {
+    // Any integer, NumPy's included (operator.index), but not a bool or a float.
+    if (PyBool_Check(seed.ptr()) || !PyIndex_Check(seed.ptr()))
+        throw pyb::type_error("seed: expected a whole number, got " +
+                              pyb::str(pyb::type::handle_of(seed).attr("__name__")).cast<std::string>());
+    const auto value = pyb::reinterpret_steal<pyb::int_>(PyNumber_Index(seed.ptr()));
+    if (!value) throw pyb::error_already_set();
     if (value < pyb::int_(0) || value > pyb::int_(max))
         throw pyb::value_error("seed: must be a whole number from 0 to " + std::to_string(max) + ", got " +
                                pyb::str(static_cast<const pyb::handle&>(value)).cast<std::string>());
@@ -100,7 +106,7 @@ ImageRGBA8 exemplar_argument(const pyb::handle& value, std::string* where) {
     return array_to_image(a, "exemplar");
 }
 
-pyb::array_t<float> slam(const pyb::object& exemplar, int levels, int length, int iterations, const pyb::int_& seed,
+pyb::array_t<float> slam(const pyb::object& exemplar, int levels, int length, int iterations, const pyb::object& seed,
                          bool global_statistics, int threads) {
     check_range(levels, 2, 256, "levels");
     check_range(length, 16, 16384, "length");
@@ -127,7 +133,7 @@ pyb::array_t<float> slam(const pyb::object& exemplar, int levels, int length, in
     return slam_array(std::move(out));
 }
 
-pyb::array_t<float> slam_pattern(const std::string& name, int levels, int length, int height, const pyb::int_& seed) {
+pyb::array_t<float> slam_pattern(const std::string& name, int levels, int length, int height, const pyb::object& seed) {
     if (name != "dots" && name != "dashes" && name != "pencil")
         throw pyb::value_error("name: expected dots, dashes or pencil, got \"" + name + "\"");
     check_range(levels, 2, 256, "levels");
@@ -145,7 +151,7 @@ pyb::array_t<float> read_slam_file(const std::filesystem::path& path) {
 }
 
 void write_slam_file(const std::filesystem::path& path, const pyb::array& ink, const std::string& exemplar_name,
-                     const pyb::int_& seed) {
+                     const pyb::object& seed) {
     if (path.extension() != ".exr") throw pyb::value_error("path: " + path.string() + ": a SLAM file is OpenEXR (.exr)");
     // As the command line's -o (OpenEXR's own message came twice over).
     if (const std::filesystem::path folder = path.parent_path(); !folder.empty() && !std::filesystem::is_directory(folder))
@@ -206,7 +212,7 @@ constexpr std::initializer_list<std::pair<const char*, const char*>> kRibbonName
     {"device", "device"}};
 
 pyb::object ribbon(const pyb::object& exemplar_value, const pyb::object& curve_value, bool closed,
-                   std::optional<float> piece, std::optional<float> width, std::optional<float> scale, const pyb::int_& seed,
+                   std::optional<float> piece, std::optional<float> width, std::optional<float> scale, const pyb::object& seed,
                    bool stitch, std::optional<std::tuple<int, int>> size_value, const pyb::object& avoid,
                    bool transparent, bool reference, const std::string& device, bool return_info) {
     // Arguments first, then the inputs, as the command line does.
@@ -296,7 +302,7 @@ pyb::object ribbon(const pyb::object& exemplar_value, const pyb::object& curve_v
     return pyb::make_tuple(out, info);
 }
 
-pyb::array_t<uint8_t> ribbon_exemplar(const std::string& name, int width, int height, const pyb::int_& seed) {
+pyb::array_t<uint8_t> ribbon_exemplar(const std::string& name, int width, int height, const pyb::object& seed) {
     const std::vector<std::string>& names = exemplar_names();
     if (std::find(names.begin(), names.end(), name) == names.end())
         throw pyb::value_error("name: unknown exemplar \"" + name + "\" (chain, lace, zigzag, beads or rope)");

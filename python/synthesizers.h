@@ -48,6 +48,6 @@ void check_positive(double value, const char* name);
 // A seed taken as a Python int: ValueError "seed: must be a whole number from 0 to MAX, got V"
 // for a negative one or one past `max` (as an unsigned argument pybind11 gave a TypeError
 // listing every signature), as the command line's --seed says.
-uint64_t seed_argument(const pyb::int_& value, uint64_t max = UINT64_MAX);
+uint64_t seed_argument(const pyb::object& seed, uint64_t max = UINT64_MAX);
 
 }  // namespace lw::py

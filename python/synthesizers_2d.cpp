@@ -154,7 +154,7 @@ PatternFrame frame_argument(const pyb::handle& value, const std::string& name, b
 
 pyb::object pattern(const pyb::object& reference, const pyb::object& path, const pyb::object& region,
                     const pyb::object& ref_path, const pyb::object& ref_region, bool closed, std::optional<float> scale,
-                    std::optional<int> rings, float variation, const std::string& fit, int lloyd, const pyb::int_& seed,
+                    std::optional<int> rings, float variation, const std::string& fit, int lloyd, const pyb::object& seed,
                     bool return_info) {
     const bool along_path = !path.is_none();
     if (along_path == !region.is_none()) throw pyb::value_error("give exactly one of path and region");
@@ -211,7 +211,7 @@ pyb::object pattern(const pyb::object& reference, const pyb::object& path, const
 // ---- Hatching ---------------------------------------------------------------------------
 
 pyb::object hatch(const pyb::object& training, int count, int window, int block, std::optional<double> threshold,
-                  float plausible, const pyb::object& along, const pyb::int_& seed, bool return_info) {
+                  float plausible, const pyb::object& along, const pyb::object& seed, bool return_info) {
     check_range(count, 1, 1000000, "count");
     check_range(window, 1, 1000, "window");
     check_range(block, 2, 100000, "block");

@@ -69,19 +69,12 @@ void write_fixtures(const fs::path& tmp) {
     write(tmp / "badsamples.json", R"({"model": ")" + spot + R"(", "samples": 2})");
     write(tmp / "setsuffix.json", R"({"model": ")" + spot + R"(", "line_sets": [{"name": "rim-hidden"}]})");
     write(tmp / "sets.json", R"({"model": ")" + spot + R"(", "line_sets": [{"name": "rim"}]})");
-    write(tmp / "setwidth.json", R"({"model": ")" + spot +
-                                     R"(", "lines": {"silhouette": {"width": 9}}, "line_sets": [{"name": "a"}]})");
-    write(tmp / "ribboncolor.json", R"({"model": ")" + spot + R"(", "line_sets": [{"name": "a", "style": {"ribbon": ")" +
-                                        (test::source_dir() / "scenes/exemplars/chain.png").string() +
-                                        R"(", "color": [1, 0, 0]}}]})");
     write(tmp / "camtypo.json", R"({"model": ")" + spot + R"(", "camera": {"eye": [0, 0, 3], "targt": [0, 0, 0]}})");
     write(tmp / "nooutline.json", R"({"layers": [{"strokes": ")" +
                                       (test::source_dir() / "scenes/patterns/flowers.svg").string() +
                                       R"(", "outline": false}]})");
     write(tmp / "minmax.json", R"({"model": ")" + spot +
                                    R"(", "line_sets": [{"name": "a", "style": {"chaining": {"min_length": 100, "max_length": 20}}}]})");
-    write(tmp / "negramp.json", R"({"model": ")" + spot +
-                                    R"(", "line_sets": [{"name": "a", "style": {"width_modifiers": [{"input": "along", "ramp": [[0, -1], [1, -3]]}]}}]})");
     write(tmp / "colorramp.json", R"({"model": ")" + spot +
                                       R"(", "line_sets": [{"name": "a", "style": {"color_modifiers": [{"input": "along", "ramp": [[1, [1, 0, 0]], [0, [0, 0, 1]]]}]}}]})");
     write(tmp / "sethidden.json",

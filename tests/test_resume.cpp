@@ -113,6 +113,18 @@ TEST(Resume, ASecondInterruptStopsAtOnce) {
     pid_t pid = 0;
     ASSERT_EQ(posix_spawn(&pid, exe.c_str(), &files, nullptr, argv.data(), environ), 0);
     posix_spawn_file_actions_destroy(&files);
+    int status = 0;
+    bool ended = false;
+    // However the test ends, the render (whose frame takes minutes) does not outlive it.
+    struct Reaper {
+        pid_t pid;
+        bool& ended;
+        ~Reaper() {
+            if (ended) return;
+            kill(pid, SIGKILL);
+            waitpid(pid, nullptr, 0);
+        }
+    } reaper{pid, ended};
 
     const auto log_holds = [&](const std::string& text) {
         std::ifstream in(log);
@@ -127,20 +139,13 @@ TEST(Resume, ASecondInterruptStopsAtOnce) {
         }
         return false;
     };
-    int status = 0;
-    bool ended = false;
     const auto exited = [&] { return ended = ended || waitpid(pid, &status, WNOHANG) == pid; };
     ASSERT_TRUE(wait_for([&] { return log_holds("size: 160x120") || exited(); }) && !ended)
         << "the render did not start its frame";
     kill(pid, SIGINT);
     ASSERT_TRUE(wait_for([&] { return log_holds("stopping after the frame in hand"); }));
     kill(pid, SIGINT);
-    const bool stopped = wait_for(exited);
-    if (!stopped) {
-        kill(pid, SIGKILL);
-        waitpid(pid, &status, 0);
-    }
-    ASSERT_TRUE(stopped) << "the render went on after a second Ctrl-C";
+    ASSERT_TRUE(wait_for(exited)) << "the render went on after a second Ctrl-C";
     EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGINT);
     EXPECT_FALSE(fs::exists(out + "/frame_0000.png"));
 }

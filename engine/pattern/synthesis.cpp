@@ -92,9 +92,12 @@ PatternFrame bounding_frame(const std::vector<Stroke>& strokes, bool along_path)
 float frame_measure(const PatternFrame& frame) {
     if (frame.along_path) return ArclengthCurve(frame.curve).length();
     const std::vector<glm::vec2> poly = region_polygon(frame);
-    if (poly.size() >= 3 && !polygon_is_simple(poly))
+    const float area = poly.size() >= 3 ? polygon_area(poly) : 0.0f;
+    // No area (a line, a bow tie's cancelling halves) is the caller's message; an area that
+    // is what is left of lobes cancelling is not the region's.
+    if (area > 0.0f && !polygon_is_simple(poly))
         throw Error("the region crosses itself (or runs over its own edge): a region is a simple closed curve");
-    return poly.size() >= 3 ? polygon_area(poly) : 0.0f;
+    return area;
 }
 
 PatternAnalysis analyze_pattern(std::vector<Stroke> strokes, const PatternFrame& frame, const PatternDesc& desc) {

@@ -71,14 +71,6 @@ std::vector<ScalarModifier> scalar_modifiers(ObjectReader& style, const std::str
             const std::string b = r.string_of("blend", {"multiply", "replace", "add"});
             m.blend = b == "multiply" ? ModifierBlend::Multiply : b == "replace" ? ModifierBlend::Replace : ModifierBlend::Add;
         }
-        // A negative factor or width draws nothing (a ramp of [[0, -1], [1, -3]] left a blank
-        // frame); subtracting is what "add" is for.
-        if (m.blend != ModifierBlend::Add)
-            for (const glm::vec2& p : m.ramp.points)
-                if (p.y < 0.0f)
-                    r.fail_key("ramp", std::string("values are ") +
-                                           (m.blend == ModifierBlend::Multiply ? "factors" : "the values themselves") +
-                                           " here and must be 0 or more (\"blend\": \"add\" subtracts)");
         r.reject_unknown();
         out.push_back(std::move(m));
     }
@@ -216,14 +208,6 @@ LineSetStyle read_style(ObjectReader& set, const std::filesystem::path& file) {
     if (r.has("alpha_modifiers")) style.alpha_modifiers = scalar_modifiers(r, "alpha_modifiers", file);
     if (r.has("color_modifiers")) style.color_modifiers = color_modifiers(r, file);
     if (r.has("geometry")) style.geometry = geometry_modifiers(r, file);
-    // A ribbon draws pieces of its exemplar along the paths at `width`: the stroke renderer's
-    // colour, alpha and shape keys do not reach it (they were dropped in silence).
-    if (!style.ribbon.empty())
-        for (const char* key : {"color", "alpha", "fade", "cap", "join", "taper", "taper_in", "taper_out", "dashes",
-                                "width_modifiers", "alpha_modifiers", "color_modifiers"})
-            if (r.has(key))
-                r.fail_key(key, "styles the stroke renderer's strokes; a ribbon set draws its exemplar (it takes width, "
-                                "ribbon_scale, geometry and chaining)");
     if (r.has("chaining")) {
         ObjectReader c(r.at("chaining"), r.path("chaining"), file);
         if (c.has("split_angle")) style.chaining.split_angle_deg = float(c.number("split_angle", 0.0, 180.0));

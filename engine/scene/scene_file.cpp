@@ -271,10 +271,7 @@ std::vector<VectorLayerDesc> read_layers(ObjectReader& scene, const std::filesys
         if (layer.strokes.empty()) r.fail_key("strokes", "expected a stroke file (.json or .svg)");
         layer.strokes = scene_detail::resolve_against(file, layer.strokes);
         if (r.has("color")) layer.color = r.color("color");
-        if (r.has("width_scale")) {
-            layer.width_scale = static_cast<float>(r.number("width_scale", 0.0, 1000.0));
-            if (!(layer.width_scale > 0.0f)) r.fail_key("width_scale", "must be over 0 (0 draws nothing)");
-        }
+        if (r.has("width_scale")) layer.width_scale = static_cast<float>(r.number("width_scale", 0.0, 1000.0));
         if (r.has("scale_widths")) layer.scale_widths = r.boolean("scale_widths");
         if (r.has("outline")) layer.outline = r.boolean("outline");
         if (r.has("fill")) layer.fill = r.color("fill");
@@ -287,6 +284,8 @@ std::vector<VectorLayerDesc> read_layers(ObjectReader& scene, const std::filesys
         // Settings that would draw nothing, or change nothing, were taken in silence.
         if (!layer.outline && !layer.fill && layer.ribbon.empty())
             r.fail_key("outline", "false and no \"fill\": the layer would draw nothing");
+        if (!(layer.width_scale > 0.0f) && !layer.fill && layer.ribbon.empty())
+            r.fail_key("width_scale", "0 and no \"fill\": the layer would draw nothing");
         if (r.has("transform")) {
             ObjectReader t(r.at("transform"), r.path("transform"), file);
             layer.keys.push_back({0.0f, read_layer_transform(t)});
@@ -419,20 +418,6 @@ SceneDesc parse_scene_json(const std::string& text, const std::filesystem::path&
         // itself, so beside "line_sets" they would change nothing.
         if (scene.lines.hidden != HiddenLines::None || scene.lines.hidden_levels > 0)
             r.fail_key("lines.hidden", std::string(kHiddenBesideLineSets));
-        // Likewise a type's style and "enabled" under "lines" (they were ignored in silence); its
-        // extraction settings (threshold, fade, angle) still apply to every set.
-        if (r.has("lines") && r.at("lines").is_object())
-            for (int t = 0; t < kLineTypeCount; ++t) {
-                const std::string name = line_type_name(static_cast<LineType>(t));
-                const json& lines = r.at("lines");
-                if (!lines.contains(name)) continue;
-                for (const char* key : {"enabled", "width", "color", "slam", "taper", "ribbon", "ribbon_scale"})
-                    if (lines[name].contains(key))
-                        r.fail_key("lines." + name + "." + key,
-                                   "styles the \"lines\" shorthand's " + name +
-                                       " lines only; with \"line_sets\" a set selects and draws them (\"select\": "
-                                       "{\"types\": [...]}, \"style\"); threshold, fade and angle still apply");
-            }
     }
     r.reject_unknown();
     return scene;

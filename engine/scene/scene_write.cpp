@@ -75,27 +75,21 @@ json geometry_modifiers(const std::vector<GeometryModifier>& modifiers) {
 }
 
 json line_set_style(const LineSetStyle& s, const std::filesystem::path& dest_dir) {
-    json style{{"width", round6(s.width)}};
-    if (!s.ribbon.empty()) {
-        // A ribbon set takes no stroke-renderer keys (the reader refuses them there).
-        style["ribbon"] = relative_to(s.ribbon, dest_dir);
-        if (s.ribbon_scale > 0.0f) style["ribbon_scale"] = round6(s.ribbon_scale);
-    } else {
-        style.update({{"color", vec3(s.color)}, {"alpha", round6(s.alpha)},
-                      {"cap", s.cap == Cap::Butt ? "butt" : s.cap == Cap::Round ? "round" : "square"},
-                      {"join", s.join == Join::Round ? "round" : "mitre"},
-                      {"taper_in", round6(s.taper_in_px)}, {"taper_out", round6(s.taper_out_px)}, {"fade", s.fade}});
-        if (!s.slam.empty()) style["slam"] = relative_to(s.slam, dest_dir);
-        if (s.ribbon_scale > 0.0f) style["ribbon_scale"] = round6(s.ribbon_scale);
-        if (!s.dashes.empty()) {
-            json dashes = json::array();
-            for (float d : s.dashes) dashes.push_back(round6(d));
-            style["dashes"] = dashes;
-        }
-        if (!s.width_modifiers.empty()) style["width_modifiers"] = scalar_modifiers(s.width_modifiers);
-        if (!s.alpha_modifiers.empty()) style["alpha_modifiers"] = scalar_modifiers(s.alpha_modifiers);
-        if (!s.color_modifiers.empty()) style["color_modifiers"] = color_modifiers(s.color_modifiers);
+    json style{{"color", vec3(s.color)}, {"alpha", round6(s.alpha)}, {"width", round6(s.width)},
+               {"cap", s.cap == Cap::Butt ? "butt" : s.cap == Cap::Round ? "round" : "square"},
+               {"join", s.join == Join::Round ? "round" : "mitre"},
+               {"taper_in", round6(s.taper_in_px)}, {"taper_out", round6(s.taper_out_px)}, {"fade", s.fade}};
+    if (!s.slam.empty()) style["slam"] = relative_to(s.slam, dest_dir);
+    if (!s.ribbon.empty()) style["ribbon"] = relative_to(s.ribbon, dest_dir);
+    if (s.ribbon_scale > 0.0f) style["ribbon_scale"] = round6(s.ribbon_scale);
+    if (!s.dashes.empty()) {
+        json dashes = json::array();
+        for (float d : s.dashes) dashes.push_back(round6(d));
+        style["dashes"] = dashes;
     }
+    if (!s.width_modifiers.empty()) style["width_modifiers"] = scalar_modifiers(s.width_modifiers);
+    if (!s.alpha_modifiers.empty()) style["alpha_modifiers"] = scalar_modifiers(s.alpha_modifiers);
+    if (!s.color_modifiers.empty()) style["color_modifiers"] = color_modifiers(s.color_modifiers);
     if (!s.geometry.empty()) style["geometry"] = geometry_modifiers(s.geometry);
     json chaining{{"split_angle", round6(s.chaining.split_angle_deg)}, {"min_length", round6(s.chaining.min_length_px)}};
     if (s.chaining.max_length_px > 0.0f) chaining["max_length"] = round6(s.chaining.max_length_px);
@@ -168,21 +162,15 @@ std::string scene_json(const SceneDesc& desc, const ViewCamera& camera, const st
         for (int t = 0; t < kLineTypeCount; ++t) {
             const LineType type = LineType(t);
             const LineStyle& s = lines.styles[size_t(t)];
-            json entry = json::object();
-            // A type's switch and style belong to the shorthand (the reader refuses them beside
-            // line sets, which select and draw the types themselves); its extraction settings
-            // apply either way.
-            if (lines.sets.empty()) {
-                entry = {{"enabled", line_type_enabled(lines.params, type)}, {"width", round6(s.width)}, {"color", vec3(s.color)}};
-                if (!s.slam.empty()) entry["slam"] = relative_to(s.slam, dest_dir);
-                if (s.taper_px > 0.0f) entry["taper"] = round6(s.taper_px);
-                if (!s.ribbon.empty()) entry["ribbon"] = relative_to(s.ribbon, dest_dir);
-                if (s.ribbon_scale > 0.0f) entry["ribbon_scale"] = round6(s.ribbon_scale);
-            }
+            json entry{{"enabled", line_type_enabled(lines.params, type)}, {"width", round6(s.width)}, {"color", vec3(s.color)}};
+            if (!s.slam.empty()) entry["slam"] = relative_to(s.slam, dest_dir);
+            if (s.taper_px > 0.0f) entry["taper"] = round6(s.taper_px);
+            if (!s.ribbon.empty()) entry["ribbon"] = relative_to(s.ribbon, dest_dir);
+            if (s.ribbon_scale > 0.0f) entry["ribbon_scale"] = round6(s.ribbon_scale);
             if (const float* threshold = line_type_threshold(lines.params, type)) entry["threshold"] = round6(*threshold);
             if (type == LineType::Suggestive) entry["fade"] = lines.params.fade;
             if (type == LineType::Crease) entry["angle"] = round6(lines.params.crease_angle_deg);
-            if (!entry.empty()) l[line_type_name(type)] = entry;
+            l[line_type_name(type)] = entry;
         }
         // Hidden-line settings style the shorthand's lines only (the reader refuses them beside
         // line sets), and levels only where hidden lines are drawn.

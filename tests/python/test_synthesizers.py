@@ -246,6 +246,11 @@ def test_slam_bad_input_gives_the_command_lines_message(tmp_path):
         linework.ribbon_exemplar("chain", seed=2**64)
     assert np.array_equal(linework.ribbon_exemplar("chain", seed=2**64 - 1),
                           linework.ribbon_exemplar("chain", seed=2**64 - 1))
+    # NumPy integers are whole numbers too; a float or a bool is not a seed.
+    assert np.array_equal(linework.ribbon_exemplar("chain", seed=np.int64(3)), linework.ribbon_exemplar("chain", seed=3))
+    assert np.array_equal(linework.slam_pattern("dots", seed=np.uint32(3)), linework.slam_pattern("dots", seed=3))
+    with pytest.raises(TypeError, match=r"^seed: expected a whole number, got float$"):
+        linework.ribbon_exemplar("chain", seed=1.5)
 
 
 # ---- Ribbons ----------------------------------------------------------------------------

@@ -28,8 +28,9 @@ volatile std::sig_atomic_t g_interrupted = 0;
 
 // Ctrl-C (SIGINT), or a scheduler's SIGTERM (scancel, requeue, pre-emption), finishes the
 // frame in hand, writes it and the state, and stops (exit code 130). A second one stops at
-// once, as the signal's default would: a frame can take minutes (a ribbon style), and every
-// file is written under a temporary name and renamed, so nothing half-written is left.
+// once, as the signal's default would: a frame can take minutes (a ribbon style). Every file
+// is written under a temporary name and renamed, so the frames and states there are whole;
+// a temporary file may be left (*.partial.*).
 void on_stop_signal(int signal) {
     if (g_interrupted) {
         std::signal(signal, SIG_DFL);
@@ -178,7 +179,6 @@ void print_header(const RenderOptions& o, const SceneSession& session, const Con
 // and the states at chunk starts; 0, or 130 when a signal stopped it.
 int render_frames(const RenderOptions& o, const Shot& shot, const FrameFiles& files, float pose_seconds,
                   SceneSession& session) {
-    const StopOnSignal stop;
     const float fps = session.desc().animation.fps;
     Progress progress(shot.part.last - shot.start + 1, "frame");
     double total_ms = 0.0;
@@ -283,6 +283,8 @@ int run_render(const RenderOptions& o) {
     // Made once the scene has loaded, so that a scene that fails to load leaves no empty folders.
     if (!o.state_only) create_folders(files);
     if (!o.save_states.empty()) create_folder(o.save_states, "the --save-states");
+    // From the header on, a signal stops after the frame in hand (render_frames reads it).
+    const StopOnSignal stop;
     print_header(o, session, ctx, shot, files.sequence, load_timer.elapsed_ms());
 
     shot.start = first_frame(o, shot, files, start_state, session);
