@@ -13,6 +13,7 @@
 #include <mutex>
 #include <tuple>
 
+#include "core/text.h"
 #include "io/image_io.h"
 #include "io/slam_io.h"
 #include "ribbon/avoidance.h"
@@ -48,17 +49,6 @@ Curve2D curve_argument(const pyb::handle& value, const std::string& name, std::s
             throw pyb::value_error(name + ": coordinates must be finite and within ±1e6");
     return curve;
 }
-
-namespace {
-
-std::string number_text(double v) {
-    char text[48];
-    if (std::isfinite(v) && v == std::round(v) && std::abs(v) < 1e15) std::snprintf(text, sizeof text, "%.0f", v);
-    else std::snprintf(text, sizeof text, "%g", v);
-    return text;
-}
-
-}  // namespace
 
 void check_range(double value, double lo, double hi, const char* name) {
     if (!(value >= lo && value <= hi))

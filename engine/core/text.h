@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <cstdio>
 #include <string>
 
 namespace lw {
@@ -24,6 +26,15 @@ inline std::string lower(std::string s) {
 // " '.obj'", or " (no extension)": how an error names a file extension (lower case).
 inline std::string extension_phrase(const std::string& extension) {
     return extension.empty() ? std::string(" (no extension)") : " '" + extension + "'";
+}
+
+// A number as messages write it: whole numbers without a point (1000, not 1e+03), others in
+// %g (0.1, not 0.100000).
+inline std::string number_text(double v) {
+    char text[48];
+    if (std::isfinite(v) && v == std::round(v) && std::abs(v) < 1e15) std::snprintf(text, sizeof text, "%.0f", v);
+    else std::snprintf(text, sizeof text, "%g", v);
+    return text;
 }
 
 // A library's message made one line of an error: trailing newlines dropped, inner ones as

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "core/text.h"
 
 namespace lw {
 
@@ -55,6 +56,11 @@ Ribbon build_ribbon(const ArclengthCurve& curve, const RibbonParams& params) {
     if (!(params.scale > 0.0f) || !std::isfinite(params.scale))
         throw ParameterError("ribbon scale", ": s must be a positive number of exemplar pixels");
     if (params.scale > 4096.0f) throw ParameterError("ribbon scale", ": at most 4096 exemplar pixels across the ribbon");
+    // Under one exemplar pixel across the ribbon the DP compares sub-pixel slivers (--scale 0.1
+    // ran for half a minute and cut every piece).
+    if (params.scale < 1.0f)
+        throw ParameterError("ribbon scale", ": " + number_text(params.scale) +
+                                                 " is under one exemplar pixel across the ribbon");
 
     const float length = curve.length();
     const float delta = params.piece;
