@@ -66,8 +66,8 @@ inline CLI::Validator seed(uint64_t max = UINT64_MAX) {
             uint64_t value = 0;
             const char* end = text.data() + text.size();
             const auto [at, problem] = std::from_chars(text.data(), end, value);
-            if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos || problem != std::errc() ||
-                at != end || value > max)
+            // from_chars into an unsigned type takes digits only: no sign, and nothing for "".
+            if (problem != std::errc() || at != end || value > max)
                 return "must be a whole number from 0 to " + std::to_string(max) + ", got \"" + text + "\"";
             return {};
         },

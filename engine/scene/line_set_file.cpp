@@ -40,6 +40,14 @@ ModifierInput input(ObjectReader& r) {
     return s == "along" ? ModifierInput::Along : s == "distance" ? ModifierInput::Distance : ModifierInput::Curvature;
 }
 
+// A ramp point's x: in [0, 1] and not below the point before it (`previous`, if any). The
+// scalar and the colour ramps share it.
+float ramp_x(ObjectReader& r, const json& value, const float* previous) {
+    const float x = value.get<float>();
+    if (!(x >= 0.0f && x <= 1.0f) || (previous && !(x >= *previous))) r.fail_key("ramp", "x must increase within [0, 1]");
+    return x;
+}
+
 // "ramp": [[x, y], ...] with x increasing in [0, 1].
 Ramp scalar_ramp(ObjectReader& r) {
     Ramp ramp;
@@ -48,9 +56,7 @@ Ramp scalar_ramp(ObjectReader& r) {
     for (const json& p : v) {
         if (!p.is_array() || p.size() != 2 || !p[0].is_number() || !p[1].is_number())
             r.fail_key("ramp", "expected [[x, value], ...] with numbers");
-        const float x = p[0].get<float>();
-        if (!(x >= 0.0f && x <= 1.0f) || (!ramp.points.empty() && !(x >= ramp.points.back().x)))
-            r.fail_key("ramp", "x must increase within [0, 1]");
+        const float x = ramp_x(r, p[0], ramp.points.empty() ? nullptr : &ramp.points.back().x);
         ramp.points.push_back({x, p[1].get<float>()});
     }
     return ramp;
@@ -90,9 +96,7 @@ std::vector<ColorModifier> color_modifiers(ObjectReader& style, const std::files
         for (const json& p : r.at("ramp")) {
             if (!p.is_array() || p.size() != 2 || !p[0].is_number() || !p[1].is_array() || p[1].size() != 3)
                 r.fail_key("ramp", "expected [[x, [r, g, b]], ...]");
-            const float x = p[0].get<float>();
-            if (!(x >= 0.0f && x <= 1.0f) || (!m.ramp.points.empty() && !(x >= m.ramp.points.back().first)))
-                r.fail_key("ramp", "x must increase within [0, 1]");
+            const float x = ramp_x(r, p[0], m.ramp.points.empty() ? nullptr : &m.ramp.points.back().first);
             glm::vec3 c(0.0f);
             for (int k = 0; k < 3; ++k) {
                 if (!p[1][k].is_number()) r.fail_key("ramp", "colours are three numbers in [0, 1]");

@@ -45,18 +45,18 @@ void read_camera(ObjectReader& parent, const std::filesystem::path& file, SceneD
         r.reject_unknown();
         return;
     }
-    // A misspelt key ("targt") is named before the key it stands for is said to be missing.
-    for (const char* key : {"up", "fov", "near", "far"}) (void)r.has(key);
+    // Every key is known before any is read, so that a misspelt one ("targt") is named
+    // before the key it stands for is said to be missing.
+    const bool has_up = r.has("up"), has_fov = r.has("fov"), has_near = r.has("near"), has_far = r.has("far");
     r.reject_unknown();
     if (!has_eye) r.fail_key("eye", "required");
     if (!has_target) r.fail_key("target", "required");
     camera.eye = r.vec3("eye");
     camera.target = r.vec3("target");
-    if (r.has("up")) camera.up = r.vec3("up");
-    if (r.has("fov")) camera.fov_deg = static_cast<float>(r.number("fov", 1.0, 170.0));
-    if (r.has("near")) camera.znear = static_cast<float>(r.number("near", 1e-6, 1e30));
-    if (r.has("far")) camera.zfar = static_cast<float>(r.number("far", 1e-6, 1e30));
-    r.reject_unknown();
+    if (has_up) camera.up = r.vec3("up");
+    if (has_fov) camera.fov_deg = static_cast<float>(r.number("fov", 1.0, 170.0));
+    if (has_near) camera.znear = static_cast<float>(r.number("near", 1e-6, 1e30));
+    if (has_far) camera.zfar = static_cast<float>(r.number("far", 1e-6, 1e30));
     check_view(r, camera.eye, camera.target, camera.up);
     if (camera.zfar > 0.0f && camera.znear > 0.0f && camera.zfar <= camera.znear) r.fail_key("far", "must exceed near");
     // A turntable turns about the camera's own up: +y unless the scene is z-up.

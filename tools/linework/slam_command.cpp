@@ -101,10 +101,10 @@ int run_slam(const SlamOptions& o) {
                                   .scope = o.global ? synth::StatisticsScope::Global : synth::StatisticsScope::Rows,
                                   .threads = o.threads,
                                   .exemplar_name = o.exemplar};
+    // The engine's parameter errors name these flags.
+    const auto named = [](auto&& f) { return flags_named({{"SLAM length", "--length"}, {"SLAM levels", "--levels"}}, f); };
     // Every refusal before the header, so that a wrong --length is the only line printed.
-    const synth::SlamModel m =
-        flags_named({{"SLAM length", "--length"}, {"SLAM levels", "--levels"}}, [&] { return synth::check_slam_synthesis(ink, desc); })
-            .model;
+    const synth::SlamModel m = named([&] { return synth::check_slam_synthesis(ink, desc); }).model;
     std::printf("exemplar: %s (%dx%d), padded to %d rows; %d scales, 4 orientations, Na = 9; %s statistics\n",
                 o.exemplar.c_str(), ink.cols, ink.rows, m.padded_rows, m.scales,
                 o.global ? "global (1D)" : "per-row mean/variance (1.5D)");
@@ -114,8 +114,7 @@ int run_slam(const SlamOptions& o) {
     Progress progress(o.levels, "level");
     int done = 0;
     desc.on_level = [&](const synth::SlamLevelReport& r) { progress.update(++done, r.index, r.ms); };
-    const synth::SlamSynthesis s =
-        flags_named({{"SLAM length", "--length"}, {"SLAM levels", "--levels"}}, [&] { return synth::synthesize_slam(ink, desc); });
+    const synth::SlamSynthesis s = named([&] { return synth::synthesize_slam(ink, desc); });
     if (s.exemplar_cols != ink.cols)
         std::printf("exemplar cropped to %d column%s (a multiple of %d)\n", s.exemplar_cols, s.exemplar_cols == 1 ? "" : "s",
                     m.unit);
