@@ -4,7 +4,7 @@
 layout(push_constant) uniform LineDrawPush {
     vec2 viewport;  // width, height in pixels
     float dash_period;  // pixels; dashed hidden lines
-    float pad;
+    float premultiplied;  // 1: premultiplied colour (a coverage layer's pipeline)
 } pc;
 
 layout(location = 0) in vec2 in_pixel;

@@ -9,7 +9,7 @@
 layout(push_constant) uniform StrokePush {
     vec2 viewport;
     float levels;
-    float pad;
+    float premultiplied;  // 1: premultiplied colour (a coverage layer's pipeline)
 } pc;
 
 layout(binding = 0) uniform sampler3D slam;
@@ -23,5 +23,7 @@ layout(location = 0) out vec4 out_color;
 void main() {
     float level = (in_tex.z * (pc.levels - 1.0) + 0.5) / pc.levels;
     float ink = texture(slam, vec3(in_tex.x, clamp(in_tex.y, 0.0, 1.0), level)).r;
-    out_color = vec4(in_color.rgb, in_color.a * ink * fragment_coverage(in_edge));
+    const float alpha = in_color.a * ink * fragment_coverage(in_edge);
+    // Into a coverage layer (a translucent set drawn once, engine/gpu/coverage_layer.h): premultiplied.
+    out_color = pc.premultiplied > 0.5 ? vec4(in_color.rgb * alpha, alpha) : vec4(in_color.rgb, alpha);
 }

@@ -3,7 +3,7 @@
 layout(push_constant) uniform StrokePush {
     vec2 viewport;
     float levels;  // SLAM level count
-    float pad;
+    float premultiplied;  // 1: premultiplied colour (a coverage layer's pipeline)
 } pc;
 
 layout(location = 0) in vec2 in_pixel;

@@ -4,9 +4,11 @@
 // ink summed down a column, which for a line at angle θ to the x axis is width / cos θ.
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 #include <vector>
 
 #include "core/image.h"
+#include "gpu/coverage_layer.h"
 #include "render/coverage_reference.h"
 #include "render/frame_renderer.h"
 #include "render/line_pass.h"
@@ -174,6 +176,57 @@ TEST_F(AntialiasingReference, GpuMatchesCpuReference) {
         }
         EXPECT_LE(off, 4u) << "width " << c.width;  // measured: 0, every difference ≤ 1/255
         EXPECT_GT(total, 20.0) << "the stroke is drawn";
+    }
+}
+
+// A translucent set is drawn once (gpu/coverage_layer.h): where its strokes overlap — a
+// figure of eight crossing itself, round joins at its sharp turns, a second stroke across
+// it — the ink is the larger of the coverages, never more than the set's alpha; drawn over
+// the frame one triangle after another it reaches 1 − (1 − α)² there. Both passes, against
+// the C++ reference's union.
+TEST_F(AntialiasingReference, ATranslucentSetDrawnOnceInksItsUnion) {
+    ScreenPath eight, across = segment_path({6.0f, 40.3f}, {58.0f, 24.7f});
+    for (int i = 0; i <= 48; ++i) {
+        const float t = 6.2831853f * float(i) / 48.0f;
+        const glm::vec2 p(32.0f + 24.0f * std::sin(t), 32.0f + 16.0f * std::sin(2.0f * t));
+        const float s = eight.samples.empty() ? 0.0f : eight.samples.back().s + glm::length(p - eight.samples.back().pixel);
+        eight.samples.push_back(ScreenSample{.pixel = p, .depth = 1.0f, .s = s, .position = {}, .face = 0, .bary = {}, .alpha = 1.0f});
+    }
+    constexpr float kAlpha = 0.5f, kWidth = 5.0f;
+    std::vector<StrokeVertex> vertices = build(eight, kWidth, Cap::Round, Join::Round, kAlpha);
+    for (const StrokeVertex& v : build(across, kWidth, Cap::Round, Join::Round, kAlpha)) vertices.push_back(v);
+    const std::vector<float> once = stroke_ink_reference(vertices, kSize, kSize, InkBlend::Once);
+    const std::vector<float> over = stroke_ink_reference(vertices, kSize, kSize, InkBlend::Over);
+    EXPECT_GT(*std::max_element(over.begin(), over.end()), 0.7f) << "the figure overlaps itself";
+    EXPECT_NEAR(*std::max_element(once.begin(), once.end()), kAlpha, 1e-6f);
+
+    const LayerComposite composite(ctx(), VK_FORMAT_R8G8B8A8_UNORM);
+    const CoverageLayer layer(ctx(), kSize, kSize);
+    const StrokePass strokes(ctx());
+    const SlamTexture solid(ctx(), solid_slam());
+    const LinePass lines(ctx());
+    const std::vector<float> stroke_gpu = ink_of(ctx(), [&](VkCommandBuffer cmd, RenderTarget& target, UploadArena& arena) {
+        ASSERT_TRUE(strokes.record(ctx(), cmd, target, vertices, solid, arena, &layer));
+        composite.record(ctx(), cmd, target, layer);
+    });
+    // The line pass builds its own triangles (mitre joins, square caps): its reference is theirs.
+    const LineDrawStyle style{.alpha = kAlpha, .width = kWidth, .fade = false};
+    const std::vector<float> line_gpu = ink_of(ctx(), [&](VkCommandBuffer cmd, RenderTarget& target, UploadArena& arena) {
+        ASSERT_TRUE(lines.record(ctx(), cmd, target, {eight, across}, style, arena, &layer));
+        composite.record(ctx(), cmd, target, layer);
+    });
+    const std::vector<float> line_once =
+        stroke_ink_reference(line_triangles({eight, across}, style, kCoverageMarginPx, false), kSize, kSize, InkBlend::Once);
+    for (const auto& [gpu, cpu, name] : {std::tuple{&stroke_gpu, &once, "stroke pass"}, std::tuple{&line_gpu, &line_once, "line pass"}}) {
+        size_t off = 0;
+        double total = 0.0;
+        for (size_t i = 0; i < gpu->size(); ++i) {
+            off += std::abs((*gpu)[i] - (*cpu)[i]) > 2.0f / 255.0f;
+            total += (*gpu)[i];
+        }
+        EXPECT_LE(off, 4u) << name;
+        EXPECT_GT(total, 50.0) << name << ": drawn";
+        EXPECT_LE(*std::max_element(gpu->begin(), gpu->end()), kAlpha + 1.5f / 255.0f) << name;
     }
 }
 

@@ -211,6 +211,33 @@ SideRun top_side_run(const ImageRGBA8& image, bool (*ink)(const ImageRGBA8&, int
     return run;
 }
 
+// A translucent set inks each pixel once: the square's four sides, split at its corners and
+// 10 px wide, overlap in a 5 × 5 px square at each corner, and its ends there would blend
+// twice (0.75 for alpha 0.5). Drawn through the coverage layer no pixel of black at alpha
+// 0.5 is darker than 128 ± 2, the corners included, for a plain set (the line pass) and a
+// styled one (the stroke pass); an opaque set still draws black there.
+TEST_F(LineSetImage, ATranslucentSetInksItsOverlapsOnce) {
+    auto darkest = [](const ImageRGBA8& image) {
+        int lo = 255, count = 0;
+        for (size_t i = 0; i < image.pixels.size(); i += 4) {
+            lo = std::min(lo, int(image.pixels[i]));
+            count += image.pixels[i] < 250;
+        }
+        return std::pair{lo, count};
+    };
+    for (const bool styled : {false, true}) {
+        LineSetDesc set = borders(10.0f);
+        set.style.cap = Cap::Square;  // the plain look (the line pass's caps): ends reach 5 px past the corners
+        if (styled) set.style.taper_in_px = 0.001f;  // the stroke builder, with no visible taper
+        const auto [opaque_lo, opaque_count] = darkest(render(set));
+        EXPECT_LE(opaque_lo, 2) << "styled " << styled;
+        set.style.alpha = 0.5f;
+        const auto [lo, count] = darkest(render(set));
+        EXPECT_NEAR(lo, 128, 2) << "styled " << styled;
+        EXPECT_NEAR(count, opaque_count, opaque_count / 50) << "the same pixels, styled " << styled;
+    }
+}
+
 // Alpha, colour along the stroke, square against butt caps, tip removal, backbone stretch
 // and sinus displacement, each read off the pixels of the square's top side (138 px).
 TEST_F(LineSetImage, AlphaColourCapsAndGeometryInThePixels) {

@@ -158,17 +158,19 @@ GraphicsPipeline::GraphicsPipeline(const Context& ctx, const GraphicsPipelineDes
                                                 .depthTestEnable = desc.depth_test,
                                                 .depthWriteEnable = desc.depth_write,
                                                 .depthCompareOp = VK_COMPARE_OP_LESS_OR_EQUAL};
-    const bool additive = desc.blend == BlendMode::Additive;
+    // Factors per mode (Max ignores them: VK_BLEND_OP_MAX takes the larger value as is).
+    const bool additive = desc.blend == BlendMode::Additive, premultiplied = desc.blend == BlendMode::Premultiplied;
+    const VkBlendOp op = desc.blend == BlendMode::Max ? VK_BLEND_OP_MAX : VK_BLEND_OP_ADD;
     VkPipelineColorBlendAttachmentState blend_attachment{
         .blendEnable = desc.blend != BlendMode::None,
-        .srcColorBlendFactor = additive ? VK_BLEND_FACTOR_ONE : VK_BLEND_FACTOR_SRC_ALPHA,
+        .srcColorBlendFactor = additive || premultiplied ? VK_BLEND_FACTOR_ONE : VK_BLEND_FACTOR_SRC_ALPHA,
         .dstColorBlendFactor = additive ? VK_BLEND_FACTOR_ONE : VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA,
-        .colorBlendOp = VK_BLEND_OP_ADD,
+        .colorBlendOp = op,
         // Alpha `over` too (a + (1 − a)·dst): an opaque frame stays opaque, a transparent
         // one gets the coverage a compositor needs.
         .srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE,
         .dstAlphaBlendFactor = additive ? VK_BLEND_FACTOR_ONE : VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA,
-        .alphaBlendOp = VK_BLEND_OP_ADD,
+        .alphaBlendOp = op,
         .colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT |
                           VK_COLOR_COMPONENT_A_BIT};
     const bool has_color = desc.color_format != VK_FORMAT_UNDEFINED;
@@ -221,6 +223,13 @@ void GraphicsPipeline::draw(VkCommandBuffer cmd, UploadArena::Slice vertices, ui
         vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0, push_size, push);
     vkCmdBindVertexBuffers(cmd, 0, 1, &vertices.buffer, &vertices.offset);
     vkCmdDraw(cmd, vertex_count, instance_count, 0, 0);
+}
+
+void GraphicsPipeline::draw_generated(VkCommandBuffer cmd, uint32_t vertex_count, const void* push,
+                                      uint32_t push_size) const {
+    if (push_size > 0)
+        vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0, push_size, push);
+    vkCmdDraw(cmd, vertex_count, 1, 0, 0);
 }
 
 void GraphicsPipeline::push_storage_buffers(const Context& ctx, VkCommandBuffer cmd,

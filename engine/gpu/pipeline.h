@@ -52,7 +52,7 @@ struct VertexAttribute {
     uint32_t offset = 0;
 };
 
-enum class BlendMode { None, Alpha, Additive };
+enum class BlendMode { None, Alpha, Additive, Max, Premultiplied };
 
 struct GraphicsPipelineDesc {
     std::span<const uint32_t> vertex_spirv;
@@ -66,8 +66,10 @@ struct GraphicsPipelineDesc {
     VkFormat depth_format = VK_FORMAT_D32_SFLOAT;      // VK_FORMAT_UNDEFINED = no depth
     bool depth_test = true;
     bool depth_write = true;
-    // Alpha: src·α + dst·(1 − α) on colour, α kept from the destination; Additive: src + dst
-    // on every channel (splatting sums).
+    // Alpha: src·α + dst·(1 − α) on colour, α `over` (α + dst·(1 − α)); Additive: src + dst
+    // on every channel (splatting sums); Max: the larger of src and dst on every channel (a
+    // coverage layer's union, gpu/coverage_layer.h); Premultiplied: src + dst·(1 − α) on
+    // every channel (a premultiplied layer `over` the target).
     BlendMode blend = BlendMode::None;
     uint32_t storage_buffers = 0;  // bindings [0, S): storage buffers (vertex and fragment), pushed per draw
     uint32_t sampled_images = 0;   // bindings [S, S + I): combined image samplers (fragment), pushed per draw
@@ -98,6 +100,9 @@ public:
     // The same from a slice of an upload arena.
     void draw(VkCommandBuffer cmd, UploadArena::Slice vertices, uint32_t vertex_count, const void* push,
               uint32_t push_size, uint32_t instance_count = 1) const;
+    // Draws `vertex_count` vertices that the vertex shader makes from gl_VertexIndex (no
+    // vertex buffer: a full-screen triangle); the pipeline must be bound.
+    void draw_generated(VkCommandBuffer cmd, uint32_t vertex_count, const void* push, uint32_t push_size) const;
 
     // Binds the storage buffers to bindings 0.. (push descriptors) for the following draws.
     void push_storage_buffers(const Context& ctx, VkCommandBuffer cmd, std::initializer_list<const Buffer*> buffers) const;

@@ -29,8 +29,10 @@ std::string point(glm::vec2 p) { return number(p.x, 3) + "," + number(p.y, 3); }
 // the run's mean: a fading line is a few paths, not one per triangle (every path is
 // antialiased on its own, so each break is a faint seam). Each triangle is wound the same way
 // so that the nonzero rule fills their union.
-std::string shape_paths(const std::vector<StrokeVertex>& triangles, const std::string& indent) {
+// `group_opacity`: the enclosing group's, by which each triangle's alpha is divided.
+std::string shape_paths(const std::vector<StrokeVertex>& triangles, float group_opacity, const std::string& indent) {
     std::string out, color, d;
+    if (!(group_opacity > 0.0f)) return out;  // an invisible set
     float first_alpha = 1.0f, alpha_sum = 0.0f;
     int count = 0;
     auto flush = [&] {
@@ -50,7 +52,7 @@ std::string shape_paths(const std::vector<StrokeVertex>& triangles, const std::s
         if (area == 0.0f) continue;
         if (area < 0.0f) std::swap(b, c);
         const glm::vec4 mean = (a->color + b->color + c->color) / 3.0f;
-        const float alpha = std::round(std::clamp(mean.a, 0.0f, 1.0f) * 255.0f) / 255.0f;
+        const float alpha = std::round(std::clamp(mean.a / group_opacity, 0.0f, 1.0f) * 255.0f) / 255.0f;
         if (alpha <= 0.0f) continue;
         const std::string fill = hex_color(glm::vec3(mean));
         if (fill != color || std::abs(alpha - first_alpha) > 0.02f) {
@@ -75,11 +77,13 @@ std::string lines_svg(int width, int height, const std::vector<SvgGroup>& groups
            std::to_string(height) + "\" viewBox=\"0 0 " + std::to_string(width) + " " + std::to_string(height) + "\">\n";
     static const std::vector<ScreenPath> none;
     for (const SvgGroup& group : groups) {
-        svg += "  <g id=\"" + group.id + "\" fill-rule=\"nonzero\" stroke=\"none\">\n";
-        svg += shape_paths(group.shapes, "    ");
+        svg += "  <g id=\"" + group.id + "\" fill-rule=\"nonzero\" stroke=\"none\"";
+        if (group.opacity < 1.0f) svg += " opacity=\"" + number(group.opacity, 3) + "\"";
+        svg += ">\n";
+        svg += shape_paths(group.shapes, group.opacity, "    ");
         if (!group.hidden_shapes.empty()) {
             svg += "    <g id=\"" + group.id + "-hidden\">\n";
-            svg += shape_paths(group.hidden_shapes, "      ");
+            svg += shape_paths(group.hidden_shapes, group.opacity, "      ");
             svg += "    </g>\n";
         }
         svg += "  </g>\n";

@@ -73,7 +73,11 @@ std::string inside_out_warning(const ClosedSurfaces& closed) {
 std::vector<SvgGroup> line_set_svg_groups(const LinesDesc& lines, const Frame& frame, bool with_shapes) {
     std::vector<SvgGroup> groups;
     const std::vector<LineSetDesc> sets = effective_line_sets(lines);
-    for (const LineSetDesc& set : sets) groups.push_back({.id = set.name, .color = set.style.color, .width = set.style.width});
+    // A translucent set's alpha is its group's opacity, as its PNG composites it once; a
+    // ribbon set is drawn as an image, not by its alpha.
+    for (const LineSetDesc& set : sets)
+        groups.push_back({.id = set.name, .color = set.style.color, .width = set.style.width,
+                          .opacity = set.style.ribbon.empty() ? std::clamp(set.style.alpha, 0.0f, 1.0f) : 1.0f});
     for (const LineSetFrame& out : frame.sets) {
         groups[out.set].paths = &out.paths;
         if (with_shapes) add_svg_shapes(lines, sets[out.set], out, groups[out.set]);
@@ -431,12 +435,26 @@ void FrameRenderer::record_sets(VkCommandBuffer cmd, RenderTarget& target, const
         const LineSetDesc& set = sets[out.set];
         const SetState& state = sets_[out.set];
         if (!set.style.ribbon.empty()) continue;
-        if (!strokes[out.set].empty()) {
-            if (!solid_) solid_ = std::make_unique<SlamTexture>(*ctx_, solid_slam());
-            stroke_pass_->record(*ctx_, cmd, target, strokes[out.set], state.texture ? *state.texture : *solid_, arena);
-        } else if (is_plain_line_set(set.style) && !state.texture) {
-            line_pass_.record(*ctx_, cmd, target, out.paths, plain_draw_style(lines, set), arena);
+        const bool styled = !strokes[out.set].empty(), plain = is_plain_line_set(set.style) && !state.texture;
+        if (!styled && !plain) continue;
+        // A translucent set covers each pixel once, however its strokes overlap (the union
+        // its SVG draws): into the layer, then the layer over the frame.
+        const CoverageLayer* layer = nullptr;
+        if (set.style.alpha < 1.0f) {
+            if (!set_layer_ || set_layer_->width != target.width || set_layer_->height != target.height)
+                set_layer_.emplace(*ctx_, target.width, target.height);
+            if (!composite_) composite_ = std::make_unique<LayerComposite>(*ctx_, target.color.format());
+            layer = &*set_layer_;
         }
+        bool drawn = false;
+        if (styled) {
+            if (!solid_) solid_ = std::make_unique<SlamTexture>(*ctx_, solid_slam());
+            drawn = stroke_pass_->record(*ctx_, cmd, target, strokes[out.set], state.texture ? *state.texture : *solid_,
+                                         arena, layer);
+        } else {
+            drawn = line_pass_.record(*ctx_, cmd, target, out.paths, plain_draw_style(lines, set), arena, layer);
+        }
+        if (drawn && layer) composite_->record(*ctx_, cmd, target, *layer);
     }
 }
 

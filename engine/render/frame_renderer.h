@@ -252,6 +252,10 @@ private:
     FaceGroups groups_;
     std::unique_ptr<StrokePass> stroke_pass_;
     std::unique_ptr<SlamTexture> solid_;  // styled sets without a SLAM
+    // Translucent sets (alpha < 1) are drawn into the layer and composited once (made at the
+    // first; the draw submission waits, so frames share them).
+    std::optional<CoverageLayer> set_layer_;
+    std::unique_ptr<LayerComposite> composite_;
     std::unique_ptr<LayerPass> layers_;
     std::vector<LayerStyle> layer_styles_;  // to make layers_ again on resize
 };

@@ -14,9 +14,11 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <vector>
 
 #include "gpu/context.h"
+#include "gpu/coverage_layer.h"
 #include "gpu/pipeline.h"
 #include "lines/visibility.h"
 #include "render/surface_pass.h"
@@ -48,12 +50,16 @@ public:
     explicit LinePass(const Context& ctx, VkFormat color_format = VK_FORMAT_R8G8B8A8_UNORM);
 
     // Builds the triangles of `paths` into `arena` and records their drawing; the arena must
-    // not be reset before the command buffer has completed.
-    void record(const Context& ctx, VkCommandBuffer cmd, RenderTarget& target, const std::vector<ScreenPath>& paths,
-                const LineDrawStyle& style, UploadArena& arena) const;
+    // not be reset before the command buffer has completed. With `layer`, they are drawn into
+    // it (begun and ended here) for a composite that draws them once, instead of over the
+    // target. False: nothing to draw (nothing recorded).
+    bool record(const Context& ctx, VkCommandBuffer cmd, RenderTarget& target, const std::vector<ScreenPath>& paths,
+                const LineDrawStyle& style, UploadArena& arena, const CoverageLayer* layer = nullptr) const;
 
 private:
     GraphicsPipeline pipeline_;
+    // Into a coverage layer: made at the first translucent set (most frames have none).
+    mutable std::optional<GraphicsPipeline> layer_pipeline_;
 };
 
 }  // namespace lw

@@ -11,8 +11,23 @@ namespace {
 struct StrokePush {  // mirrors shaders/stroke.vert
     glm::vec2 viewport;
     float levels;
-    float pad;
+    float premultiplied;
 };
+
+GraphicsPipelineDesc stroke_pipeline_desc(VkFormat color_format, BlendMode blend) {
+    return {.vertex_spirv = LW_SPIRV(stroke_vert_spv),
+            .fragment_spirv = LW_SPIRV(stroke_frag_spv),
+            .vertex_stride = sizeof(StrokeVertex),
+            .attributes = stroke_vertex_attributes(),
+            .color_format = color_format,
+            .depth_format = VK_FORMAT_UNDEFINED,
+            .depth_test = false,
+            .depth_write = false,
+            .blend = blend,
+            .sampled_images = 1,
+            .push_constant_size = sizeof(StrokePush),
+            .name = blend == BlendMode::Max ? "strokes (coverage layer)" : "strokes"};
+}
 }  // namespace
 
 std::vector<VertexAttribute> stroke_vertex_attributes() {
@@ -23,29 +38,22 @@ std::vector<VertexAttribute> stroke_vertex_attributes() {
 }
 
 StrokePass::StrokePass(const Context& ctx, VkFormat color_format)
-    : pipeline_(ctx, {.vertex_spirv = LW_SPIRV(stroke_vert_spv),
-                      .fragment_spirv = LW_SPIRV(stroke_frag_spv),
-                      .vertex_stride = sizeof(StrokeVertex),
-                      .attributes = stroke_vertex_attributes(),
-                      .color_format = color_format,
-                      .depth_format = VK_FORMAT_UNDEFINED,
-                      .depth_test = false,
-                      .depth_write = false,
-                      .blend = BlendMode::Alpha,
-                      .sampled_images = 1,
-                      .push_constant_size = sizeof(StrokePush),
-                      .name = "strokes"}) {}
+    : pipeline_(ctx, stroke_pipeline_desc(color_format, BlendMode::Alpha)) {}
 
-void StrokePass::record(const Context& ctx, VkCommandBuffer cmd, const RenderTarget& target,
-                        const std::vector<StrokeVertex>& vertices, const SlamTexture& slam, UploadArena& arena) const {
-    if (vertices.empty()) return;
+bool StrokePass::record(const Context& ctx, VkCommandBuffer cmd, const RenderTarget& target,
+                        const std::vector<StrokeVertex>& vertices, const SlamTexture& slam, UploadArena& arena,
+                        const CoverageLayer* layer) const {
+    if (vertices.empty()) return false;
     const UploadArena::Slice buffer = arena.push(ctx, std::as_bytes(std::span(vertices)));
-    target.begin_overlay(cmd);
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.get());
-    pipeline_.push_image(ctx, cmd, 0, slam.view(), slam.sampler());
-    const StrokePush push{{float(target.width), float(target.height)}, float(slam.levels()), 0.0f};
-    pipeline_.draw(cmd, buffer, static_cast<uint32_t>(vertices.size()), &push, sizeof(push));
-    target.end_overlay(cmd);
+    if (layer && !layer_pipeline_) layer_pipeline_.emplace(ctx, stroke_pipeline_desc(CoverageLayer::kFormat, BlendMode::Max));
+    const GraphicsPipeline& pipeline = layer ? *layer_pipeline_ : pipeline_;
+    layer ? layer->begin(cmd) : target.begin_overlay(cmd);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.get());
+    pipeline.push_image(ctx, cmd, 0, slam.view(), slam.sampler());
+    const StrokePush push{{float(target.width), float(target.height)}, float(slam.levels()), layer ? 1.0f : 0.0f};
+    pipeline.draw(cmd, buffer, static_cast<uint32_t>(vertices.size()), &push, sizeof(push));
+    layer ? layer->end(cmd) : target.end_overlay(cmd);
+    return true;
 }
 
 }  // namespace lw

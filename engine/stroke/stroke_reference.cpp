@@ -13,18 +13,23 @@ EdgeGradients edge_gradients(const StrokeVertex& a, const StrokeVertex& b, const
     return {.dxy_dx = {gx.x, gy.x}, .dxy_dy = {gx.y, gy.y}, .dz = gz};
 }
 
-std::vector<float> stroke_ink_reference(const std::vector<StrokeVertex>& triangles, int width, int height) {
-    std::vector<float> paper(size_t(width) * height, 1.0f);  // 1 − ink: what is left of the white
+std::vector<float> stroke_ink_reference(const std::vector<StrokeVertex>& triangles, int width, int height,
+                                        InkBlend blend) {
+    // Over: what is left of the white, 1 − ink, multiplied triangle by triangle. Once: the
+    // largest ink.
+    std::vector<float> value(size_t(width) * height, blend == InkBlend::Over ? 1.0f : 0.0f);
     for (size_t t = 0; t + 2 < triangles.size(); t += 3) {
         const StrokeVertex &a = triangles[t], &b = triangles[t + 1], &c = triangles[t + 2];
         const EdgeGradients g = edge_gradients(a, b, c);
         for_each_point_inside(a, b, c, width, height, 1, [&](int x, int y, const glm::vec4& edge, float alpha) {
             const float ink = std::clamp(alpha, 0.0f, 1.0f) * stroke_coverage(edge, g.dxy_dx, g.dxy_dy, g.dz);
-            paper[size_t(y) * width + x] *= 1.0f - ink;
+            float& v = value[size_t(y) * width + x];
+            v = blend == InkBlend::Over ? v * (1.0f - ink) : std::max(v, ink);
         });
     }
-    for (float& p : paper) p = 1.0f - p;
-    return paper;
+    if (blend == InkBlend::Over)
+        for (float& v : value) v = 1.0f - v;
+    return value;
 }
 
 }  // namespace lw

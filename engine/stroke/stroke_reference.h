@@ -6,7 +6,9 @@
 //         1 − Π(1 − αᵢ·coverageᵢ) over the triangles covering the pixel centre (the GPU's
 //         alpha blending, up to its 8-bit rounding and its edge tie-breaking rules). The
 //         coverage is `stroke_coverage` with the gradients of the triangle's (linear)
-//         coverage coordinates, which the shaders take as screen derivatives.
+//         coverage coordinates, which the shaders take as screen derivatives. Drawn once (a
+//         translucent line set through a coverage layer, gpu/coverage_layer.h) the ink is
+//         instead the largest αᵢ·coverageᵢ, up to the layer's 8-bit rounding as well.
 #pragma once
 
 #include <algorithm>
@@ -55,6 +57,11 @@ void for_each_point_inside(const StrokeVertex& a, const StrokeVertex& b, const S
         }
 }
 
-[[nodiscard]] std::vector<float> stroke_ink_reference(const std::vector<StrokeVertex>& triangles, int width, int height);
+// How overlapping triangles combine: Over, blended one after the other as the passes draw
+// over the frame; Once, the union a coverage layer draws (the largest ink).
+enum class InkBlend { Over, Once };
+
+[[nodiscard]] std::vector<float> stroke_ink_reference(const std::vector<StrokeVertex>& triangles, int width, int height,
+                                                      InkBlend blend = InkBlend::Over);
 
 }  // namespace lw
