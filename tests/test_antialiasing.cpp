@@ -201,7 +201,7 @@ TEST_F(AntialiasingReference, ATranslucentSetDrawnOnceInksItsUnion) {
     EXPECT_NEAR(*std::max_element(once.begin(), once.end()), kAlpha, 1e-6f);
 
     const LayerComposite composite(ctx(), VK_FORMAT_R8G8B8A8_UNORM);
-    const CoverageLayer layer(ctx(), kSize, kSize);
+    CoverageLayer layer(ctx(), kSize, kSize);
     const StrokePass strokes(ctx());
     const SlamTexture solid(ctx(), solid_slam());
     const LinePass lines(ctx());
@@ -228,6 +228,21 @@ TEST_F(AntialiasingReference, ATranslucentSetDrawnOnceInksItsUnion) {
         EXPECT_GT(total, 50.0) << name << ": drawn";
         EXPECT_LE(*std::max_element(gpu->begin(), gpu->end()), kAlpha + 1.5f / 255.0f) << name;
     }
+    // Two sets through the same layer in one command buffer, each cleared and composited over
+    // its own box: the second over the first, as two sets blend.
+    const std::vector<StrokeVertex> first = build(eight, kWidth, Cap::Round, Join::Round, kAlpha),
+                                    second = build(across, kWidth, Cap::Round, Join::Round, 0.8f);
+    const std::vector<float> two = ink_of(ctx(), [&](VkCommandBuffer cmd, RenderTarget& target, UploadArena& arena) {
+        for (const auto* set : {&first, &second}) {
+            ASSERT_TRUE(strokes.record(ctx(), cmd, target, *set, solid, arena, &layer));
+            composite.record(ctx(), cmd, target, layer);
+        }
+    });
+    const std::vector<float> a = stroke_ink_reference(first, kSize, kSize, InkBlend::Once),
+                             b = stroke_ink_reference(second, kSize, kSize, InkBlend::Once);
+    size_t off = 0;
+    for (size_t i = 0; i < two.size(); ++i) off += std::abs(two[i] - (1.0f - (1.0f - a[i]) * (1.0f - b[i]))) > 3.0f / 255.0f;
+    EXPECT_LE(off, 4u) << "two sets";
 }
 
 // A round join leaves no gap on either centre line next to the corner (the inner gap triangles

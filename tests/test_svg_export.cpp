@@ -147,30 +147,41 @@ TEST(SvgExport, StyledLineSetsKeepTheirShapes) {
 // A translucent set is composited once in both: black at alpha 0.5, 6 px wide with round caps
 // and joins, over white, is nowhere darker than 128 (± 2 for rounding) in the PNG or in the
 // SVG as rsvg draws it, though its caps, joins and the places where a silhouette meets a
-// crease overlap (drawn one over another they reached 64). The two ink the same pixels.
+// crease overlap (drawn one over another they reached 0). With an alpha modifier that
+// replaces the alpha by 0.8, both draw at 0.8 (51): the SVG group's opacity is its most
+// opaque shape's, not the set's alpha. The two ink the same pixels.
 TEST(SvgExport, ATranslucentSetIsDrawnOnceInBoth) {
     const fs::path dir = test::temp_dir();
-    const fs::path scene = dir / "translucent.json";
-    std::ofstream(scene) << R"({"model": ")" << (test::data_dir() / "models/spot/spot.glb").string() << R"(",
-      "camera": {"eye": [2.9, 0.7, 1.1], "target": [0.0, 0.05, 0.0], "fov": 35},
-      "line_sets": [{"name": "outline", "select": {"types": ["silhouette", "crease", "border"]},
-                     "style": {"width": 6, "alpha": 0.5, "cap": "round", "join": "round"}}]})";
-    const SvgRender r = render_both(dir, test::quote(scene), "");
-    auto darkest = [](const ImageRGBA8& image) {
-        int lo = 255;
-        size_t inked = 0;
-        for (size_t i = 0; i < image.pixels.size(); i += 4) {
-            lo = std::min(lo, int(image.pixels[i]));
-            inked += image.pixels[i] < 192;
-        }
-        return std::pair{lo, inked};
+    struct Case {
+        const char* name;
+        const char* style;
+        int darkest;
     };
-    const auto [png_lo, png_inked] = darkest(r.png);
-    const auto [svg_lo, svg_inked] = darkest(r.svg_drawn);
-    EXPECT_GT(png_inked, 1000u);
-    EXPECT_NEAR(png_lo, 128, 2);
-    EXPECT_NEAR(svg_lo, 128, 2);
-    EXPECT_NEAR(double(svg_inked), double(png_inked), 0.05 * double(png_inked));
+    for (const Case c : {Case{"half", R"("alpha": 0.5)", 128},
+                         Case{"replaced", R"("alpha": 0.5, "alpha_modifiers": [{"input": "along", "blend": "replace",
+                                              "ramp": [[0, 0.8], [1, 0.8]]}])", 51}}) {
+        const fs::path scene = dir / (std::string(c.name) + ".json");
+        std::ofstream(scene) << R"({"model": ")" << (test::data_dir() / "models/spot/spot.glb").string() << R"(",
+          "camera": {"eye": [2.9, 0.7, 1.1], "target": [0.0, 0.05, 0.0], "fov": 35},
+          "line_sets": [{"name": "outline", "select": {"types": ["silhouette", "crease", "border"]},
+                         "style": {"width": 6, "cap": "round", "join": "round", )" << c.style << "}}]}";
+        const SvgRender r = render_both(dir / c.name, test::quote(scene), "");
+        auto darkest = [](const ImageRGBA8& image) {
+            int lo = 255;
+            size_t inked = 0;
+            for (size_t i = 0; i < image.pixels.size(); i += 4) {
+                lo = std::min(lo, int(image.pixels[i]));
+                inked += image.pixels[i] < 192;
+            }
+            return std::pair{lo, inked};
+        };
+        const auto [png_lo, png_inked] = darkest(r.png);
+        const auto [svg_lo, svg_inked] = darkest(r.svg_drawn);
+        EXPECT_GT(png_inked, 1000u) << c.name;
+        EXPECT_NEAR(png_lo, c.darkest, 2) << c.name;
+        EXPECT_NEAR(svg_lo, c.darkest, 2) << c.name;
+        EXPECT_NEAR(double(svg_inked), double(png_inked), 0.05 * double(png_inked)) << c.name;
+    }
 }
 
 // Under --frames, one SVG per frame beside the given name: lines_0003.svg for frame 3.

@@ -12,6 +12,7 @@
 #include "coherence_splat_vert.h"
 #include "coherence/path_split.h"
 #include "core/error.h"
+#include "gpu/render_target.h"
 
 namespace lw {
 
@@ -423,21 +424,8 @@ void CoherenceTracker::splat_sprites(const std::vector<glm::vec3>& sprites_in, f
                               .dst_stage = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
                               .dst_access = VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT |
                                             VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT});
-        VkRenderingAttachmentInfo attachment{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
-                                             .imageView = splat_image_.view(),
-                                             .imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                                             .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
-                                             .storeOp = VK_ATTACHMENT_STORE_OP_STORE};
         const VkRect2D band{{0, int32_t(splat_first_row_)}, {width_, splat_rows_}};
-        VkRenderingInfo rendering{.sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
-                                  .renderArea = band,
-                                  .layerCount = 1,
-                                  .colorAttachmentCount = 1,
-                                  .pColorAttachments = &attachment};
-        vkCmdBeginRendering(cmd, &rendering);
-        VkViewport viewport{0.0f, 0.0f, float(width_), float(height_), 0.0f, 1.0f};
-        vkCmdSetViewport(cmd, 0, 1, &viewport);
-        vkCmdSetScissor(cmd, 0, 1, &band);
+        begin_color_rendering(cmd, splat_image_, VK_ATTACHMENT_LOAD_OP_CLEAR, band, width_, height_);
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, splat_pipeline_.get());
         const SplatPush push{{float(width_), float(height_)}, radius, 0.0f};
         splat_pipeline_.draw(cmd, sprite_buffer_, 6, &push, sizeof(push), uint32_t(sprite_list.size()));

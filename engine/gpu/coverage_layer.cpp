@@ -1,5 +1,8 @@
 #include "gpu/coverage_layer.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "layer_composite_frag.h"
 #include "layer_composite_vert.h"
 
@@ -12,32 +15,27 @@ CoverageLayer::CoverageLayer(const Context& ctx, uint32_t w, uint32_t h)
                   .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
                   .name = "coverage layer"}) {}
 
-void CoverageLayer::begin(VkCommandBuffer cmd) const {
+VkRect2D pixel_bounds(float lo_x, float lo_y, float hi_x, float hi_y, uint32_t width, uint32_t height) {
+    const auto x0 = uint32_t(std::clamp(std::floor(lo_x), 0.0f, float(width)));
+    const auto y0 = uint32_t(std::clamp(std::floor(lo_y), 0.0f, float(height)));
+    const auto x1 = uint32_t(std::clamp(std::ceil(hi_x), 0.0f, float(width)));
+    const auto y1 = uint32_t(std::clamp(std::ceil(hi_y), 0.0f, float(height)));
+    if (x1 <= x0 || y1 <= y0) return {{0, 0}, {0, 0}};
+    return {{int32_t(x0), int32_t(y0)}, {x1 - x0, y1 - y0}};
+}
+
+void CoverageLayer::begin(VkCommandBuffer cmd, VkRect2D area) {
+    area_ = area;
     // UNDEFINED: the last composite's contents are not needed (the clear replaces them); the
-    // source scope waits for that composite's reads.
+    // source scope waits for that composite's reads and any earlier drawing into the layer.
     record_image_barrier(cmd, image,
                          {.old_layout = VK_IMAGE_LAYOUT_UNDEFINED,
                           .new_layout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                          .src_stage = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                          .src_stage = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
                           .src_access = VK_ACCESS_2_NONE,
                           .dst_stage = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
                           .dst_access = VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT});
-    VkRenderingAttachmentInfo attachment{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
-                                         .imageView = image.view(),
-                                         .imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                                         .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
-                                         .storeOp = VK_ATTACHMENT_STORE_OP_STORE,
-                                         .clearValue = {.color = {.float32 = {0.0f, 0.0f, 0.0f, 0.0f}}}};
-    VkRenderingInfo rendering{.sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
-                              .renderArea = {{0, 0}, {width, height}},
-                              .layerCount = 1,
-                              .colorAttachmentCount = 1,
-                              .pColorAttachments = &attachment};
-    vkCmdBeginRendering(cmd, &rendering);
-    VkViewport viewport{0.0f, 0.0f, float(width), float(height), 0.0f, 1.0f};
-    VkRect2D scissor{{0, 0}, {width, height}};
-    vkCmdSetViewport(cmd, 0, 1, &viewport);
-    vkCmdSetScissor(cmd, 0, 1, &scissor);
+    begin_color_rendering(cmd, image, VK_ATTACHMENT_LOAD_OP_CLEAR, area_, width, height);  // cleared to transparent
 }
 
 void CoverageLayer::end(VkCommandBuffer cmd) const {
@@ -68,6 +66,8 @@ LayerComposite::LayerComposite(const Context& ctx, VkFormat target_format)
 void LayerComposite::record(const Context& ctx, VkCommandBuffer cmd, const RenderTarget& target,
                             const CoverageLayer& layer) const {
     target.begin_overlay(cmd);
+    const VkRect2D area = layer.area();
+    vkCmdSetScissor(cmd, 0, 1, &area);  // the layer holds nothing outside it
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.get());
     pipeline_.push_image(ctx, cmd, 0, layer.image.view(), sampler_.get());
     pipeline_.draw_generated(cmd, 3, nullptr, 0);

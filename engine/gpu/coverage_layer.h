@@ -13,6 +13,9 @@
 // its shapes at one opacity), and the layer draws the union likewise: per channel the larger
 // premultiplied value, so that a pixel covered twice keeps the stronger of its coverages
 // (at a join both are the same coverage of the same pixel; `over` would count it twice).
+// Per channel: where pieces of one set in different colours (colour modifiers) overlap, the
+// pixel takes each channel's larger value (red and blue at one alpha give magenta there),
+// where its SVG shows the piece drawn last.
 #pragma once
 
 #include <cstdint>
@@ -32,11 +35,21 @@ struct CoverageLayer {
     uint32_t width, height;
     Image image;
 
-    // Clears the layer to transparent and begins rendering into it (viewport: the whole
-    // layer); `end` ends it and leaves the image ready for the composite to sample.
-    void begin(VkCommandBuffer cmd) const;
+    // Clears `area` of the layer to transparent and begins rendering there (viewport: the
+    // whole layer; what is drawn must lie in `area`, which the composite alone then reads:
+    // on a CPU device a full-screen clear and composite cost as much as the strokes);
+    // `end` ends it and leaves the image ready for the composite to sample.
+    void begin(VkCommandBuffer cmd, VkRect2D area);
     void end(VkCommandBuffer cmd) const;
+    VkRect2D area() const { return area_; }  // of the last `begin`
+
+private:
+    VkRect2D area_{};
 };
+
+// The whole pixels of the box [lo_x, hi_x] × [lo_y, hi_y] (pixel coordinates) within a
+// width × height image; empty (extent 0) where it misses the image.
+[[nodiscard]] VkRect2D pixel_bounds(float lo_x, float lo_y, float hi_x, float hi_y, uint32_t width, uint32_t height);
 
 // The composite: the layer `over` a target of one colour format (a full-screen triangle
 // reading the layer texel by texel).

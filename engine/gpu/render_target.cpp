@@ -80,20 +80,28 @@ void RenderTarget::set_viewport(VkCommandBuffer cmd) const {
     vkCmdSetScissor(cmd, 0, 1, &scissor);
 }
 
-void RenderTarget::begin_overlay(VkCommandBuffer cmd) const {
-    color_to_attachment(cmd, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+void begin_color_rendering(VkCommandBuffer cmd, const Image& image, VkAttachmentLoadOp load, VkRect2D area,
+                           uint32_t width, uint32_t height, VkClearColorValue clear) {
     VkRenderingAttachmentInfo attachment{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
-                                         .imageView = color.view(),
+                                         .imageView = image.view(),
                                          .imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                                         .loadOp = VK_ATTACHMENT_LOAD_OP_LOAD,
-                                         .storeOp = VK_ATTACHMENT_STORE_OP_STORE};
+                                         .loadOp = load,
+                                         .storeOp = VK_ATTACHMENT_STORE_OP_STORE,
+                                         .clearValue = {.color = clear}};
     VkRenderingInfo rendering{.sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
-                              .renderArea = {{0, 0}, {width, height}},
+                              .renderArea = area,
                               .layerCount = 1,
                               .colorAttachmentCount = 1,
                               .pColorAttachments = &attachment};
     vkCmdBeginRendering(cmd, &rendering);
-    set_viewport(cmd);
+    VkViewport viewport{0.0f, 0.0f, float(width), float(height), 0.0f, 1.0f};
+    vkCmdSetViewport(cmd, 0, 1, &viewport);
+    vkCmdSetScissor(cmd, 0, 1, &area);
+}
+
+void RenderTarget::begin_overlay(VkCommandBuffer cmd) const {
+    color_to_attachment(cmd, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+    begin_color_rendering(cmd, color, VK_ATTACHMENT_LOAD_OP_LOAD, {{0, 0}, {width, height}}, width, height);
 }
 
 void RenderTarget::end_overlay(VkCommandBuffer cmd) const {

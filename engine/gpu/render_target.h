@@ -17,6 +17,13 @@ namespace lw {
 // depth at that count; an error listing the counts it does support otherwise.
 [[nodiscard]] VkSampleCountFlagBits sample_count_bit(const Context& ctx, uint32_t samples);
 
+// Begins dynamic rendering into one colour image (in COLOR_ATTACHMENT_OPTIMAL) over `area`,
+// loading it or clearing it to `clear`, with the viewport over the whole width × height image
+// and the scissor on `area`: what every single-attachment pass (overlays, layers, splats)
+// starts with.
+void begin_color_rendering(VkCommandBuffer cmd, const Image& image, VkAttachmentLoadOp load, VkRect2D area,
+                           uint32_t width, uint32_t height, VkClearColorValue clear = {});
+
 struct RenderTarget {
     // `color_format`: R8G8B8A8_UNORM (what PNGs get), or B8G8R8A8_UNORM for a viewer whose
     // swapchain has that format (the frame then reaches it by a copy instead of a blit).

@@ -8,9 +8,10 @@
 //     (fades as `fill-opacity`), nonzero fill; what standard renderers (browsers, Inkscape,
 //     rsvg) draw as the PNG shows it, up to antialiasing and the SLAM texture, which SVG has
 //     no way to carry (textured strokes are drawn in their solid ink). A translucent set
-//     (alpha < 1) has its alpha as the group's `opacity` and its shapes' opacities relative
-//     to it: a group is composited once, as the PNG draws such a set (gpu/coverage_layer.h),
-//     so that where its shapes overlap they do not blend twice;
+//     (alpha < 1 or alpha modifiers) has its most opaque shape's alpha as the group's
+//     `opacity` and its shapes' opacities relative to it: a group is composited once, as
+//     the PNG draws such a set (gpu/coverage_layer.h), so that where its shapes overlap they
+//     do not blend twice;
 //   - `<g id=NAME-hidden>` inside it when the set draws hidden lines: their shapes in their
 //     look (faint: a quarter of the opacity; dashed: the dashes as shapes);
 //   - `<g id=NAME-centerlines display="none">` after it: one `<polyline>` per visible path
@@ -33,7 +34,7 @@ struct SvgGroup {
     std::string id;
     glm::vec3 color{0.0f};
     float width = 1.0f;
-    float opacity = 1.0f;  // the set's alpha: the shapes' alpha is divided by it
+    float opacity = 1.0f;  // the group's, for a set drawn once: the shapes' alpha is divided by it
     const std::vector<ScreenPath>* paths = nullptr;  // the set's paths (null: none)
     // The set's strokes as the renderer builds them without the coverage margin (triangles
     // with per-vertex colour and alpha), visible and hidden runs apart.

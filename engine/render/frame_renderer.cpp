@@ -39,6 +39,8 @@ void append_set_strokes(const LineSetFrame& out, const LineSetDesc& set, float m
 // A set's strokes as record_sets draws them, without the coverage margin: the line pass's
 // look for plain sets (dashes cut as geometry), the styled builder's for the others (a SLAM
 // set in its solid ink). Ribbons are synthesized as images and have none.
+// A set drawn once (draws_once) is a group of the opacity of its most opaque shape, which
+// the renderer composites once as the PNG does; the shapes' opacities are relative to it.
 void add_svg_shapes(const LinesDesc& lines, const LineSetDesc& set, const LineSetFrame& out, SvgGroup& group) {
     if (!set.style.ribbon.empty()) return;
     if (is_plain_line_set(set.style)) {
@@ -46,9 +48,14 @@ void add_svg_shapes(const LinesDesc& lines, const LineSetDesc& set, const LineSe
         for (const ScreenPath& path : out.paths)
             for (const StrokeVertex& v : line_triangles({path}, style, 0.0f, true))
                 (path.visible ? group.shapes : group.hidden_shapes).push_back(v);
-        return;
+    } else {
+        append_set_strokes(out, set, 0.0f, group.shapes, group.hidden_shapes);
     }
-    append_set_strokes(out, set, 0.0f, group.shapes, group.hidden_shapes);
+    if (!draws_once(set.style)) return;
+    float most = 0.0f;
+    for (const auto* shapes : {&group.shapes, &group.hidden_shapes})
+        for (const StrokeVertex& v : *shapes) most = std::max(most, std::clamp(v.color.a, 0.0f, 1.0f));
+    group.opacity = most;
 }
 
 // Smooth contours and suggestive contours are drawn as rtsc defines them: contours only where
@@ -73,11 +80,7 @@ std::string inside_out_warning(const ClosedSurfaces& closed) {
 std::vector<SvgGroup> line_set_svg_groups(const LinesDesc& lines, const Frame& frame, bool with_shapes) {
     std::vector<SvgGroup> groups;
     const std::vector<LineSetDesc> sets = effective_line_sets(lines);
-    // A translucent set's alpha is its group's opacity, as its PNG composites it once; a
-    // ribbon set is drawn as an image, not by its alpha.
-    for (const LineSetDesc& set : sets)
-        groups.push_back({.id = set.name, .color = set.style.color, .width = set.style.width,
-                          .opacity = set.style.ribbon.empty() ? std::clamp(set.style.alpha, 0.0f, 1.0f) : 1.0f});
+    for (const LineSetDesc& set : sets) groups.push_back({.id = set.name, .color = set.style.color, .width = set.style.width});
     for (const LineSetFrame& out : frame.sets) {
         groups[out.set].paths = &out.paths;
         if (with_shapes) add_svg_shapes(lines, sets[out.set], out, groups[out.set]);
@@ -437,10 +440,11 @@ void FrameRenderer::record_sets(VkCommandBuffer cmd, RenderTarget& target, const
         if (!set.style.ribbon.empty()) continue;
         const bool styled = !strokes[out.set].empty(), plain = is_plain_line_set(set.style) && !state.texture;
         if (!styled && !plain) continue;
+        if (set.style.alpha <= 0.0f && set.style.alpha_modifiers.empty()) continue;  // invisible
         // A translucent set covers each pixel once, however its strokes overlap (the union
         // its SVG draws): into the layer, then the layer over the frame.
-        const CoverageLayer* layer = nullptr;
-        if (set.style.alpha < 1.0f) {
+        CoverageLayer* layer = nullptr;
+        if (draws_once(set.style)) {
             if (!set_layer_ || set_layer_->width != target.width || set_layer_->height != target.height)
                 set_layer_.emplace(*ctx_, target.width, target.height);
             if (!composite_) composite_ = std::make_unique<LayerComposite>(*ctx_, target.color.format());

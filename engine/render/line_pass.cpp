@@ -13,26 +13,6 @@ namespace lw {
 
 namespace {
 
-struct LineDrawPush {  // mirrors shaders/lines_draw.vert
-    glm::vec2 viewport;
-    float dash_period;
-    float premultiplied;
-};
-
-GraphicsPipelineDesc line_pipeline_desc(VkFormat color_format, BlendMode blend) {
-    return {.vertex_spirv = LW_SPIRV(lines_draw_vert_spv),
-            .fragment_spirv = LW_SPIRV(lines_draw_frag_spv),
-            .vertex_stride = sizeof(StrokeVertex),
-            .attributes = stroke_vertex_attributes(),
-            .color_format = color_format,
-            .depth_format = VK_FORMAT_UNDEFINED,
-            .depth_test = false,
-            .depth_write = false,
-            .blend = blend,
-            .push_constant_size = sizeof(LineDrawPush),
-            .name = blend == BlendMode::Max ? "lines draw (coverage layer)" : "lines draw"};
-}
-
 // Indices of the samples to draw through (greedy: extend the current straight piece while
 // every skipped sample lies within `tolerance` px of it and alpha stays within 0.05).
 std::vector<size_t> simplify(const ScreenPath& path, float tolerance = 0.25f) {
@@ -104,21 +84,15 @@ std::vector<StrokeVertex> line_triangles(const std::vector<ScreenPath>& paths, c
 }
 
 LinePass::LinePass(const Context& ctx, VkFormat color_format)
-    : pipeline_(ctx, line_pipeline_desc(color_format, BlendMode::Alpha)) {}
+    : draw_(ctx,
+            {.vertex_spirv = LW_SPIRV(lines_draw_vert_spv), .fragment_spirv = LW_SPIRV(lines_draw_frag_spv),
+             .name = "lines draw"},
+            color_format) {}
 
 bool LinePass::record(const Context& ctx, VkCommandBuffer cmd, RenderTarget& target, const std::vector<ScreenPath>& paths,
-                      const LineDrawStyle& style, UploadArena& arena, const CoverageLayer* layer) const {
-    const std::vector<StrokeVertex> vertices = line_triangles(paths, style, kCoverageMarginPx, false);
-    if (vertices.empty()) return false;
-    const UploadArena::Slice buffer = arena.push(ctx, std::as_bytes(std::span(vertices)));
-    if (layer && !layer_pipeline_) layer_pipeline_.emplace(ctx, line_pipeline_desc(CoverageLayer::kFormat, BlendMode::Max));
-    const GraphicsPipeline& pipeline = layer ? *layer_pipeline_ : pipeline_;
-    layer ? layer->begin(cmd) : target.begin_overlay(cmd);
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.get());
-    const LineDrawPush push{{float(target.width), float(target.height)}, kDashPeriodPx, layer ? 1.0f : 0.0f};
-    pipeline.draw(cmd, buffer, static_cast<uint32_t>(vertices.size()), &push, sizeof(push));
-    layer ? layer->end(cmd) : target.end_overlay(cmd);
-    return true;
+                      const LineDrawStyle& style, UploadArena& arena, CoverageLayer* layer) const {
+    return draw_.record(ctx, cmd, target, line_triangles(paths, style, kCoverageMarginPx, false), kDashPeriodPx, arena,
+                        layer);
 }
 
 }  // namespace lw

@@ -5,7 +5,8 @@
 //         (dashed or faint, the scene's "hidden"; plain for sets that select hidden lines).
 // Output: the paths composited (alpha blended, fade alpha per sample, antialiased) into the
 //         render target's colour image, which is left in TRANSFER_SRC_OPTIMAL as the surface
-//         pass leaves it.
+//         pass leaves it; or, for a translucent set, drawn into a coverage layer
+//         (gpu/coverage_layer.h) whose composite then draws them once.
 //
 // This is the plain line look of the feature-lines stage: flat strokes of the type's width
 // along each run, mitre joins and square caps, built by the stroke builder
@@ -14,7 +15,6 @@
 #pragma once
 
 #include <array>
-#include <optional>
 #include <vector>
 
 #include "gpu/context.h"
@@ -24,6 +24,7 @@
 #include "render/surface_pass.h"
 #include "scene/style.h"
 #include "stroke/stroke_geometry.h"
+#include "stroke/stroke_pass.h"
 
 namespace lw {
 
@@ -54,12 +55,10 @@ public:
     // it (begun and ended here) for a composite that draws them once, instead of over the
     // target. False: nothing to draw (nothing recorded).
     bool record(const Context& ctx, VkCommandBuffer cmd, RenderTarget& target, const std::vector<ScreenPath>& paths,
-                const LineDrawStyle& style, UploadArena& arena, const CoverageLayer* layer = nullptr) const;
+                const LineDrawStyle& style, UploadArena& arena, CoverageLayer* layer = nullptr) const;
 
 private:
-    GraphicsPipeline pipeline_;
-    // Into a coverage layer: made at the first translucent set (most frames have none).
-    mutable std::optional<GraphicsPipeline> layer_pipeline_;
+    StrokeDrawPipelines draw_;
 };
 
 }  // namespace lw

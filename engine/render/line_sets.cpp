@@ -91,6 +91,8 @@ bool is_plain_line_set(const LineSetStyle& style) {
            style.geometry.empty() && style.cap == Cap::Square && style.join == Join::Mitre;
 }
 
+bool draws_once(const LineSetStyle& style) { return style.alpha < 1.0f || !style.alpha_modifiers.empty(); }
+
 bool needs_parameterization(const LineSetStyle& style) {
     if (!style.slam.empty() || !style.dashes.empty()) return true;
     return std::any_of(style.geometry.begin(), style.geometry.end(), [](const GeometryModifier& m) {

@@ -49,6 +49,10 @@ struct FaceGroups {
 // modifiers, or caps and joins other than the line pass's own.
 [[nodiscard]] bool is_plain_line_set(const LineSetStyle& style);
 
+// Sets drawn once through a coverage layer (gpu/coverage_layer.h), so that their own overlaps
+// do not blend twice: translucent ones (alpha under 1, or alpha modifiers).
+[[nodiscard]] bool draws_once(const LineSetStyle& style);
+
 // Sets whose look depends on a parameter along the stroke (SLAM, dashes, sinus, noise).
 [[nodiscard]] bool needs_parameterization(const LineSetStyle& style);
 
