@@ -108,6 +108,7 @@ void write_fixtures(const fs::path& tmp) {
     write(tmp / "afterz.svg", R"(<svg><path d="M0 0 L5 5 Z 3 4" stroke="black"/></svg>)");
     write(tmp / "unclosed.svg", "<svg><path d=\"M0 0 L5 5\">\n</svg>");
     write(tmp / "text.svg", "<svg><text x=\"1\" y=\"1\">words</text></svg>");
+    write(tmp / "twocurves.svg", R"(<svg><path d="M0 0 L50 0"/><path d="M0 10 L50 10"/></svg>)");
     write(tmp / "strokeskey.json", R"({"strokes": [], "colour": 1})");
     const auto small = test::run_linework("ribbon-exemplar beads -o " + test::quote(tmp / "small.png") + " --size 16x16");
     ASSERT_EQ(small.exit_code, 0) << small.output;

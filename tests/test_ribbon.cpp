@@ -79,6 +79,34 @@ TEST(RibbonCurve, ParsesSvgPathSubset) {
     EXPECT_THROW((void)parse_curve_svg("<svg></svg>", "c.svg"), Error);
 }
 
+// An SVG curve is read as a drawing is: transforms of the element and its groups applied, a
+// basic shape taken as its outline, paint ignored (stroked or not); two curves, as elements
+// or as subpaths, are refused (the first had been taken in silence, transforms dropped).
+TEST(RibbonCurve, SvgCurvesAreReadAsDrawn) {
+    const Curve2D moved = parse_curve_svg(
+        R"s(<svg><g transform="translate(100 50)"><path d="M 0 0 L 10 0" transform="scale(2)" fill="none"/></g></svg>)s",
+        "t.svg");
+    ASSERT_EQ(moved.points.size(), 2u);
+    EXPECT_EQ(moved.points[0], glm::vec2(100, 50));
+    EXPECT_EQ(moved.points[1], glm::vec2(120, 50));
+    const Curve2D circle = parse_curve_svg(R"s(<svg><circle cx="50" cy="40" r="20" stroke="none" fill="red"/></svg>)s", "c.svg");
+    EXPECT_TRUE(circle.closed);
+    ASSERT_GT(circle.points.size(), 16u);
+    for (const glm::vec2& p : circle.points) EXPECT_NEAR(glm::length(p - glm::vec2(50, 40)), 20.0f, 1e-3f);
+    const Curve2D hidden_other =
+        parse_curve_svg(R"s(<svg><defs><path id="d" d="M0 0 L1 1"/></defs><polyline points="0,0 5,5 9,0"/></svg>)s", "h.svg");
+    EXPECT_EQ(hidden_other.points.size(), 3u) << "a <defs> element is not drawn";
+    for (const char* two : {R"s(<svg><path d="M0 0 L5 0"/><path d="M0 5 L5 5"/></svg>)s",
+                            R"s(<svg><path d="M0 0 L5 0 M0 5 L5 5"/></svg>)s"}) {
+        try {
+            (void)parse_curve_svg(two, "two.svg");
+            ADD_FAILURE() << "accepted " << two;
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find("two.svg: 2 curves"), std::string::npos) << e.what();
+        }
+    }
+}
+
 TEST(RibbonCurve, ArclengthAndResampling) {
     Curve2D circle;
     for (int i = 0; i < 256; ++i) {

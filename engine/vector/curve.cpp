@@ -12,7 +12,6 @@
 #include "core/text.h"
 #include "vector/json_object.h"
 #include "vector/vector_file.h"
-#include "vector/xml.h"
 
 namespace lw {
 
@@ -194,16 +193,6 @@ Curve2D parse_svg_path_data(const std::string& d, const std::string& where) {
     if (subpaths.empty() || subpaths[0].points.size() < 2)
         throw Error(where + ": path data: at least two points are needed");
     return std::move(subpaths[0]);
-}
-
-Curve2D parse_curve_svg(const std::string& svg, const std::string& where) {
-    const auto doc = parse_xml(svg, where);
-    if (std::string(doc->document_element().name()) != "svg") throw Error(where + ": no <svg> element");
-    const pugi::xml_node path = doc->document_element().find_node(
-        [](const pugi::xml_node& n) { return std::string(n.name()) == "path"; });
-    if (!path) throw Error(where + ": no <path> element");
-    if (!path.attribute("d")) throw Error(where + ": the <path> element has no d attribute");
-    return parse_svg_path_data(path.attribute("d").as_string(), where);
 }
 
 Curve2D load_curve(const std::filesystem::path& path) {

@@ -5,10 +5,11 @@
 // Input:  a polyline in output pixels (x right, y down), open or closed, from
 //         - JSON: {"points": [[x, y], ...], "closed": bool}  ("closed" optional, default false;
 //           any other key is an error naming it), or
-//         - SVG: the first <path d="…"> of a file (read with pugixml), commands M/L/H/V/C/S/Q/T/Z
-//           and their relative forms, one subpath (Béziers are flattened to pieces under
-//           1 px of chord).
-//           Transforms are not applied.
+//         - SVG: one drawn element, read as the stroke reader reads a drawing
+//           (vector/svg_reader.cpp: groups, transforms, <use>, a <path> of commands
+//           M/L/H/V/C/S/Q/T/Z and their relative forms with Béziers flattened to pieces under
+//           1 px of chord, or a basic shape), paint aside; a file of several curves (elements
+//           or subpaths) or none is an error.
 // Output: `Curve2D`; `ArclengthCurve` evaluates C(x), x ∈ [0, L], and the unit tangent, as
 //         the paper assumes (Zhou et al. 2013, §1.1: "a curve parameterized in arc length").
 //
@@ -32,7 +33,7 @@ struct Curve2D {
 [[nodiscard]] Curve2D load_curve(const std::filesystem::path& path);
 // The same from text; `where` names the source in error messages.
 [[nodiscard]] Curve2D parse_curve_json(const std::string& text, const std::string& where);
-[[nodiscard]] Curve2D parse_curve_svg(const std::string& svg_text, const std::string& where);
+[[nodiscard]] Curve2D parse_curve_svg(const std::string& svg_text, const std::string& where);  // svg_reader.cpp
 // Parses one SVG path's `d` attribute that holds exactly one subpath.
 [[nodiscard]] Curve2D parse_svg_path_data(const std::string& d, const std::string& where);
 // Every subpath of a `d` attribute (M starts one; Z closes it; drawing on after Z starts a new

@@ -178,7 +178,10 @@ void append_arc(std::vector<glm::vec2>& out, glm::dvec2 centre, glm::dvec2 radii
 
 class Reader {
 public:
-    Reader(const pugi::xml_document& doc, std::string where) : where_(std::move(where)) {
+    // `geometry_only`: a curve file's reading, where paint means nothing (an unstroked path
+    // is a curve as well as a stroked one).
+    Reader(const pugi::xml_document& doc, std::string where, bool geometry_only = false)
+        : where_(std::move(where)), geometry_only_(geometry_only) {
         for (const pugi::xpath_node& n : doc.select_nodes("//*[@id]")) ids_.emplace(n.node().attribute("id").as_string(), n.node());
         for (const pugi::xpath_node& n : doc.select_nodes("//*[local-name()='style']"))
             style_sheet_ |= !trim(n.node().child_value()).empty() || !trim(n.node().text().as_string()).empty();
@@ -316,11 +319,14 @@ private:
     void draw(const pugi::xml_node& node, const Context& c, StrokeSet& set) {
         const std::string w = what(node);
         std::vector<Curve2D> curves = curves_of(node, max_stretch(c.transform));
-        if (lower(trim(c.stroke)) == "none")
+        if (!geometry_only_ && lower(trim(c.stroke)) == "none")
             throw Error(where_ + ": " + w + ": stroke=\"none\": only stroked elements are strokes");
-        const glm::vec3 color = c.stroke.empty() ? glm::vec3(0.0f) : parse_color(c.stroke, where_ + ": " + w);
+        const glm::vec3 color =
+            c.stroke.empty() || geometry_only_ ? glm::vec3(0.0f) : parse_color(c.stroke, where_ + ": " + w);
         const double scale = std::sqrt(std::abs(glm::determinant(glm::dmat2(c.transform))));
-        const double width = c.stroke_width.empty() ? 1.0 : parse_length(c.stroke_width, where_, w + " stroke-width");
+        const double width = c.stroke_width.empty() || geometry_only_
+                                 ? 1.0
+                                 : parse_length(c.stroke_width, where_, w + " stroke-width");
         std::vector<Stroke> out;
         for (Curve2D& curve : curves) {
             for (glm::vec2& p : curve.points) p = glm::vec2(c.transform * glm::dvec3(p, 1.0));
@@ -347,6 +353,7 @@ private:
     }
 
     std::string where_;
+    bool geometry_only_ = false;
     std::map<std::string, pugi::xml_node> ids_;
     size_t index_ = 0;  // drawn elements so far, for "<path> #3" in errors
     size_t points_ = 0;
@@ -355,7 +362,9 @@ private:
 
 }  // namespace
 
-StrokeSet parse_strokes_svg(const std::string& text, const std::string& where) {
+namespace {
+
+StrokeSet read_svg(const std::string& text, const std::string& where, bool geometry_only) {
     const auto doc = parse_xml(text, where);
     const pugi::xml_node root = doc->document_element();
     if (std::string(root.name()) != "svg") throw Error(where + ": no <svg> element");
@@ -369,8 +378,26 @@ StrokeSet parse_strokes_svg(const std::string& text, const std::string& where) {
         set.size = {float(parse_length(root.attribute("width").as_string(), where, "<svg> width")),
                     float(parse_length(root.attribute("height").as_string(), where, "<svg> height"))};
     }
-    Reader(*doc, where).walk(root, Context{}, set);
+    Reader(*doc, where, geometry_only).walk(root, Context{}, set);
     return set;
+}
+
+}  // namespace
+
+StrokeSet parse_strokes_svg(const std::string& text, const std::string& where) { return read_svg(text, where, false); }
+
+// A curve file is read as a drawing is (transforms, shapes, <use>), and must hold one curve:
+// which of several to follow is not ours to guess.
+Curve2D parse_curve_svg(const std::string& text, const std::string& where) {
+    StrokeSet set = read_svg(text, where, true);
+    if (set.strokes.empty()) throw Error(where + ": no drawn element (a <path>, <polyline>, <circle>, … holding the curve)");
+    if (set.strokes.size() > 1)
+        throw Error(where + ": " + std::to_string(set.strokes.size()) +
+                    " curves (drawn elements, or subpaths of a <path>): a curve file holds one curve; keep the one "
+                    "to follow");
+    Stroke& s = set.strokes.front();
+    if (s.points.size() < 2) throw Error(where + ": the curve needs at least two points");
+    return Curve2D{.points = std::move(s.points), .closed = s.closed};
 }
 
 }  // namespace lw

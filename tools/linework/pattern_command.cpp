@@ -111,7 +111,8 @@ Runner add_pattern_command(CLI::App& app) {
         ->check(output_file());
     cmd->add_option("--path", o->path,
                     "Synthesize along this path (1D): JSON {\"points\": [[x, y], ...], \"closed\": bool} or an SVG\n"
-                    "file whose first <path> is the curve (commands M, L, H, V, C, S, Q, T, Z; as for `linework ribbon --curve`)");
+                    "file of one curve: a <path> (commands M, L, H, V, C, S, Q, T, Z), polyline or basic shape, transforms\n"
+                    "applied (as for `linework ribbon --curve`)");
     cmd->add_option("--region", o->region, "Synthesize inside this region (2D): a curve file as for --path, read as a polygon");
     cmd->add_option("--ref-path", o->ref_path,
                     "The reference's own path (default: the long midline of its bounding box)");

@@ -198,7 +198,8 @@ Runner add_ribbon_command(CLI::App& app) {
         ->required();
     cmd->add_option("--curve", o->curve,
                     "Curve in output pixels: JSON {\"points\": [[x, y], ...], \"closed\": bool} or an SVG\n"
-                    "file whose first <path> is the curve (commands M, L, H, V, C, S, Q, T, Z)")
+                    "file of one curve: a <path> (commands M, L, H, V, C, S, Q, T, Z), polyline or basic shape, transforms\n"
+                    "applied")
         ->required();
     cmd->add_option("-o,--output", o->output, "Output PNG")->required()->check(output_file(".png"));
     cmd->add_flag("--closed", o->closed, "Close the curve: the last piece connects back to the first (§1.5)");
