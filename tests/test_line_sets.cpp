@@ -1,6 +1,7 @@
 // tests/test_line_sets.cpp — line sets and the scene session: each set keeps its own texture
 // period, dashes follow the parameterization, `render` and the viewer's code path give the
 // same frame, and a bad "line_sets" key is an error naming it.
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
@@ -252,6 +253,37 @@ TEST(LineSets, AModelNameTwoModelsShareIsRefused) {
         EXPECT_NE(message.find((dir / "b/m.glb").string()), std::string::npos) << message;
     }
     EXPECT_TRUE(ctx.validation_messages().empty());
+}
+
+// Keys read but changing nothing are said on stderr, once, naming the file and the keys: the
+// per-type styles under "lines" beside "line_sets", and a ribbon set's stroke keys. A scene
+// written back (the viewer's F5, Python's configure), which carries them at their defaults,
+// says nothing.
+TEST(LineSets, KeysThatChangeNothingAreSaid) {
+    const fs::path dir = test::temp_dir();
+    testing::internal::CaptureStderr();
+    const SceneDesc desc = parse_scene_json(R"({"model": "m.glb",
+        "lines": {"silhouette": {"width": 5}, "suggestive": {"threshold": 0.05}},
+        "line_sets": [{"name": "r", "style": {"ribbon": "chain.png", "alpha": 0.5, "dashes": [4, 2]}},
+                      {"name": "s", "style": {"width": 3}}]})",
+                                            dir / "in.json");
+    const std::string said = testing::internal::GetCapturedStderr();
+    EXPECT_NE(said.find("in.json: lines.silhouette: width, color, slam, taper and ribbon style the per-type shorthand; "
+                        "beside \"line_sets\" they change nothing"),
+              std::string::npos)
+        << said;
+    EXPECT_EQ(said.find("lines.suggestive"), std::string::npos) << "a threshold applies beside sets: " << said;
+    EXPECT_NE(said.find("in.json: line_sets[0].style: alpha, dashes: a ribbon set draws its exemplar"), std::string::npos)
+        << said;
+    EXPECT_EQ(std::count(said.begin(), said.end(), '\n'), 2) << said;
+
+    SceneDesc plain = desc;
+    plain.lines.styles = LinesDesc{}.styles;
+    plain.lines.sets[0].style.alpha = 1.0f;
+    plain.lines.sets[0].style.dashes.clear();
+    testing::internal::CaptureStderr();
+    (void)parse_scene_json(scene_json(plain, ViewCamera{}, dir), dir / "out.json");
+    EXPECT_EQ(testing::internal::GetCapturedStderr(), "") << "a written scene reads back in silence";
 }
 
 // The viewer's "save view" writes the line sets back: reading the saved scene gives the same

@@ -194,6 +194,27 @@ void read_shape(ObjectReader& r, LineSetStyle& style) {
     }
 }
 
+// A ribbon set draws its exemplar along the paths (engine/ribbon): the stroke builder's keys
+// change nothing there. Scenes written by earlier builds carry them at their defaults, which
+// are not mentioned.
+void warn_stroke_keys_of_ribbon_set(const ObjectReader& r, const LineSetStyle& style) {
+    const LineSetStyle plain;
+    std::string keys;
+    const auto note = [&](bool differs, const char* key) {
+        if (differs) keys += (keys.empty() ? "" : ", ") + std::string(key);
+    };
+    note(style.alpha != plain.alpha, "alpha");
+    note(style.cap != plain.cap || style.join != plain.join, "cap/join");
+    note(style.taper_in_px != plain.taper_in_px || style.taper_out_px != plain.taper_out_px, "taper");
+    note(!style.dashes.empty(), "dashes");
+    note(!style.width_modifiers.empty() || !style.alpha_modifiers.empty() || !style.color_modifiers.empty(),
+         "modifiers");
+    note(!style.geometry.empty(), "geometry");
+    if (!keys.empty())
+        r.warn(keys + ": a ribbon set draws its exemplar along the paths, and these stroke keys change nothing "
+                      "(width and ribbon_scale size the ribbon; color colours the SVG's centre lines)");
+}
+
 LineSetStyle read_style(ObjectReader& set, const std::filesystem::path& file) {
     LineSetStyle style;
     if (!set.has("style")) return style;
@@ -225,6 +246,7 @@ LineSetStyle read_style(ObjectReader& set, const std::filesystem::path& file) {
         c.reject_unknown();
     }
     r.reject_unknown();
+    if (!style.ribbon.empty()) warn_stroke_keys_of_ribbon_set(r, style);
     return style;
 }
 

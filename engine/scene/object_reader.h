@@ -13,6 +13,7 @@
 
 #include "core/color.h"
 #include "core/error.h"
+#include "core/log.h"
 
 namespace lw::scene_detail {
 
@@ -51,6 +52,11 @@ public:
     }
     [[noreturn]] void fail(const std::string& problem) const {
         throw Error(file_.string() + ": " + (where_.empty() ? "" : where_ + ": ") + problem);
+    }
+    // A key that is read but changes nothing where it is (kept for files written before it
+    // did): said, not refused.
+    void warn(const std::string& problem) const {
+        log_warning(file_.string() + ": " + (where_.empty() ? "" : where_ + ": ") + problem);
     }
 
     double number(const std::string& key, double lo, double hi) {

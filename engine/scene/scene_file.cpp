@@ -188,6 +188,23 @@ LineStyle read_line_type(ObjectReader& lines, LineType type, const std::filesyst
     return style;
 }
 
+// Beside "line_sets" the per-type styles under "lines" draw nothing (each set has its own
+// style); their thresholds still apply. Scenes written by earlier builds carry the styles at
+// their defaults, which are not mentioned.
+void warn_per_type_styles_beside_sets(const ObjectReader& scene, const LinesDesc& lines) {
+    const LinesDesc defaults;
+    std::string types;
+    for (int t = 0; t < kLineTypeCount; ++t) {
+        const LineStyle &s = lines.styles[size_t(t)], &d = defaults.styles[size_t(t)];
+        if (s.width != d.width || s.color != d.color || s.slam != d.slam || s.taper_px != d.taper_px ||
+            s.ribbon != d.ribbon || s.ribbon_scale != d.ribbon_scale)
+            types += (types.empty() ? "lines." : ", lines.") + std::string(line_type_name(LineType(t)));
+    }
+    if (!types.empty())
+        scene.warn(types + ": width, color, slam, taper and ribbon style the per-type shorthand; beside \"line_sets\" "
+                           "they change nothing (style each set in its \"style\"; thresholds still apply)");
+}
+
 LinesDesc read_lines(ObjectReader& parent, const std::filesystem::path& file) {
     LinesDesc desc;
     const json& v = parent.at("lines");
@@ -418,6 +435,7 @@ SceneDesc parse_scene_json(const std::string& text, const std::filesystem::path&
         // itself, so beside "line_sets" they would change nothing.
         if (scene.lines.hidden != HiddenLines::None || scene.lines.hidden_levels > 0)
             r.fail_key("lines.hidden", std::string(kHiddenBesideLineSets));
+        warn_per_type_styles_beside_sets(r, scene.lines);
     }
     r.reject_unknown();
     return scene;
