@@ -263,17 +263,20 @@ TEST(LineSets, KeysThatChangeNothingAreSaid) {
     const fs::path dir = test::temp_dir();
     testing::internal::CaptureStderr();
     const SceneDesc desc = parse_scene_json(R"({"model": "m.glb",
-        "lines": {"silhouette": {"width": 5}, "suggestive": {"threshold": 0.05}},
-        "line_sets": [{"name": "r", "style": {"ribbon": "chain.png", "alpha": 0.5, "dashes": [4, 2]}},
+        "lines": {"silhouette": {"width": 5}, "suggestive": {"threshold": 0.05}, "crease": {"enabled": false}},
+        "line_sets": [{"name": "r", "style": {"ribbon": "chain.png", "alpha": 0.5, "dashes": [4, 2], "taper_in": 3,
+                                              "cap": "square"}},
                       {"name": "s", "style": {"width": 3}}]})",
                                             dir / "in.json");
     const std::string said = testing::internal::GetCapturedStderr();
-    EXPECT_NE(said.find("in.json: lines.silhouette: width, color, slam, taper and ribbon style the per-type shorthand; "
-                        "beside \"line_sets\" they change nothing"),
+    EXPECT_NE(said.find("in.json: lines.silhouette: width; lines.crease: enabled: beside \"line_sets\" a type's "
+                        "switch and style under \"lines\" change nothing"),
               std::string::npos)
         << said;
     EXPECT_EQ(said.find("lines.suggestive"), std::string::npos) << "a threshold applies beside sets: " << said;
-    EXPECT_NE(said.find("in.json: line_sets[0].style: alpha, dashes: a ribbon set draws its exemplar"), std::string::npos)
+    // The keys as written ("cap" at its default is not named).
+    EXPECT_NE(said.find("in.json: line_sets[0].style: alpha, taper_in, dashes: a ribbon set draws its exemplar"),
+              std::string::npos)
         << said;
     EXPECT_EQ(std::count(said.begin(), said.end(), '\n'), 2) << said;
 
@@ -281,6 +284,8 @@ TEST(LineSets, KeysThatChangeNothingAreSaid) {
     plain.lines.styles = LinesDesc{}.styles;
     plain.lines.sets[0].style.alpha = 1.0f;
     plain.lines.sets[0].style.dashes.clear();
+    plain.lines.sets[0].style.taper_in_px = 0.0f;
+    plain.lines.params = LinesDesc{}.params;
     testing::internal::CaptureStderr();
     (void)parse_scene_json(scene_json(plain, ViewCamera{}, dir), dir / "out.json");
     EXPECT_EQ(testing::internal::GetCapturedStderr(), "") << "a written scene reads back in silence";

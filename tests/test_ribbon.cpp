@@ -96,6 +96,30 @@ TEST(RibbonCurve, SvgCurvesAreReadAsDrawn) {
     const Curve2D hidden_other =
         parse_curve_svg(R"s(<svg><defs><path id="d" d="M0 0 L1 1"/></defs><polyline points="0,0 5,5 9,0"/></svg>)s", "h.svg");
     EXPECT_EQ(hidden_other.points.size(), 3u) << "a <defs> element is not drawn";
+    // The viewBox onto the page: twice the size, and millimetres (Inkscape's documents), and
+    // centred by the default xMidYMid meet where the aspects differ.
+    const Curve2D doubled = parse_curve_svg(
+        R"s(<svg width="400" height="300" viewBox="0 0 200 150"><path d="M 20,75 L 180,75"/></svg>)s", "vb.svg");
+    EXPECT_EQ(doubled.points.front(), glm::vec2(40, 150));
+    EXPECT_EQ(doubled.points.back(), glm::vec2(360, 150));
+    const Curve2D mm = parse_curve_svg(
+        R"s(<svg width="100mm" height="75mm" viewBox="0 0 100 75"><path d="M 0,0 L 100,0"/></svg>)s", "mm.svg");
+    EXPECT_NEAR(mm.points.back().x, 100.0f * 96.0f / 25.4f, 1e-3f);
+    const Curve2D meet = parse_curve_svg(
+        R"s(<svg width="400" height="100" viewBox="10 0 100 100"><path d="M 10,0 L 110,100"/></svg>)s", "meet.svg");
+    EXPECT_EQ(meet.points.front(), glm::vec2(150, 0));
+    EXPECT_EQ(meet.points.back(), glm::vec2(250, 100));
+    // What draws nothing is no curve: a hidden element (a visible child of a hidden group is
+    // drawn), a label.
+    const Curve2D one = parse_curve_svg(R"s(<svg><g visibility="hidden"><path d="M0 0 L5 0"/>
+        <path style="visibility: visible" d="M0 5 L9 5"/></g><text x="1" y="1">label</text></svg>)s", "v.svg");
+    EXPECT_EQ(one.points.back(), glm::vec2(9, 5));
+    try {
+        (void)parse_curve_svg(R"s(<svg><path d="M0 0 L5 5" transform="matrix(0 0 0 0 0 0)"/></svg>)s", "flat.svg");
+        ADD_FAILURE() << "a degenerate transform was taken";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("flat.svg: <path> #1: its transform is degenerate"), std::string::npos) << e.what();
+    }
     for (const char* two : {R"s(<svg><path d="M0 0 L5 0"/><path d="M0 5 L5 5"/></svg>)s",
                             R"s(<svg><path d="M0 0 L5 0 M0 5 L5 5"/></svg>)s"}) {
         try {

@@ -196,22 +196,28 @@ void read_shape(ObjectReader& r, LineSetStyle& style) {
 
 // A ribbon set draws its exemplar along the paths (engine/ribbon): the stroke builder's keys
 // change nothing there. Scenes written by earlier builds carry them at their defaults, which
-// are not mentioned.
-void warn_stroke_keys_of_ribbon_set(const ObjectReader& r, const LineSetStyle& style) {
+// are not mentioned; the others are named as written.
+void warn_stroke_keys_of_ribbon_set(ObjectReader& r, const LineSetStyle& style) {
     const LineSetStyle plain;
     std::string keys;
-    const auto note = [&](bool differs, const char* key) {
-        if (differs) keys += (keys.empty() ? "" : ", ") + std::string(key);
+    const auto note = [&](bool differs, std::initializer_list<const char*> names) {
+        if (!differs) return;
+        for (const char* key : names)
+            if (r.has(key)) keys += (keys.empty() ? "" : ", ") + std::string(key);
     };
-    note(style.alpha != plain.alpha, "alpha");
-    note(style.cap != plain.cap || style.join != plain.join, "cap/join");
-    note(style.taper_in_px != plain.taper_in_px || style.taper_out_px != plain.taper_out_px, "taper");
-    note(!style.dashes.empty(), "dashes");
-    note(!style.width_modifiers.empty() || !style.alpha_modifiers.empty() || !style.color_modifiers.empty(),
-         "modifiers");
-    note(!style.geometry.empty(), "geometry");
+    note(style.alpha != plain.alpha, {"alpha"});
+    note(style.fade != plain.fade, {"fade"});
+    note(style.cap != plain.cap, {"cap"});
+    note(style.join != plain.join, {"join"});
+    note(style.taper_in_px != plain.taper_in_px || style.taper_out_px != plain.taper_out_px,
+         {"taper", "taper_in", "taper_out"});
+    note(!style.dashes.empty(), {"dashes"});
+    note(!style.width_modifiers.empty(), {"width_modifiers"});
+    note(!style.alpha_modifiers.empty(), {"alpha_modifiers"});
+    note(!style.color_modifiers.empty(), {"color_modifiers"});
+    note(!style.geometry.empty(), {"geometry"});
     if (!keys.empty())
-        r.warn(keys + ": a ribbon set draws its exemplar along the paths, and these stroke keys change nothing "
+        r.warn(keys + ": a ribbon set draws its exemplar along the paths, and stroke keys change nothing there "
                       "(width and ribbon_scale size the ribbon; color colours the SVG's centre lines)");
 }
 

@@ -188,21 +188,31 @@ LineStyle read_line_type(ObjectReader& lines, LineType type, const std::filesyst
     return style;
 }
 
-// Beside "line_sets" the per-type styles under "lines" draw nothing (each set has its own
-// style); their thresholds still apply. Scenes written by earlier builds carry the styles at
+// Beside "line_sets" a type's switch and style under "lines" draw nothing (the sets select and
+// style the types); its thresholds still apply. Scenes written by earlier builds carry them at
 // their defaults, which are not mentioned.
 void warn_per_type_styles_beside_sets(const ObjectReader& scene, const LinesDesc& lines) {
     const LinesDesc defaults;
-    std::string types;
+    std::string said;
     for (int t = 0; t < kLineTypeCount; ++t) {
+        const LineType type = LineType(t);
         const LineStyle &s = lines.styles[size_t(t)], &d = defaults.styles[size_t(t)];
-        if (s.width != d.width || s.color != d.color || s.slam != d.slam || s.taper_px != d.taper_px ||
-            s.ribbon != d.ribbon || s.ribbon_scale != d.ribbon_scale)
-            types += (types.empty() ? "lines." : ", lines.") + std::string(line_type_name(LineType(t)));
+        std::string keys;
+        const auto note = [&](bool differs, const char* key) {
+            if (differs) keys += (keys.empty() ? "" : ", ") + std::string(key);
+        };
+        note(line_type_enabled(lines.params, type) != line_type_enabled(defaults.params, type), "enabled");
+        note(s.width != d.width, "width");
+        note(s.color != d.color, "color");
+        note(s.slam != d.slam, "slam");
+        note(s.taper_px != d.taper_px, "taper");
+        note(s.ribbon != d.ribbon, "ribbon");
+        note(s.ribbon_scale != d.ribbon_scale, "ribbon_scale");
+        if (!keys.empty()) said += (said.empty() ? "lines." : "; lines.") + std::string(line_type_name(type)) + ": " + keys;
     }
-    if (!types.empty())
-        scene.warn(types + ": width, color, slam, taper and ribbon style the per-type shorthand; beside \"line_sets\" "
-                           "they change nothing (style each set in its \"style\"; thresholds still apply)");
+    if (!said.empty())
+        scene.warn(said + ": beside \"line_sets\" a type's switch and style under \"lines\" change nothing (the sets "
+                          "select and style the types; thresholds still apply)");
 }
 
 LinesDesc read_lines(ObjectReader& parent, const std::filesystem::path& file) {

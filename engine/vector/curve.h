@@ -8,8 +8,9 @@
 //         - SVG: one drawn element, read as the stroke reader reads a drawing
 //           (vector/svg_reader.cpp: groups, transforms, <use>, a <path> of commands
 //           M/L/H/V/C/S/Q/T/Z and their relative forms with Béziers flattened to pieces under
-//           1 px of chord, or a basic shape), paint aside; a file of several curves (elements
-//           or subpaths) or none is an error.
+//           1 px of chord, or a basic shape), paint aside, hidden elements and text left out,
+//           and the root's viewBox mapped onto its width and height (the page a renderer
+//           draws); a file of several curves (elements or subpaths) or none is an error.
 // Output: `Curve2D`; `ArclengthCurve` evaluates C(x), x ∈ [0, L], and the unit tangent, as
 //         the paper assumes (Zhou et al. 2013, §1.1: "a curve parameterized in arc length").
 //

@@ -4,7 +4,8 @@
 // finite coordinates within ±1e6, positive finite widths and colours in [0, 1]; unknown JSON
 // keys, unsupported SVG elements (text, image, …) and unknown colour names are errors. SVG
 // goes through a real XML parser (vector/svg_reader.cpp): nested groups with inherited
-// stroke and style, transforms, <use>, the basic shapes as strokes, CSS units. Errors are `lw::Error`s (exit code 1) whose one-line message starts
+// stroke and style, transforms, <use>, the basic shapes as strokes, CSS units; elements with
+// display none or visibility hidden are not drawn. Errors are `lw::Error`s (exit code 1) whose one-line message starts
 // with the file name (or `where`).
 //
 // Writing SVG: one <polyline> per open stroke and one <path d="M … Z"> per closed stroke, with

@@ -131,6 +131,7 @@ glm::dmat3 parse_transform(const std::string& text, const std::string& where, co
 struct Context {
     glm::dmat3 transform{1.0};
     std::string stroke, stroke_width;
+    bool visible = true;  // "visibility": inherited, and a child may say "visible" again
     int use_depth = 0;
     int nesting = 0;
 };
@@ -139,8 +140,14 @@ struct Context {
 // Returns false when the element is not displayed.
 bool apply_paint(const pugi::xml_node& node, Context& c) {
     bool shown = std::string(node.attribute("display").as_string()) != "none";
+    const auto visibility = [&](const std::string& value) {
+        const std::string v = lower(trim(value));
+        if (v == "hidden" || v == "collapse") c.visible = false;
+        if (v == "visible") c.visible = true;
+    };
     if (auto a = node.attribute("stroke")) c.stroke = a.as_string();
     if (auto a = node.attribute("stroke-width")) c.stroke_width = a.as_string();
+    if (auto a = node.attribute("visibility")) visibility(a.as_string());
     std::stringstream style(node.attribute("style").as_string());
     std::string declaration;
     while (std::getline(style, declaration, ';')) {
@@ -151,6 +158,7 @@ bool apply_paint(const pugi::xml_node& node, Context& c) {
         if (key == "stroke") c.stroke = value;
         if (key == "stroke-width") c.stroke_width = value;
         if (key == "display") shown = value != "none";
+        if (key == "visibility") visibility(value);
     }
     return shown;
 }
@@ -221,7 +229,9 @@ public:
             use(node, c, set);
         } else if (name == "path" || name == "polyline" || name == "polygon" || name == "line" || name == "rect" ||
                    name == "circle" || name == "ellipse") {
-            draw(node, c, set);
+            if (c.visible) draw(node, c, set);
+        } else if (geometry_only_ && (name == "text" || name == "image")) {
+            return;  // a curve file's label or backdrop: no curve in it
         } else {
             throw Error(where_ + ": <" + name +
                         ">: unsupported element (path, polyline, polygon, line, rect, circle, ellipse, g, use are read)");
@@ -324,6 +334,8 @@ private:
         const glm::vec3 color =
             c.stroke.empty() || geometry_only_ ? glm::vec3(0.0f) : parse_color(c.stroke, where_ + ": " + w);
         const double scale = std::sqrt(std::abs(glm::determinant(glm::dmat2(c.transform))));
+        if (!(scale > 0.0) || !std::isfinite(scale))
+            throw Error(where_ + ": " + w + ": its transform is degenerate (it flattens the element to a line or a point)");
         const double width = c.stroke_width.empty() || geometry_only_
                                  ? 1.0
                                  : parse_length(c.stroke_width, where_, w + " stroke-width");
@@ -386,8 +398,47 @@ StrokeSet read_svg(const std::string& text, const std::string& where, bool geome
 
 StrokeSet parse_strokes_svg(const std::string& text, const std::string& where) { return read_svg(text, where, false); }
 
-// A curve file is read as a drawing is (transforms, shapes, <use>), and must hold one curve:
-// which of several to follow is not ours to guess.
+namespace {
+
+// The root's viewBox onto its page (SVG 1.1 §7.7–7.8): user units to the CSS pixels a renderer
+// draws at 1:1 when width and height are given (Inkscape writes width="210mm" with a viewBox
+// in millimetres). preserveAspectRatio: the default xMidYMid meet, or none.
+glm::dmat3 page_transform(const std::string& text, const std::string& where) {
+    const auto doc = parse_xml(text, where);
+    const pugi::xml_node root = doc->document_element();
+    const pugi::xml_attribute box_attribute = root.attribute("viewBox");
+    if (!box_attribute) return glm::dmat3(1.0);
+    const std::vector<double> box = number_list(box_attribute.as_string(), where, "viewBox");
+    if (box.size() != 4 || !(box[2] > 0.0) || !(box[3] > 0.0)) throw Error(where + ": viewBox: expected x y width height");
+    const auto length = [&](const char* name) -> std::optional<double> {
+        const pugi::xml_attribute a = root.attribute(name);
+        if (!a || trim(a.as_string()) == "100%") return std::nullopt;
+        return parse_length(a.as_string(), where, std::string("<svg> ") + name);
+    };
+    const std::optional<double> w = length("width"), h = length("height");
+    // Neither given: the page is the viewBox's size (as renderers draw such a file). One given:
+    // the other follows the viewBox's aspect.
+    const double page_w = w ? *w : h ? *h * box[2] / box[3] : box[2];
+    const double page_h = h ? *h : w ? *w * box[3] / box[2] : box[3];
+    glm::dvec2 scale(page_w / box[2], page_h / box[3]), offset(0.0);
+    const std::string align = trim(root.attribute("preserveAspectRatio").as_string());
+    if (align.empty() || align == "xMidYMid" || align == "xMidYMid meet") {
+        scale = glm::dvec2(std::min(scale.x, scale.y));
+        offset = 0.5 * (glm::dvec2(page_w, page_h) - scale * glm::dvec2(box[2], box[3]));
+    } else if (align != "none") {
+        throw Error(where + ": <svg> preserveAspectRatio=\"" + align +
+                    "\" is not read (the default, xMidYMid meet, and none are)");
+    }
+    glm::dmat3 m(1.0);
+    m[0][0] = scale.x, m[1][1] = scale.y;
+    m[2] = glm::dvec3(offset - scale * glm::dvec2(box[0], box[1]), 1.0);
+    return m;
+}
+
+}  // namespace
+
+// A curve file is read as a drawing is (transforms, shapes, <use>, the viewBox onto the page),
+// and must hold one curve: which of several to follow is not ours to guess.
 Curve2D parse_curve_svg(const std::string& text, const std::string& where) {
     StrokeSet set = read_svg(text, where, true);
     if (set.strokes.empty()) throw Error(where + ": no drawn element (a <path>, <polyline>, <circle>, … holding the curve)");
@@ -397,6 +448,8 @@ Curve2D parse_curve_svg(const std::string& text, const std::string& where) {
                     "to follow");
     Stroke& s = set.strokes.front();
     if (s.points.size() < 2) throw Error(where + ": the curve needs at least two points");
+    const glm::dmat3 page = page_transform(text, where);
+    for (glm::vec2& p : s.points) p = glm::vec2(page * glm::dvec3(p, 1.0));
     return Curve2D{.points = std::move(s.points), .closed = s.closed};
 }
 
