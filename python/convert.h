@@ -11,6 +11,7 @@
 #include <mutex>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -19,6 +20,7 @@
 #include <pybind11/pybind11.h>
 
 #include "core/error.h"
+#include "core/log.h"
 #include "core/image.h"
 #include "gpu/context.h"
 
@@ -85,6 +87,26 @@ auto reading_input(F&& f) {
         return f();
     } catch (const Error& e) {
         throw pyb::value_error(printable(e.what()));
+    }
+}
+
+// Runs f with the engine's warnings on this thread captured (core/log.h), then gives each
+// to Python's `warnings` as a UserWarning (a script can filter or catch them; stderr would
+// not let it). With the warnings filter set to "error" the first one raises.
+template <typename F>
+auto with_python_warnings(F&& f) {
+    WarningCapture capture;
+    const auto raise = [&] {
+        for (const std::string& message : capture.messages())
+            if (PyErr_WarnEx(PyExc_UserWarning, printable(message).c_str(), 1) != 0) throw pyb::error_already_set();
+    };
+    if constexpr (std::is_void_v<decltype(f())>) {
+        f();
+        raise();
+    } else {
+        auto result = f();
+        raise();
+        return result;
     }
 }
 

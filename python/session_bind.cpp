@@ -181,7 +181,7 @@ speak raises RuntimeError. Bad input raises ValueError with the command line's m
                      a.size = wh;
                  }
                  a.camera = {optional_vec3(eye, "eye"), optional_vec3(target, "target"), optional_vec3(up, "up")};
-                 return std::make_unique<Session>(scene, a);
+                 return with_python_warnings([&] { return std::make_unique<Session>(scene, a); });
              }),
              pyb::arg("scene") = pyb::none(), pyb::kw_only(), pyb::arg("device") = "auto",
              pyb::arg("size") = pyb::none(), pyb::arg("eye") = pyb::none(), pyb::arg("target") = pyb::none(),
@@ -249,7 +249,8 @@ speak raises RuntimeError. Bad input raises ValueError with the command line's m
         .def("restore", &Session::restore, pyb::arg("snapshot"),
              "Go on from a snapshot: the next frame continues its parameterization exactly.")
         .def_property_readonly("scene", &Session::scene, "The scene as described (and configured), as a dict.")
-        .def("configure", &Session::configure, pyb::arg("changes"),
+        .def("configure", [](Session& s, const pyb::object& changes) { with_python_warnings([&] { s.configure(changes); }); },
+             pyb::arg("changes"),
              "Merge scene keys into the scene (RFC 7396: nested dicts merge, None deletes), check them as a "
              "scene file, apply: lines, line_sets, shading and colours, size and camera take effect live; any "
              "other key reopens the session (its temporal state starts afresh, and a camera from set_camera() is "

@@ -142,6 +142,17 @@ def test_configure_is_a_scene_edit(tmp_path):
     assert np.allclose(s.camera["eye"], [2, 0.5, -2], atol=1e-4) or np.allclose(s.camera["eye"], [-2, 0.5, 2], atol=1e-4)
 
 
+def test_keys_that_change_nothing_are_python_warnings():
+    """A per-type style beside line sets changes nothing: the engine's warning reaches Python's
+    `warnings` (catchable, filterable) instead of stderr."""
+    s = linework.Session(SOURCE / "scenes/spot.json", device="cpu", size=SIZE)
+    with pytest.warns(UserWarning, match=r'lines\.silhouette: width: beside "line_sets" a type\'s switch and style'):
+        s.configure({"lines": {"silhouette": {"width": 4}}, "line_sets": [{"name": "all"}]})
+    with pytest.warns(UserWarning, match="a ribbon set draws its exemplar"):
+        s.configure({"line_sets": [{"name": "r", "style": {"ribbon": str(SOURCE / "scenes/exemplars/chain.png"),
+                                                           "alpha": 0.5}}]})
+
+
 def test_frames_snapshot_and_restore(tmp_path):
     scene = {"model": str(SPOT), "size": [160, 120], "camera": {"orbit": 40},
              "animation": {"frames": [0, 5]},
