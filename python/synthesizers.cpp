@@ -233,12 +233,8 @@ pyb::object ribbon(const pyb::object& exemplar_value, const pyb::object& curve_v
     desc.stitch = stitch;
     if (reference) desc.site = ComputeSite::Host;  // else the device's choice: the host on CPU devices
     const Ribbon built = arguments_named(kRibbonNames, [&] { return build_ribbon(curve, desc.params); });
-    if (!size) {
-        const glm::vec2 hi = built.max_corner();
-        size = glm::ivec2(std::max(1, int(std::ceil(hi.x)) + 2), std::max(1, int(std::ceil(hi.y)) + 2));
-        if (size->x > 16384 || size->y > 16384)
-            throw pyb::value_error(curve_where + ": the curve reaches past 16384 pixels; give size");
-    }
+    if (!size)
+        size = reading_input([&] { return default_ribbon_size(built, points.page, curve_where); });
     else
         arguments_named(kRibbonNames, [&] { check_ribbon_in_image(built, size->x, size->y); });
     desc.width = size->x;
@@ -360,7 +356,7 @@ scale: s, exemplar pixels across the ribbon (default: the exemplar's band of opa
   + 2 + 30 %).
 seed: chooses among equally good results, and the random baseline.
 stitch: deform pieces so that their edges align better (§3.2, P = 32).
-size: output (width, height) (default: the ribbon's extent from the origin).
+size: output (width, height) (default: the ribbon's extent from the origin, and at least an SVG curve's page).
 avoid: H×W(×4) uint8 avoidance map of the output size (or a PNG): alpha ≥ 128 is forbidden (§3.1).
 transparent: keep the transparent background (default: composited over white).
 reference: run the DP and stitching with the plain C++ reference whatever the device.

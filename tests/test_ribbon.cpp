@@ -102,6 +102,8 @@ TEST(RibbonCurve, SvgCurvesAreReadAsDrawn) {
         R"s(<svg width="400" height="300" viewBox="0 0 200 150"><path d="M 20,75 L 180,75"/></svg>)s", "vb.svg");
     EXPECT_EQ(doubled.points.front(), glm::vec2(40, 150));
     EXPECT_EQ(doubled.points.back(), glm::vec2(360, 150));
+    EXPECT_EQ(doubled.page, glm::vec2(400, 300)) << "the page a ribbon's output defaults to";
+    EXPECT_EQ(moved.page, glm::vec2(0, 0)) << "no size, no viewBox: no page";
     const Curve2D mm = parse_curve_svg(
         R"s(<svg width="100mm" height="75mm" viewBox="0 0 100 75"><path d="M 0,0 L 100,0"/></svg>)s", "mm.svg");
     EXPECT_NEAR(mm.points.back().x, 100.0f * 96.0f / 25.4f, 1e-3f);
@@ -157,6 +159,15 @@ TEST(RibbonCurve, ArclengthAndResampling) {
     EXPECT_EQ(s.size(), 8u);  // 0, 3, …, 18, 20
     EXPECT_EQ(s.back(), glm::vec2(10, 10));
     EXPECT_THROW(ArclengthCurve(Curve2D{{{1, 1}, {1, 1}}, false}), Error);
+}
+
+// Without --size the output reaches past the ribbon's far corner from the origin, and covers
+// an SVG curve's page, so that it lines up with the drawing the curve came from.
+TEST(RibbonGeometry, DefaultSizeCoversTheRibbonAndThePage) {
+    const Ribbon r = build_ribbon(ArclengthCurve(Curve2D{{{10, 50}, {110, 50}}, false}), {.width = 20, .piece = 8, .scale = 10});
+    EXPECT_EQ(default_ribbon_size(r, glm::vec2(0.0f), "c.json"), glm::ivec2(112, 62));
+    EXPECT_EQ(default_ribbon_size(r, glm::vec2(320.0f, 40.5f), "c.svg"), glm::ivec2(320, 62));
+    EXPECT_THROW((void)default_ribbon_size(r, glm::vec2(20000.0f, 10.0f), "c.svg"), Error);
 }
 
 TEST(RibbonGeometry, SlicesIntoPiecesOfLengthDelta) {

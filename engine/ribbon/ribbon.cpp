@@ -32,6 +32,15 @@ glm::vec2 Ribbon::max_corner() const {
     return hi;
 }
 
+glm::ivec2 default_ribbon_size(const Ribbon& ribbon, glm::vec2 page, const std::string& curve_file) {
+    const glm::vec2 hi = ribbon.max_corner();
+    const glm::ivec2 size = glm::max(glm::ivec2(std::max(1, int(std::ceil(hi.x)) + 2), std::max(1, int(std::ceil(hi.y)) + 2)),
+                                     glm::ivec2(int(std::ceil(page.x)), int(std::ceil(page.y))));
+    if (size.x > 16384 || size.y > 16384)
+        throw Error(curve_file + ": the curve (or its page) reaches past 16384 pixels; give the output's size");
+    return size;
+}
+
 void check_ribbon_in_image(const Ribbon& ribbon, int width, int height) {
     const bool meets = std::any_of(ribbon.pieces.begin(), ribbon.pieces.end(), [&](const RibbonPiece& p) {
         const glm::vec2 a = glm::min(glm::min(p.top_left, p.top_right), glm::min(p.bottom_left, p.bottom_right));

@@ -22,6 +22,7 @@
 //   can be added"). A closed curve's last piece ends exactly on the first one's left edge.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -62,6 +63,11 @@ struct Ribbon {
 // Throws lw::Error (exit code 2 for parameter values) for b, δ, s not positive, C > 4096 or
 // more than 100000 pieces.
 [[nodiscard]] Ribbon build_ribbon(const ArclengthCurve& curve, const RibbonParams& params);
+
+// The output size when none is asked for: from the origin to past the ribbon's far corner, and
+// at least the page an SVG curve was drawn on (`page`, 0 for none), so that the image lines up
+// with that drawing. Throws lw::Error naming `curve_file` past 16384 pixels.
+[[nodiscard]] glm::ivec2 default_ribbon_size(const Ribbon& ribbon, glm::vec2 page, const std::string& curve_file);
 
 // An output of width × height pixels that no piece reaches into would be blank: a
 // ParameterError "ribbon size" saying where the ribbon lies. (Piece by piece: the ribbon's box

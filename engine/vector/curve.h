@@ -28,6 +28,7 @@ namespace lw {
 struct Curve2D {
     std::vector<glm::vec2> points;
     bool closed = false;  // the last point connects back to the first
+    glm::vec2 page{0.0f};  // an SVG's page (width, height) the curve was drawn on; 0: none (JSON)
 };
 
 // Reads a .json or .svg curve (chosen by extension; anything else is read as JSON).

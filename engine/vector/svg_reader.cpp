@@ -403,23 +403,29 @@ namespace {
 // The root's viewBox onto its page (SVG 1.1 §7.7–7.8): user units to the CSS pixels a renderer
 // draws at 1:1 when width and height are given (Inkscape writes width="210mm" with a viewBox
 // in millimetres). preserveAspectRatio: the default xMidYMid meet, or none.
-glm::dmat3 page_transform(const std::string& text, const std::string& where) {
+// `page`: the page's width and height (0 where the file gives neither a viewBox nor a size).
+glm::dmat3 page_transform(const std::string& text, const std::string& where, glm::vec2& page) {
     const auto doc = parse_xml(text, where);
     const pugi::xml_node root = doc->document_element();
     const pugi::xml_attribute box_attribute = root.attribute("viewBox");
-    if (!box_attribute) return glm::dmat3(1.0);
-    const std::vector<double> box = number_list(box_attribute.as_string(), where, "viewBox");
-    if (box.size() != 4 || !(box[2] > 0.0) || !(box[3] > 0.0)) throw Error(where + ": viewBox: expected x y width height");
-    const auto length = [&](const char* name) -> std::optional<double> {
+    const auto length_of = [&](const char* name) -> std::optional<double> {
         const pugi::xml_attribute a = root.attribute(name);
         if (!a || trim(a.as_string()) == "100%") return std::nullopt;
         return parse_length(a.as_string(), where, std::string("<svg> ") + name);
     };
-    const std::optional<double> w = length("width"), h = length("height");
+    if (!box_attribute) {
+        const std::optional<double> w = length_of("width"), h = length_of("height");
+        page = w && h ? glm::vec2(float(*w), float(*h)) : glm::vec2(0.0f);
+        return glm::dmat3(1.0);
+    }
+    const std::vector<double> box = number_list(box_attribute.as_string(), where, "viewBox");
+    if (box.size() != 4 || !(box[2] > 0.0) || !(box[3] > 0.0)) throw Error(where + ": viewBox: expected x y width height");
+    const std::optional<double> w = length_of("width"), h = length_of("height");
     // Neither given: the page is the viewBox's size (as renderers draw such a file). One given:
     // the other follows the viewBox's aspect.
     const double page_w = w ? *w : h ? *h * box[2] / box[3] : box[2];
     const double page_h = h ? *h : w ? *w * box[3] / box[2] : box[3];
+    page = glm::vec2(float(page_w), float(page_h));
     glm::dvec2 scale(page_w / box[2], page_h / box[3]), offset(0.0);
     const std::string align = trim(root.attribute("preserveAspectRatio").as_string());
     if (align.empty() || align == "xMidYMid" || align == "xMidYMid meet") {
@@ -448,9 +454,10 @@ Curve2D parse_curve_svg(const std::string& text, const std::string& where) {
                     "to follow");
     Stroke& s = set.strokes.front();
     if (s.points.size() < 2) throw Error(where + ": the curve needs at least two points");
-    const glm::dmat3 page = page_transform(text, where);
+    glm::vec2 page_size(0.0f);
+    const glm::dmat3 page = page_transform(text, where, page_size);
     for (glm::vec2& p : s.points) p = glm::vec2(page * glm::dvec3(p, 1.0));
-    return Curve2D{.points = std::move(s.points), .closed = s.closed};
+    return Curve2D{.points = std::move(s.points), .closed = s.closed, .page = page_size};
 }
 
 }  // namespace lw

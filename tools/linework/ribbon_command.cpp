@@ -81,11 +81,7 @@ int run_ribbon(const RibbonOptions& o) {
     desc.stitch = o.stitch;
     desc.site = site;
     const Ribbon ribbon = build_ribbon(curve, desc.params);
-    if (!size) {
-        const glm::vec2 hi = ribbon.max_corner();
-        size = glm::ivec2(std::max(1, int(std::ceil(hi.x)) + 2), std::max(1, int(std::ceil(hi.y)) + 2));
-        if (size->x > 16384 || size->y > 16384) throw Error(o.curve + ": the curve reaches past 16384 pixels; give --size");
-    }
+    if (!size) size = default_ribbon_size(ribbon, curve_points.page, o.curve);
     desc.width = size->x;
     desc.height = size->y;
     // The curve is in output pixels: a --size that misses the ribbon would give a blank image,
@@ -216,7 +212,8 @@ Runner add_ribbon_command(CLI::App& app) {
         ->check(positive("exemplar pixels"));
     cmd->add_option("--seed", o->seed, "Chooses among equally good results, and the random baseline")->check(seed())
         ->capture_default_str();
-    cmd->add_option("--size", o->size, "Output size WxH (default: the ribbon's extent from the origin)");
+    cmd->add_option("--size", o->size, "Output size WxH (default: the ribbon's extent from the origin, and at least an SVG curve's\n"
+                                         "page: its width and height)");
     cmd->add_option("--dump-dp", o->dump,
                     "Write the DP result as JSON: pieces, positions [[u, v], ...], seam_costs, total_cost,\n"
                     "greedy_cost, random_cost, valid_counts, row_ms")
