@@ -8,6 +8,7 @@
 // Inkscape layer switched off). <use> draws the element it names, translated by x, y.
 // Points are transformed; a width is scaled by the transform's mean scale √|det|.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <map>
@@ -376,9 +377,10 @@ private:
 
 namespace {
 
-StrokeSet read_svg(const std::string& text, const std::string& where, bool geometry_only) {
-    const auto doc = parse_xml(text, where);
-    const pugi::xml_node root = doc->document_element();
+// The drawing of a parsed file: its strokes, and its viewBox (or its width and height) as the
+// set's extent.
+StrokeSet read_svg(const pugi::xml_document& doc, const std::string& where, bool geometry_only) {
+    const pugi::xml_node root = doc.document_element();
     if (std::string(root.name()) != "svg") throw Error(where + ": no <svg> element");
     StrokeSet set;
     if (auto v = root.attribute("viewBox")) {
@@ -390,36 +392,26 @@ StrokeSet read_svg(const std::string& text, const std::string& where, bool geome
         set.size = {float(parse_length(root.attribute("width").as_string(), where, "<svg> width")),
                     float(parse_length(root.attribute("height").as_string(), where, "<svg> height"))};
     }
-    Reader(*doc, where, geometry_only).walk(root, Context{}, set);
+    Reader(doc, where, geometry_only).walk(root, Context{}, set);
     return set;
 }
-
-}  // namespace
-
-StrokeSet parse_strokes_svg(const std::string& text, const std::string& where) { return read_svg(text, where, false); }
-
-namespace {
 
 // The root's viewBox onto its page (SVG 1.1 §7.7–7.8): user units to the CSS pixels a renderer
 // draws at 1:1 when width and height are given (Inkscape writes width="210mm" with a viewBox
 // in millimetres). preserveAspectRatio: the default xMidYMid meet, or none.
+// `set`: read_svg's drawing of the file, whose extent is the viewBox when there is one.
 // `page`: the page's width and height (0 where the file gives neither a viewBox nor a size).
-glm::dmat3 page_transform(const std::string& text, const std::string& where, glm::vec2& page) {
-    const auto doc = parse_xml(text, where);
-    const pugi::xml_node root = doc->document_element();
-    const pugi::xml_attribute box_attribute = root.attribute("viewBox");
+glm::dmat3 page_transform(const pugi::xml_node& root, const StrokeSet& set, const std::string& where, glm::vec2& page) {
     const auto length_of = [&](const char* name) -> std::optional<double> {
         const pugi::xml_attribute a = root.attribute(name);
         if (!a || trim(a.as_string()) == "100%") return std::nullopt;
         return parse_length(a.as_string(), where, std::string("<svg> ") + name);
     };
-    if (!box_attribute) {
-        const std::optional<double> w = length_of("width"), h = length_of("height");
-        page = w && h ? glm::vec2(float(*w), float(*h)) : glm::vec2(0.0f);
+    if (!root.attribute("viewBox")) {
+        page = set.size;  // width and height when both are given, else none
         return glm::dmat3(1.0);
     }
-    const std::vector<double> box = number_list(box_attribute.as_string(), where, "viewBox");
-    if (box.size() != 4 || !(box[2] > 0.0) || !(box[3] > 0.0)) throw Error(where + ": viewBox: expected x y width height");
+    const std::array<double, 4> box{set.origin.x, set.origin.y, set.size.x, set.size.y};
     const std::optional<double> w = length_of("width"), h = length_of("height");
     // Neither given: the page is the viewBox's size (as renderers draw such a file). One given:
     // the other follows the viewBox's aspect.
@@ -443,10 +435,15 @@ glm::dmat3 page_transform(const std::string& text, const std::string& where, glm
 
 }  // namespace
 
+StrokeSet parse_strokes_svg(const std::string& text, const std::string& where) {
+    return read_svg(*parse_xml(text, where), where, false);
+}
+
 // A curve file is read as a drawing is (transforms, shapes, <use>, the viewBox onto the page),
 // and must hold one curve: which of several to follow is not ours to guess.
 Curve2D parse_curve_svg(const std::string& text, const std::string& where) {
-    StrokeSet set = read_svg(text, where, true);
+    const auto doc = parse_xml(text, where);
+    StrokeSet set = read_svg(*doc, where, true);
     if (set.strokes.empty()) throw Error(where + ": no drawn element (a <path>, <polyline>, <circle>, … holding the curve)");
     if (set.strokes.size() > 1)
         throw Error(where + ": " + std::to_string(set.strokes.size()) +
@@ -455,7 +452,7 @@ Curve2D parse_curve_svg(const std::string& text, const std::string& where) {
     Stroke& s = set.strokes.front();
     if (s.points.size() < 2) throw Error(where + ": the curve needs at least two points");
     glm::vec2 page_size(0.0f);
-    const glm::dmat3 page = page_transform(text, where, page_size);
+    const glm::dmat3 page = page_transform(doc->document_element(), set, where, page_size);
     for (glm::vec2& p : s.points) p = glm::vec2(page * glm::dvec3(p, 1.0));
     return Curve2D{.points = std::move(s.points), .closed = s.closed, .page = page_size};
 }
