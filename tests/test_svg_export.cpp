@@ -142,6 +142,15 @@ TEST(SvgExport, StyledLineSetsKeepTheirShapes) {
     EXPECT_NE(r.svg.find("<g id=\"hidden-hidden\">"), std::string::npos) << "a set of hidden lines draws them apart";
     EXPECT_NE(r.svg.find("<g id=\"hidden\" fill-rule=\"nonzero\" stroke=\"none\" opacity=\"0.350\">"), std::string::npos)
         << "its alpha as the group's opacity";
+    // The centre lines carry each set's ends and joins: round caps where the set asks for
+    // them, the default square caps and mitres (at the stroke builder's limit) elsewhere.
+    EXPECT_NE(r.svg.find("<g id=\"creases-centerlines\" display=\"none\" fill=\"none\" stroke=\"#80331a\" "
+                         "stroke-width=\"1.50\" stroke-linecap=\"round\" stroke-linejoin=\"miter\" "
+                         "stroke-miterlimit=\"2.00\">"),
+              std::string::npos);
+    EXPECT_NE(r.svg.find("<g id=\"outline-centerlines\" display=\"none\" fill=\"none\" stroke=\"#000000\" "
+                         "stroke-width=\"6.00\" stroke-linecap=\"square\" stroke-linejoin=\"miter\""),
+              std::string::npos);
 }
 
 // A translucent set is composited once in both: black at alpha 0.5, 6 px wide with round caps

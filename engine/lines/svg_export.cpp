@@ -24,6 +24,18 @@ std::string number(float v, int decimals = 2) {
 
 std::string point(glm::vec2 p) { return number(p.x, 3) + "," + number(p.y, 3); }
 
+// SVG's stroke-linecap and -linejoin for a set's ends and joins. SVG's miter limit is the
+// mitre's length over the stroke's width, 1/sin(θ/2), which is the builder's limit in half
+// widths: both stop mitring at the same angle.
+std::string cap_and_join(Cap cap, Join join) {
+    std::string out = " stroke-linecap=\"";
+    out += cap == Cap::Butt ? "butt" : cap == Cap::Round ? "round" : "square";
+    out += join == Join::Round ? "\" stroke-linejoin=\"round\""
+                               : "\" stroke-linejoin=\"miter\" stroke-miterlimit=\"" +
+                                     number(StrokeParams{}.mitre_limit) + "\"";
+    return out;
+}
+
 // The triangles as filled `<path>`s, one per run of consecutive triangles of one colour (to
 // 1/255, what the PNG tells apart) whose opacity stays within 0.02 of the run's first, drawn at
 // the run's mean: a fading line is a few paths, not one per triangle (every path is
@@ -88,8 +100,8 @@ std::string lines_svg(int width, int height, const std::vector<SvgGroup>& groups
         }
         svg += "  </g>\n";
         svg += "  <g id=\"" + group.id + "-centerlines\" display=\"none\" fill=\"none\" stroke=\"" +
-               hex_color(group.color) + "\" stroke-width=\"" + number(group.width) +
-               "\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";
+               hex_color(group.color) + "\" stroke-width=\"" + number(group.width) + "\"" +
+               cap_and_join(group.cap, group.join) + ">\n";
         for (const ScreenPath& path : group.paths ? *group.paths : none) {
             if (!path.visible || path.samples.size() < 2) continue;
             svg += "    <polyline points=\"";

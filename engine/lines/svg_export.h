@@ -15,7 +15,9 @@
 //   - `<g id=NAME-hidden>` inside it when the set draws hidden lines: their shapes in their
 //     look (faint: a quarter of the opacity; dashed: the dashes as shapes);
 //   - `<g id=NAME-centerlines display="none">` after it: one `<polyline>` per visible path
-//     (a closed loop repeats its first point), the paths themselves for tools to read back.
+//     (a closed loop repeats its first point), the paths themselves for tools to read back,
+//     with the set's colour, width, caps and joins (a mitre as SVG's miter at the stroke
+//     builder's limit, where the shapes clip a longer mitre and SVG bevels it).
 #pragma once
 
 #include <array>
@@ -26,6 +28,7 @@
 #include <glm/glm.hpp>
 
 #include "stroke/stroke_geometry.h"
+#include "types/line_set.h"
 #include "types/screen_path.h"
 
 namespace lw {
@@ -35,6 +38,8 @@ struct SvgGroup {
     glm::vec3 color{0.0f};
     float width = 1.0f;
     float opacity = 1.0f;  // the group's, for a set drawn once: the shapes' alpha is divided by it
+    Cap cap = Cap::Square;  // the set's ends and joins, for the centre lines
+    Join join = Join::Mitre;
     const std::vector<ScreenPath>* paths = nullptr;  // the set's paths (null: none)
     // The set's strokes as the renderer builds them without the coverage margin (triangles
     // with per-vertex colour and alpha), visible and hidden runs apart.

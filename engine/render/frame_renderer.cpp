@@ -80,7 +80,9 @@ std::string inside_out_warning(const ClosedSurfaces& closed) {
 std::vector<SvgGroup> line_set_svg_groups(const LinesDesc& lines, const Frame& frame, bool with_shapes) {
     std::vector<SvgGroup> groups;
     const std::vector<LineSetDesc> sets = effective_line_sets(lines);
-    for (const LineSetDesc& set : sets) groups.push_back({.id = set.name, .color = set.style.color, .width = set.style.width});
+    for (const LineSetDesc& set : sets)
+        groups.push_back({.id = set.name, .color = set.style.color, .width = set.style.width,
+                          .cap = set.style.cap, .join = set.style.join});
     for (const LineSetFrame& out : frame.sets) {
         groups[out.set].paths = &out.paths;
         if (with_shapes) add_svg_shapes(lines, sets[out.set], out, groups[out.set]);
