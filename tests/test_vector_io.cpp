@@ -256,6 +256,34 @@ TEST(VectorIo, NestedTransformedGroupsGiveTheStrokesOfTheirFlattenedTwin) {
     }
 }
 
+// XML tools write SVG under a prefix bound to its namespace (xmlns:svg): the same drawing as
+// without it. An element under a prefix of another namespace is still left out, and a prefix
+// called svg bound elsewhere is not SVG.
+TEST(VectorIo, PrefixedSvgElementsAreRead) {
+    const StrokeSet plain = parse_strokes_svg(
+        R"s(<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 50 40"><g transform="translate(5,5)" stroke="red">
+            <path d="M0 0 L10 0"/><circle cx="20" cy="20" r="4"/></g></svg>)s",
+        "plain.svg");
+    const StrokeSet prefixed = parse_strokes_svg(
+        R"s(<svg:svg xmlns:svg="http://www.w3.org/2000/svg" xmlns:x="urn:other" viewBox="0 0 50 40">
+            <svg:g transform="translate(5,5)" stroke="red"><svg:path d="M0 0 L10 0"/><x:path d="M0 0 L1 1"/>
+            <svg:circle cx="20" cy="20" r="4"/></svg:g></svg:svg>)s",
+        "prefixed.svg");
+    EXPECT_EQ(prefixed.size, plain.size);
+    ASSERT_EQ(prefixed.strokes.size(), 2u);
+    ASSERT_EQ(plain.strokes.size(), 2u);
+    for (size_t i = 0; i < 2; ++i) {
+        EXPECT_EQ(prefixed.strokes[i].points, plain.strokes[i].points) << i;
+        EXPECT_EQ(prefixed.strokes[i].color, plain.strokes[i].color) << i;
+    }
+    try {
+        (void)parse_strokes_svg(R"s(<svg:svg xmlns:svg="urn:not-svg"><svg:path d="M0 0 L1 1"/></svg:svg>)s", "other.svg");
+        ADD_FAILURE() << "a root outside SVG's namespace was read";
+    } catch (const Error& e) {
+        EXPECT_STREQ(e.what(), "other.svg: no <svg> element");
+    }
+}
+
 TEST(VectorIo, RectCornersEllipsesAndUnits) {
     const StrokeSet s = parse_strokes_svg(
         R"(<svg width="2in" height="1in"><rect x="0" y="0" width="10" height="6" rx="2"/>

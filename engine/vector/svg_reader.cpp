@@ -35,6 +35,20 @@ constexpr int kMaxUseDepth = 32;
 constexpr size_t kMaxPoints = 10'000'000;
 constexpr int kMaxNesting = 256;  // elements in elements: deeper is no drawing, and the walk recurses
 
+// An element's name in SVG's namespace: where a file binds a prefix to it (xmlns:svg, as XML
+// tools write SVG inside other documents) "svg:path" is "path". A name in another namespace
+// (sodipodi:namedview, inkscape:…) keeps its prefix: editors' own data, not drawn.
+std::string element_name(const pugi::xml_node& node) {
+    const std::string name = node.name();
+    const size_t colon = name.find(':');
+    if (colon == std::string::npos) return name;
+    const std::string binding = "xmlns:" + name.substr(0, colon);
+    for (pugi::xml_node n = node; n; n = n.parent())
+        if (const pugi::xml_attribute a = n.attribute(binding.c_str()))
+            return std::string(a.as_string()) == "http://www.w3.org/2000/svg" ? name.substr(colon + 1) : name;
+    return name;
+}
+
 // Numbers separated by white space and commas (points lists, data-widths, viewBox, transforms).
 std::vector<double> number_list(const std::string& text, const std::string& where, const std::string& what) {
     std::vector<double> out;
@@ -197,7 +211,7 @@ public:
     }
 
     void walk(const pugi::xml_node& node, Context c, StrokeSet& set) {
-        const std::string name = node.name();
+        const std::string name = element_name(node);
         static const std::set<std::string> hidden = {"defs",  "metadata", "title",   "desc",           "style",
                                                      "symbol", "clipPath", "mask",   "linearGradient", "radialGradient",
                                                      "pattern", "marker",  "filter", "script", "foreignObject"};
@@ -251,7 +265,7 @@ private:
         offset[2] = glm::dvec3(length_of(node, "x", 0.0), length_of(node, "y", 0.0), 1.0);
         c.transform = c.transform * offset;
         const pugi::xml_node target = it->second;
-        if (std::string(target.name()) == "symbol") {  // a symbol is drawn through <use> only, as a group
+        if (element_name(target) == "symbol") {  // a symbol is drawn through <use> only, as a group
             if (target.attribute("viewBox")) throw Error(where_ + ": <symbol> with a viewBox: its viewport is not read");
             if (!apply_paint(target, c)) return;
             for (const pugi::xml_node& child : target.children())
@@ -272,14 +286,14 @@ private:
 
     std::string what(const pugi::xml_node& node) const {
         std::string s = "<";  // appended, not concatenated: GCC 12 warns (-Wrestrict) on the latter here
-        s += node.name();
+        s += element_name(node);
         s += "> #";
         s += std::to_string(index_ + 1);
         return s;
     }
 
     std::vector<Curve2D> curves_of(const pugi::xml_node& node, double stretch) const {
-        const std::string name = node.name(), w = what(node);
+        const std::string name = element_name(node), w = what(node);
         std::vector<Curve2D> curves(1);
         Curve2D& c = curves[0];
         if (name == "path") {
@@ -381,7 +395,7 @@ namespace {
 // set's extent.
 StrokeSet read_svg(const pugi::xml_document& doc, const std::string& where, bool geometry_only) {
     const pugi::xml_node root = doc.document_element();
-    if (std::string(root.name()) != "svg") throw Error(where + ": no <svg> element");
+    if (element_name(root) != "svg") throw Error(where + ": no <svg> element");
     StrokeSet set;
     if (auto v = root.attribute("viewBox")) {
         const std::vector<double> box = number_list(v.as_string(), where, "viewBox");
