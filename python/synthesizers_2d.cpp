@@ -187,14 +187,19 @@ pyb::object pattern(const pyb::object& reference, const pyb::object& path, const
     PatternSynthesis s;
     size_t elements = 0;
     float epsilon = 0.0f;
+    std::string warning;
     {
         const pyb::gil_scoped_release released;
         const PatternAnalysis ref =
             naming_input(reference_where, [&] { return analyze_pattern(std::move(strokes), ref_frame, desc); });
         elements = ref.elements.size();
         epsilon = ref.epsilon;
+        warning = pattern_analysis_warning(ref);
         s = naming_input(target_where, [&] { return synthesize_pattern(ref, target, desc); });
     }
+    if (!warning.empty() &&
+        PyErr_WarnEx(PyExc_UserWarning, printable(reference_where + ": " + warning).c_str(), 1) != 0)
+        throw pyb::error_already_set();
     pyb::list out = strokes_value(s.strokes.strokes);
     if (!return_info) return out;
     std::vector<float> centers;

@@ -44,6 +44,25 @@ TEST(PatternCli, FillsARegionAndFollowsAPath) {
     EXPECT_GT(load_strokes(out1d).strokes.size(), 40u);
 }
 
+// A scale as large as the drawing makes the whole reference one element: there is nothing to
+// arrange, and the command says so in one warning line naming the reference (the output, the
+// reference copied once, is still written). The default scale gives no warning.
+TEST(PatternCli, AScaleThatMakesOneElementIsSaid) {
+    const fs::path dir = test::temp_dir();
+    const std::string region = quote(test::source_dir() / "scenes/curves/circle.json");
+    auto r = run_linework("pattern " + quote(pattern("flowers.svg")) + " --region " + region + " -o " +
+                          quote(dir / "one.svg") + " --scale 1e30");
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("warning: " + pattern("flowers.svg").string() +
+                            ": its 276 strokes are one element at scale ε = 1e+30: there is no arrangement to follow"),
+              std::string::npos)
+        << r.output;
+    EXPECT_EQ(load_strokes(dir / "one.svg").strokes.size(), 276u);
+    r = run_linework("pattern " + quote(pattern("flowers.svg")) + " --region " + region + " -o " + quote(dir / "many.svg"));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_EQ(r.output.find("warning"), std::string::npos) << r.output;
+}
+
 TEST(PatternCli, HelpAndErrors) {
     const fs::path dir = test::temp_dir();
     auto r = run_linework("pattern --help");

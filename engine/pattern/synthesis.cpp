@@ -7,6 +7,7 @@
 
 #include "core/error.h"
 #include "core/random.h"
+#include "core/text.h"
 #include "core/timer.h"
 #include "pattern/lloyd.h"
 #include "pattern/variation.h"
@@ -170,6 +171,13 @@ PatternAnalysis analyze_pattern(std::vector<Stroke> strokes, const PatternFrame&
             a.col[k] = glm::length(ei.color - ej.color);
         }
     return a;
+}
+
+std::string pattern_analysis_warning(const PatternAnalysis& a) {
+    if (a.elements.size() != 1 || a.strokes.size() < 2) return {};
+    return "its " + std::to_string(a.strokes.size()) + " strokes are one element at scale ε = " + number_text(a.epsilon) +
+           ": there is no arrangement to follow, and the output copies the whole reference once per seed (a "
+           "smaller scale parts it into elements)";
 }
 
 PatternSynthesis synthesize_pattern(const PatternAnalysis& ref, const PatternFrame& target, const PatternDesc& desc) {

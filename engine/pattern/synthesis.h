@@ -94,6 +94,11 @@ struct PatternAnalysis {
 [[nodiscard]] PatternAnalysis analyze_pattern(std::vector<Stroke> strokes, const PatternFrame& frame,
                                               const PatternDesc& desc);
 
+// What a caller should say of an analysis whose strokes all fell into one element (a scale ε
+// as large as the drawing): there is no arrangement to follow, and the synthesis copies the
+// whole reference once per seed. Empty when there is nothing to say. The caller names the file.
+[[nodiscard]] std::string pattern_analysis_warning(const PatternAnalysis& analysis);
+
 struct PatternSynthesis {
     StrokeSet strokes;
     std::vector<int> source;            // per target element, the reference element it copies

@@ -11,6 +11,7 @@ import struct
 import subprocess
 import threading
 import time
+import warnings
 import xml.etree.ElementTree as ET
 import zlib
 from pathlib import Path
@@ -387,9 +388,10 @@ def test_pattern_from_python_strokes_along_a_path(tmp_path):
     strokes = linework.pattern(reference, path=CURVES / "wave.json", scale=8, rings=2, variation=0.5,
                                fit="skeleton", lloyd=10)
     assert_strokes_equal_json(strokes, tmp_path / "p.json")
-    # Strokes out are strokes in: the output feeds the synthesizer again.
-    again = linework.pattern(strokes, region=[[0, 0], [120, 0], [120, 90], [0, 90]], scale=8)
-    assert len(again) > 0
+    # Strokes out are strokes in: the output feeds the synthesizer again (at a scale that keeps
+    # its crosses apart: at 8, the crosses placed along the path touch, and all are one element).
+    again, info = linework.pattern(strokes, region=[[0, 0], [120, 0], [120, 90], [0, 90]], scale=2, return_info=True)
+    assert info["reference_elements"] > 100 and len(again) > 0
 
 
 def test_pattern_is_deterministic_per_seed():
@@ -399,6 +401,16 @@ def test_pattern_is_deterministic_per_seed():
     c = linework.pattern(PATTERNS / "stipples.svg", region=region, seed=8)
     assert len(a) == len(b) and all(np.array_equal(x["points"], y["points"]) for x, y in zip(a, b))
     assert len(a) != len(c) or any(not np.array_equal(x["points"], y["points"]) for x, y in zip(a, c))
+
+
+def test_pattern_of_one_element_warns_as_the_command_line_does():
+    region = curve_points(CURVES / "circle.json")
+    with pytest.warns(UserWarning, match=r"flowers\.svg: its 276 strokes are one element at scale ε = 1e\+30"):
+        one = linework.pattern(PATTERNS / "flowers.svg", region=region, scale=1e30)
+    assert len(one) == 276
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        linework.pattern(PATTERNS / "flowers.svg", region=region)
 
 
 def test_pattern_bad_input_gives_the_command_lines_message(tmp_path):

@@ -7,6 +7,7 @@
 #include "commands.h"
 #include "cli_numbers.h"
 #include "core/error.h"
+#include "core/log.h"
 #include "core/timer.h"
 #include "pattern/synthesis.h"
 #include "vector/curve.h"
@@ -64,6 +65,7 @@ int run_pattern(const PatternOptions& o) {
     Timer analysis_timer;
     const PatternAnalysis ref = naming(o.reference, [&] { return analyze_pattern(reference.strokes, ref_frame, desc); });
     const double analysis_ms = analysis_timer.elapsed_ms();
+    if (const std::string w = pattern_analysis_warning(ref); !w.empty()) log_warning(o.reference + ": " + w);
     size_t edges = 0;
     for (const auto& n : ref.distribution.neighbours) edges += n.size();
     // The reference's own frame: its bounding box's (default), or the file given for it.
