@@ -10,20 +10,15 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
-#include <sstream>
 #include <string>
 
 #include <CLI/CLI.hpp>
 
+#include "core/text.h"
+
 namespace lw::cli {
 
 namespace detail {
-
-inline std::string number_text(double x) {
-    std::ostringstream s;
-    s << x;
-    return s.str();
-}
 
 // A check that the option's text is a finite number x with ok(x); `what` is the message.
 template <typename Ok>
@@ -54,7 +49,7 @@ inline CLI::Validator non_negative(const std::string& unit = "") {
 // lo <= x <= hi.
 inline CLI::Validator within(double lo, double hi, const std::string& unit = "") {
     return detail::number_check([lo, hi](double x) { return x >= lo && x <= hi; },
-                                "must be between " + detail::number_text(lo) + " and " + detail::number_text(hi) +
+                                "must be between " + lw::number_text(lo) + " and " + lw::number_text(hi) +
                                     (unit.empty() ? "" : " " + unit));
 }
 

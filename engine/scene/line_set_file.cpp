@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 
+#include "core/text.h"
 #include "scene/object_reader.h"
 
 namespace lw {
@@ -247,7 +248,7 @@ LineSetStyle read_style(ObjectReader& set, const std::filesystem::path& file) {
         if (c.has("outline")) style.chaining.outline = c.boolean("outline");
         // Runs are cut to max_length and then dropped under min_length: nothing would be drawn.
         if (style.chaining.max_length_px > 0.0f && style.chaining.min_length_px > style.chaining.max_length_px)
-            c.fail_key("min_length", "is over max_length (" + ObjectReader::format(style.chaining.max_length_px) +
+            c.fail_key("min_length", "is over max_length (" + number_text(style.chaining.max_length_px) +
                                          " px): every run would be cut shorter than it and dropped");
         c.reject_unknown();
     }

@@ -5,7 +5,6 @@
 
 #include <filesystem>
 #include <set>
-#include <sstream>
 #include <string>
 
 #include <glm/glm.hpp>
@@ -14,6 +13,7 @@
 #include "core/color.h"
 #include "core/error.h"
 #include "core/log.h"
+#include "core/text.h"
 
 namespace lw::scene_detail {
 
@@ -64,7 +64,7 @@ public:
         if (!v.is_number()) fail_key(key, "expected a number, got " + std::string(v.type_name()));
         const double x = v.get<double>();
         if (!std::isfinite(x) || x < lo || x > hi)
-            fail_key(key, "must be between " + format(lo) + " and " + format(hi) + ", got " + v.dump());
+            fail_key(key, "must be between " + number_text(lo) + " and " + number_text(hi) + ", got " + v.dump());
         return x;
     }
 
@@ -96,7 +96,7 @@ public:
             if (!v[i].is_number()) fail_key(key, "expected an array of 3 numbers");
             const double x = v[i].get<double>();
             if (!std::isfinite(x) || x < lo || x > hi)
-                fail_key(key, "components must be between " + format(lo) + " and " + format(hi));
+                fail_key(key, "components must be between " + number_text(lo) + " and " + number_text(hi));
             out[i] = static_cast<float>(x);
         }
         return out;
@@ -121,12 +121,6 @@ public:
             }
     }
 
-    // A number as messages write it: 0.1, not 0.100000.
-    static std::string format(double x) {
-        std::ostringstream s;
-        s << x;
-        return s.str();
-    }
 
 private:
 

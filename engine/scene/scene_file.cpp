@@ -177,7 +177,7 @@ LineStyle read_line_type(ObjectReader& lines, LineType type, const std::filesyst
         // Ridges and valleys share rtsc's one rv_thresh.
         if (type == LineType::Valley && ridge_threshold && value != *threshold)
             r.fail_key("threshold", "ridges and valleys share one threshold (rtsc's rv_thresh); lines.ridge gives " +
-                                        ObjectReader::format(*threshold));
+                                        number_text(*threshold));
         ridge_threshold = ridge_threshold || type == LineType::Ridge;
         *threshold = value;
     }
