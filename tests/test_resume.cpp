@@ -189,5 +189,30 @@ TEST(Resume, AStillShotStartedFromItsStateEqualsAnUnbrokenOne) {
     }
 }
 
+// An animated model's lines do not depend on the frame a render starts at: the line mesh (its
+// weld, feature size and crease edges) is built in the pose at 0 s, so frame 3 of the Fox's
+// run drawn alone, or as a part, is frame 3 of the sequence, pixel for pixel. Built in the
+// first frame drawn, it differed in 0.97 % of the pixels (creases of another pose).
+TEST(Resume, AnAnimatedFrameDrawnAloneEqualsItsFrameInTheSequence) {
+    const fs::path dir = test::temp_dir();
+    std::ofstream(dir / "fox.json") << R"({"model": ")" << (test::data_dir() / "models/Fox/Fox.glb").string() << R"(",
+        "camera": {"eye": [191.75, 106.5, 142.66], "target": [0, 39.39, -10.74]},
+        "animation": {"clip": "Run", "fps": 24, "frames": [0, 11]}})";
+    const std::string args = test::quote(dir / "fox.json") + " --device cpu --size 240x180 --lines-only";
+    struct Run {
+        const char *name, *frames;
+    };
+    for (const Run run : {Run{"sequence", "--frames 0:3"}, Run{"alone", "--frames 3:3"}, Run{"part", "--frames 0:5 --part 3:5"}}) {
+        const auto r = test::run_linework("render " + args + " " + run.frames + " -o " + test::quote(dir / run.name));
+        ASSERT_EQ(r.exit_code, 0) << r.output;
+    }
+    const ImageRGBA8 sequence = read_image_rgba8(dir / "sequence" / test::frame_png(3));
+    size_t inked = 0;
+    for (size_t i = 0; i < sequence.pixels.size(); i += 4) inked += sequence.pixels[i] < 128;
+    EXPECT_GT(inked, 500u);
+    for (const char* other : {"alone", "part"})
+        EXPECT_TRUE(read_image_rgba8(dir / other / test::frame_png(3)).pixels == sequence.pixels) << other;
+}
+
 }  // namespace
 }  // namespace lw

@@ -42,7 +42,6 @@ struct CameraOverride {
 struct SessionOptions {
     VkFormat color_format = VK_FORMAT_R8G8B8A8_UNORM;  // B8G8R8A8 for a viewer's swapchain
     int subdivide = 0;          // midpoint subdivisions of the merged mesh (benchmarks)
-    float start_seconds = 0.0f; // the first frame's time: the line mesh is built in that pose
     // Parameterize every line set even where no style needs it (path dumps, a policy the
     // user chose); sets with a SLAM, dashes or displacement are parameterized anyway.
     bool coherent = false;
@@ -144,6 +143,7 @@ public:
 private:
     void load_line_styles();
     void pose(float seconds);
+    void build_meshes();
     [[nodiscard]] TriangleMesh posed_mesh(float seconds) const;
     double draw_ribbons(Frame& frame, uint64_t seed);
     bool parameterized() const;

@@ -177,7 +177,7 @@ void print_header(const RenderOptions& o, const SceneSession& session, const Con
 
 // Draws shot.start … shot.part.last, writing the part's frames (and their progress state)
 // and the states at chunk starts; 0, or 130 when a signal stopped it.
-int render_frames(const RenderOptions& o, const Shot& shot, const FrameFiles& files, float pose_seconds,
+int render_frames(const RenderOptions& o, const Shot& shot, const FrameFiles& files,
                   SceneSession& session) {
     const float fps = session.desc().animation.fps;
     Progress progress(shot.part.last - shot.start + 1, "frame");
@@ -188,7 +188,7 @@ int render_frames(const RenderOptions& o, const Shot& shot, const FrameFiles& fi
         // The state before the part's first frame: from the first PNG on, a state is there
         // for --resume (render_output.h).
         if (write && f == shot.part.first && files.sequence)
-            write_render_state(files.progress_state, {o.signature, f - 1, pose_seconds, session.snapshot().coherence});
+            write_render_state(files.progress_state, {o.signature, f - 1, session.snapshot().coherence});
         const Frame frame = session.frame({.when = frame_time(f, shot.range, fps),
                                            .outputs = {.color = write, .depth = write && o.exr, .draw = !o.state_only},
                                            .seed = uint64_t(f) + 1});
@@ -197,13 +197,13 @@ int render_frames(const RenderOptions& o, const Shot& shot, const FrameFiles& fi
         if (write) {
             write_frame_files(files, session, frame, f);
             if (files.sequence)
-                write_render_state(files.progress_state, {o.signature, f, pose_seconds, session.snapshot().coherence});
+                write_render_state(files.progress_state, {o.signature, f, session.snapshot().coherence});
             else
                 print_frame_report(files, session, frame, f);
         }
         if (!o.save_states.empty() && ends_chunk(f, shot.range, o.chunk)) {
             write_render_state(saved_state_path(o.save_states, f + 1),
-                               {o.state_signature, f, pose_seconds, session.snapshot().coherence});
+                               {o.state_signature, f, session.snapshot().coherence});
             ++states;
         }
         if (g_interrupted && f < shot.part.last) {
@@ -254,11 +254,6 @@ int run_render(const RenderOptions& o) {
     // Frames: the command line, else the scene's, else the clips' length (one frame without).
     Shot shot;
     shot.range = frames_given ? frames_flag : desc.animation.frames.value_or(FrameRange{0, 0});
-    // The first frame drawn (warm-up included) sets the pose the line mesh is built in; a
-    // saved state brings the pose of the render it came from.
-    const int first_drawn = (part_given ? part_flag : shot.range).first - o.warmup;
-    options.start_seconds = start_state ? start_state->pose_seconds
-                                        : frame_time(first_drawn, {first_drawn, first_drawn}, desc.animation.fps).seconds;
     SceneSession session(ctx, desc, options);
     if (!frames_given) shot.range = session.default_frames();
     shot.part = part_given ? part_flag : shot.range;
@@ -296,7 +291,7 @@ int run_render(const RenderOptions& o) {
             std::printf("all frames %d to %d are already in %s\n", shot.part.first, shot.part.last, o.output.c_str());
         return 0;
     }
-    const int stopped = render_frames(o, shot, files, options.start_seconds, session);
+    const int stopped = render_frames(o, shot, files, session);
     if (stopped != 0) return stopped;
     return exit_code_after_validation(ctx, validation);
 }

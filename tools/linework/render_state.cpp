@@ -16,7 +16,7 @@ namespace {
 // 2: one tracker per line set; 3: the line mesh's pose; 4: the view scale of the coherent
 // parameterization; 5: the paths of a still view (still_paths.h); 6: those written field by
 // field, with the key of the settings they were made with; 7: their keys mixed by core's mix64.
-constexpr char kMagic[8] = {'L', 'W', 'S', 'T', 'A', 'T', 'E', '7'};
+constexpr char kMagic[8] = {'L', 'W', 'S', 'T', 'A', 'T', 'E', '8'};
 
 class Writer {
 public:
@@ -156,7 +156,6 @@ void write_render_state(const std::filesystem::path& path, const RenderState& st
     w.put(uint32_t(state.signature.size()));
     w.put_bytes(state.signature.data(), state.signature.size());
     w.put(int32_t(state.frame));
-    w.put(state.pose_seconds);
     w.put(uint32_t(state.snapshot.sets.size()));
     for (const auto& set : state.snapshot.sets) put_state(w, set);
     w.put(uint32_t(state.snapshot.layers.size()));
@@ -182,7 +181,6 @@ RenderState read_render_state(const std::filesystem::path& path) {
     state.signature.resize(r.count(1));
     r.get_bytes(state.signature.data(), state.signature.size());
     state.frame = r.get<int32_t>();
-    state.pose_seconds = r.get<float>();
     const uint32_t sets = r.count(1);
     for (uint32_t i = 0; i < sets; ++i) state.snapshot.sets.push_back(get_state(r));
     const uint32_t layers = r.count(1);

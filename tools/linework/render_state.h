@@ -4,7 +4,7 @@
 // OUT/.linework-state (binary, rewritten after every frame; .linework-state-C-D for a
 // --part), and a farm's DIR/state_NNNN.lwstate (--save-states): the command's signature
 // (its options, so that a different render does not resume from it), the last frame
-// drawn, the pose the line mesh was built in, and the coherent parameterization's state after it (FrameRenderer::coherence_snapshot:
+// drawn, and the coherent parameterization's state after it (FrameRenderer::coherence_snapshot:
 // per tracker, the last splat's sprites and camera — tens to hundreds of kB).
 #pragma once
 
@@ -19,7 +19,6 @@ namespace lw::cli {
 struct RenderState {
     std::string signature;
     int frame = 0;              // the last frame drawn: the state is the one after it
-    float pose_seconds = 0.0f;  // the pose the render's line mesh was built in
     FrameRenderer::CoherenceSnapshot snapshot;
 };
 
