@@ -730,14 +730,18 @@ TEST_F(CoherenceGpu, AStillViewKeepsItsParameterization) {
     const Frame second = renderer.render(camera, view.eye, SurfaceStyle{}, lines, {.color = false}, &coherence);
     ASSERT_FALSE(first.sets.empty());
     ASSERT_EQ(first.sets[0].name, "silhouette");
-    ASSERT_EQ(first.sets[0].params.size(), 1u);  // the silhouette loop
-    ASSERT_EQ(second.sets[0].params.size(), 1u);
-    EXPECT_EQ(first.sets[0].params[0].votes, 0u);
-    EXPECT_GT(second.sets[0].params[0].votes, 100u);
-    EXPECT_TRUE(second.sets[0].params[0].fitted);
-    EXPECT_NEAR(second.sets[0].params[0].rho, first.sets[0].params[0].rho, 0.01f * first.sets[0].params[0].rho);
+    // Plain lines read no T: their fit is recorded beside the paths they draw.
+    EXPECT_TRUE(first.sets[0].params.empty());
+    const std::vector<PathParam>& a = first.sets[0].recorded_params;
+    const std::vector<PathParam>& b = second.sets[0].recorded_params;
+    ASSERT_EQ(a.size(), 1u);  // the silhouette loop
+    ASSERT_EQ(b.size(), 1u);
+    EXPECT_EQ(a[0].votes, 0u);
+    EXPECT_GT(b[0].votes, 100u);
+    EXPECT_TRUE(b[0].fitted);
+    EXPECT_NEAR(b[0].rho, a[0].rho, 0.01f * a[0].rho);
     // Same texture phase along the loop: T differs by less than a pixel's worth.
-    EXPECT_NEAR(second.sets[0].params[0].phi, first.sets[0].params[0].phi, first.sets[0].params[0].rho * 1.0f);
+    EXPECT_NEAR(b[0].phi, a[0].phi, a[0].rho * 1.0f);
 }
 
 // The coherence measures over an orbit, per policy (the full 120-frame 360° figure at
@@ -764,8 +768,7 @@ TEST_F(CoherenceGpu, OrbitMeasuresPerPolicy) {
             const ViewCamera view = camera_at(orbit, scene.camera, frame_time(f, {0, 29}, 24.0f));
             const CameraMatrices camera = camera_matrices(view, 320.0f / 240.0f, scene.bounds);
             const Frame frame = renderer.render(camera, view.eye, desc.style, lines, {.color = false}, &coherence);
-            std::vector<DumpGroup> groups;
-            for (const LineSetFrame& set : frame.sets) groups.push_back({set.name, &set.paths, &set.params});
+            const std::vector<DumpGroup> groups = line_set_dump_groups(frame);
             dumps.push_back(parse_path_dump(path_dump_json(f, 320, 240, groups), "frame"));
         }
         return std::make_pair(measure_sliding(dumps), measure_stretch(dumps));

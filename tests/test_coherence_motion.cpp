@@ -30,8 +30,7 @@ protected:
             const FrameRequest request{.when = {.progress = float(f) / float(frames - 1), .seconds = float(f) / 24.0f},
                                        .outputs = {.color = false}};
             const Frame frame = session.frame(request);
-            std::vector<DumpGroup> groups;
-            for (const LineSetFrame& set : frame.sets) groups.push_back({set.name, &set.paths, &set.params});
+            const std::vector<DumpGroup> groups = line_set_dump_groups(frame);
             dumps.push_back(parse_path_dump(path_dump_json(f, desc.width, desc.height, groups), "frame"));
         }
         return dumps;

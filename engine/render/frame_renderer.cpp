@@ -77,6 +77,16 @@ std::string inside_out_warning(const ClosedSurfaces& closed) {
 
 }  // namespace
 
+std::vector<DumpGroup> line_set_dump_groups(const Frame& frame) {
+    std::vector<DumpGroup> groups;
+    for (const LineSetFrame& set : frame.sets) {
+        const bool recorded = !set.recorded_paths.empty();
+        groups.push_back({set.name, recorded ? &set.recorded_paths : &set.paths,
+                          recorded ? &set.recorded_params : &set.params});
+    }
+    return groups;
+}
+
 std::vector<SvgGroup> line_set_svg_groups(const LinesDesc& lines, const Frame& frame, bool with_shapes) {
     std::vector<SvgGroup> groups;
     const std::vector<LineSetDesc> sets = effective_line_sets(lines);
@@ -336,8 +346,7 @@ Frame FrameRenderer::finish() {
         frame.screen_paths =
             compute_visibility(frame.paths, in.camera, depth, {.sample_spacing_px = in.lines.sample_spacing_px}, levels);
         frame.timings.visibility_ms = visibility.elapsed_ms();
-        prepare_sets(frame, slot.sets, in.lines, in.camera, depth, levels, coherence,
-                     slot.positions ? *slot.positions : line_mesh_->mesh.positions, in.outputs.draw ? &strokes : nullptr);
+        prepare_sets(frame, slot.sets, in, depth, levels, slot.positions ? *slot.positions : line_mesh_->mesh.positions, in.outputs.draw ? &strokes : nullptr);
     }
 
     // Vector layers: their own trackers and stroke geometry.
@@ -373,11 +382,17 @@ Frame FrameRenderer::finish() {
     return frame;
 }
 
-void FrameRenderer::prepare_sets(Frame& frame, const std::vector<LineSetDesc>& sets, const LinesDesc& lines,
-                                 const CameraMatrices& camera, const DepthImage& depth, const OcclusionCounter* levels,
-                                 const CoherenceParams* coherence, const std::vector<glm::vec3>& positions,
-                                 std::vector<std::vector<StrokeVertex>>* strokes) {
+void FrameRenderer::prepare_sets(Frame& frame, const std::vector<LineSetDesc>& sets, const FrameInput& in,
+                                 const DepthImage& depth, const OcclusionCounter* levels,
+                                 const std::vector<glm::vec3>& positions, std::vector<std::vector<StrokeVertex>>* strokes) {
     Timer param_timer;
+    const LinesDesc& lines = in.lines;
+    const CameraMatrices& camera = in.camera;
+    const CoherenceParams* coherence = in.coherence ? &*in.coherence : nullptr;
+    // Whether set i is fitted this frame (its tracker carries its parameterization on).
+    const auto fitted = [&](size_t i) {
+        return coherence && (in.parameterize_every_set || needs_parameterization(sets[i].style) || sets_[i].texture);
+    };
     const SurfaceFrame surface{&positions, &line_mesh_->mesh.faces};
     const FaceGroups* groups = groups_.face_group.empty() ? nullptr : &groups_;
     std::vector<size_t> enabled;
@@ -385,7 +400,7 @@ void FrameRenderer::prepare_sets(Frame& frame, const std::vector<LineSetDesc>& s
         if (!sets[i].enabled) continue;
         enabled.push_back(i);
         SetState& state = set_state(i);
-        if (coherence && !state.tracker)
+        if (fitted(i) && !state.tracker)
             state.tracker = std::make_unique<CoherenceTracker>(*ctx_, target().width, target().height);
     }
     // One set: its selection, parameterization (its own tracker) and strokes.
@@ -407,11 +422,15 @@ void FrameRenderer::prepare_sets(Frame& frame, const std::vector<LineSetDesc>& s
                         : select_line_set(compute_visibility(frame.paths, camera, depth, {.sample_spacing_px = spacing},
                                                              levels),
                                           set, groups);
-        if (coherence) {
-            out.params = state.tracker->update(out.paths, camera, surface, out.coherence);
+        if (fitted(i)) {
+            const bool for_the_record = !needs_parameterization(set.style) && !state.texture;
+            if (for_the_record) out.recorded_paths = out.paths;
+            std::vector<ScreenPath>& paths = for_the_record ? out.recorded_paths : out.paths;
+            std::vector<PathParam>& params = for_the_record ? out.recorded_params : out.params;
+            params = state.tracker->update(paths, camera, surface, out.coherence);
             // Strokes and dumps use samples at fixed texture phases (see resample_at_phase).
-            for (size_t p = 0; p < out.paths.size(); ++p)
-                if (out.paths[p].visible) out.paths[p] = resample_at_phase(out.paths[p], out.params[p], spacing);
+            for (size_t p = 0; p < paths.size(); ++p)
+                if (paths[p].visible) paths[p] = resample_at_phase(paths[p], params[p], spacing);
         }
         // Ribbons are synthesized over the read-back frame; plain sets are drawn by the line pass.
         if (strokes && set.style.ribbon.empty() && !(is_plain_line_set(set.style) && !state.texture))

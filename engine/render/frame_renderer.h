@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "coherence/coherence.h"
+#include "coherence/path_dump.h"
 #include "gpu/context.h"
 #include "gpu/timestamps.h"
 #include "lines/extract_gpu.h"
@@ -73,12 +74,22 @@ struct FrameOutputs {
 struct LineSetFrame {
     std::string name;
     size_t set = 0;                 // index in effective_line_sets(lines)
-    std::vector<ScreenPath> paths;  // the runs it selected, after its chaining options and its
-                                    // tracker (fragments dropped, merged paths split) and, when
-                                    // parameterized, resampled at fixed texture phases
-    std::vector<PathParam> params;  // per path when the frame was parameterized, else empty
+    std::vector<ScreenPath> paths;  // what it draws: the runs it selected, after its chaining
+                                    // options and, when its strokes read T (a SLAM, dashes,
+                                    // displacement) and the frame is parameterized, its tracker
+                                    // (fragments dropped, merged paths split) and resampled at
+                                    // fixed texture phases
+    std::vector<PathParam> params;  // per path of `paths` when it was parameterized so, else empty
+    // A set whose strokes read no T, parameterized for the record (FrameInput::
+    // parameterize_every_set: path dumps, a policy asked for): the tracker's pieces at fixed
+    // phases and their parameters. It is drawn from `paths`, as when nothing is parameterized:
+    // the pieces would draw caps and tapers at every cut, and a diagnostic must not change
+    // the picture.
+    std::vector<ScreenPath> recorded_paths;
+    std::vector<PathParam> recorded_params;
     CoherenceParams coherence;      // what the set was parameterized with
 };
+
 
 struct Frame {
     FrameReadback image;
@@ -98,6 +109,10 @@ struct FrameInput {
     LinesDesc lines;
     FrameOutputs outputs;
     std::optional<CoherenceParams> coherence;
+    // With `coherence`: parameterize every set (path dumps, a policy asked for), or only the
+    // sets whose strokes read T (a SLAM, dashes, displacement). A plain set fitted because
+    // another set is dashed would be cut into the tracker's pieces, and drawn differently.
+    bool parameterize_every_set = true;
     std::optional<std::vector<LayerFrame>> layers;
 };
 
@@ -106,6 +121,9 @@ struct FrameInput {
 // `with_shapes` off: the paths alone (what tools reading the lines back need; building the
 // strokes' shapes costs as much again as drawing them).
 [[nodiscard]] std::vector<SvgGroup> line_set_svg_groups(const LinesDesc& lines, const Frame& frame, bool with_shapes = true);
+// Each set's parameterized paths, as `--dump-paths` writes them (coherence/path_dump.h): the
+// drawn ones, or those recorded for a set drawn without its parameter.
+[[nodiscard]] std::vector<DumpGroup> line_set_dump_groups(const Frame& frame);
 
 class FrameRenderer {
 public:
@@ -238,12 +256,11 @@ private:
         std::unique_ptr<SlamTexture> texture;
     };
     SetState& set_state(size_t set);
-    // Per set: select, parameterize, and (with `strokes`) build stroke geometry (StrokeVertex)
-    // for non-plain sets. `levels`: the frame's occlusion-level index, when a set selects
-    // levels (a set with its own spacing tests visibility again and counts them too).
-    void prepare_sets(Frame& frame, const std::vector<LineSetDesc>& sets, const LinesDesc& lines,
-                      const CameraMatrices& camera, const DepthImage& depth, const OcclusionCounter* levels,
-                      const CoherenceParams* coherence, const std::vector<glm::vec3>& positions,
+    // Per set: select, parameterize (as `in` asks), and (with `strokes`) build stroke geometry
+    // (StrokeVertex) for non-plain sets. `levels`: the frame's occlusion-level index, when a
+    // set selects levels (a set with its own spacing tests visibility again and counts them too).
+    void prepare_sets(Frame& frame, const std::vector<LineSetDesc>& sets, const FrameInput& in, const DepthImage& depth,
+                      const OcclusionCounter* levels, const std::vector<glm::vec3>& positions,
                       std::vector<std::vector<StrokeVertex>>* strokes);
     void record_sets(VkCommandBuffer cmd, RenderTarget& target, const Frame& frame,
                      const std::vector<LineSetDesc>& sets, const LinesDesc& lines,

@@ -290,6 +290,7 @@ void SceneSession::begin_frame(const FrameRequest& request) {
                      .lines = desc_.lines,
                      .outputs = outputs,
                      .coherence = parameterized() ? std::optional(options_.coherence) : std::nullopt,
+                     .parameterize_every_set = options_.coherent,
                      .layers = layers_.descs.empty() ? std::nullopt : std::optional(std::move(layer_frames))});
     pending_.push_back({.seconds = request.when.seconds,
                         .seed = request.seed,
@@ -375,9 +376,7 @@ std::vector<SvgGroup> SceneSession::svg_groups(const Frame& frame, bool with_sha
 }
 
 std::vector<DumpGroup> SceneSession::dump_groups(const Frame& frame) const {
-    std::vector<DumpGroup> groups;
-    for (const LineSetFrame& set : frame.sets) groups.push_back({set.name, &set.paths, &set.params});
-    return groups;
+    return line_set_dump_groups(frame);
 }
 
 }  // namespace lw
