@@ -110,6 +110,26 @@ TEST(Cli, BadSceneKeyIsNamed) {
     EXPECT_NE(r.output.find("bad.json: camera.fovv: unknown key"), std::string::npos) << r.output;
 }
 
+// A model with clips rendered over several frames from the command line draws its rest pose
+// in each (only a scene's "animation" plays clips): a warning says so, naming the clips. One
+// frame, or a model without clips, says nothing.
+TEST(Cli, FramesOfAModelWithClipsSayTheClipsAreNotPlayed) {
+    const fs::path dir = test::temp_dir();
+    const std::string fox = quote(test::data_dir() / "models/Fox/Fox.glb");
+    auto r = run_linework("render " + fox + " --size 64x48 --device cpu --frames 0:1 -o " + quote(dir / "a"));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("warning: " + (test::data_dir() / "models/Fox/Fox.glb").string() +
+                            ": its animation clips are not played (clips: 0 \"Survey\", 1 \"Walk\", 2 \"Run\"): every "
+                            "frame draws the rest pose; a scene file's \"animation\" key plays them"),
+              std::string::npos)
+        << r.output;
+    for (const std::string& other : {fox + " --frames 0:0", quote(test::data_dir() / "models/spot/spot.glb") + " --frames 0:1"}) {
+        r = run_linework("render " + other + " --size 64x48 --device cpu -o " + quote(dir / "b"));
+        ASSERT_EQ(r.exit_code, 0) << r.output;
+        EXPECT_EQ(r.output.find("warning"), std::string::npos) << other << ": " << r.output;
+    }
+}
+
 // A transparent render composited over a colour is the render over that colour: the frame
 // is premultiplied `over` nothing, the PNG straight alpha (within 2/255 for the rounding).
 TEST(Cli, TransparentBackgroundCompositesToTheOpaqueRender) {

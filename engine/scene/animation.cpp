@@ -116,6 +116,12 @@ std::string clip_list(const Model& model) {
 
 }  // namespace
 
+std::string unplayed_clips_warning(const Model& model) {
+    if (model.animations.empty()) return {};
+    return model.path.string() + ": its animation clips are not played (" + clip_list(model) +
+           "): every frame draws the rest pose; a scene file's \"animation\" key plays them";
+}
+
 glm::vec3 sample_vec3(const AnimationSampler& sampler, float time_seconds) {
     check_sampler(sampler, 3, "a translation or scale");
     return sample_components<3>(sampler, time_seconds);

@@ -82,6 +82,10 @@ struct ClipChoice {
 // Kind::All gives every clip (none for a model without animations).
 [[nodiscard]] std::vector<int> select_clips(const Model& model, const ClipChoice& choice);
 
+// What to say of a model whose clips a scene does not play (no "animation" key) over several
+// frames: every frame draws the rest pose. Empty for a model without clips.
+[[nodiscard]] std::string unplayed_clips_warning(const Model& model);
+
 // A clip's length in seconds (its last key time); of several clips, the longest.
 [[nodiscard]] float clip_duration(const Model& model, int clip);
 [[nodiscard]] float clips_duration(const Model& model, const std::vector<int>& clips);

@@ -13,11 +13,13 @@
 #include <unistd.h>
 
 #include "commands.h"
+#include "core/log.h"
 #include "core/timer.h"
 #include "progress.h"
 #include "render_options.h"
 #include "render_output.h"
 #include "render_state.h"
+#include "scene/animation.h"
 #include "scene_options.h"
 
 namespace lw::cli {
@@ -256,6 +258,9 @@ int run_render(const RenderOptions& o) {
     shot.range = frames_given ? frames_flag : desc.animation.frames.value_or(FrameRange{0, 0});
     SceneSession session(ctx, desc, options);
     if (!frames_given) shot.range = session.default_frames();
+    if (!desc.animation.play && shot.range.last > shot.range.first)
+        for (const Model& model : session.scene().models)
+            if (const std::string w = unplayed_clips_warning(model); !w.empty()) log_warning(w);
     shot.part = part_given ? part_flag : shot.range;
     if (shot.part.first < shot.range.first || shot.part.last > shot.range.last)
         throw usage_error("--part " + o.part + " lies outside the range " + std::to_string(shot.range.first) + ":" +
