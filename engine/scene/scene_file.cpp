@@ -236,7 +236,8 @@ LinesDesc read_lines(ObjectReader& parent, const std::filesystem::path& file) {
         const double n = r.number("hidden_levels", 0, 1000);
         if (n != std::floor(n)) r.fail_key("hidden_levels", "expected a whole number of surfaces (0: all hidden lines)");
         desc.hidden_levels = uint32_t(n);
-        if (n > 0 && desc.hidden == HiddenLines::None)
+        // (Beside "line_sets" neither key applies: the scene reader says what does.)
+        if (n > 0 && desc.hidden == HiddenLines::None && !parent.has("line_sets"))
             r.fail_key("hidden_levels", "hidden lines are not drawn (\"hidden\" is \"none\"): set it to \"dashed\" or "
                                         "\"faint\", or remove \"hidden_levels\"");
     }
@@ -444,7 +445,8 @@ SceneDesc parse_scene_json(const std::string& text, const std::filesystem::path&
         // "hidden" and "hidden_levels" style the shorthand's lines; a set draws hidden lines
         // itself, so beside "line_sets" they would change nothing.
         if (scene.lines.hidden != HiddenLines::None || scene.lines.hidden_levels > 0)
-            r.fail_key("lines.hidden", std::string(kHiddenBesideLineSets));
+            r.fail_key(scene.lines.hidden != HiddenLines::None ? "lines.hidden" : "lines.hidden_levels",
+                       std::string(kHiddenBesideLineSets));
         warn_per_type_styles_beside_sets(r, scene.lines);
     }
     r.reject_unknown();

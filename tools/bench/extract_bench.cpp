@@ -32,9 +32,9 @@ glm::vec3 vec3_flag(const std::string& text, const char* flag) {
 LineParams types_flag(const std::string& types) {
     LineParams params;
     if (types.empty()) return params;
-    std::string unknown;
-    const std::optional<uint32_t> mask = line_types_from_list(types, unknown);
-    if (!mask) throw usage_error("--types: unknown line type \"" + unknown + "\" (" + line_type_names() + ")");
+    std::string error;
+    const std::optional<uint32_t> mask = line_types_from_list(types, error);
+    if (!mask) throw usage_error("--types: " + error);
     set_line_types(params, *mask);
     return params;
 }

@@ -80,9 +80,9 @@ void choose_line_types(const std::string& list, LinesDesc& lines) {
         throw usage_error("--lines chooses the types of a scene without \"line_sets\"; this scene selects them in its line "
                           "sets (\"select\": {\"types\": [...]})");
     if (list.empty()) throw usage_error("--lines: no line types given (" + line_type_names() + "; --no-lines draws none)");
-    std::string unknown;
-    const std::optional<uint32_t> types = line_types_from_list(list, unknown);
-    if (!types) throw usage_error("--lines: unknown line type \"" + unknown + "\" (" + line_type_names() + ")");
+    std::string error;
+    const std::optional<uint32_t> types = line_types_from_list(list, error);
+    if (!types) throw usage_error("--lines: " + error);
     set_line_types(lines.params, *types);
     lines.enabled = true;
 }
