@@ -14,6 +14,7 @@
 #include "core/image.h"
 #include "render/line_pass.h"
 #include "io/image_io.h"
+#include "lines/svg_export.h"
 #include "test_support.h"
 
 namespace lw {
@@ -92,6 +93,24 @@ TEST(SvgExport, StandardRendererDrawsThePng) {
             EXPECT_NE(r.svg.find("fill-opacity=\"0.25", hidden_group), std::string::npos);
         }
     }
+}
+
+// A set that selects hidden lines has its -hidden group in every frame, empty where the frame
+// has none (a pipeline reading the groups meets the same ones frame after frame); a set that
+// selects only visible lines (qi [0, 0] too) has none.
+TEST(SvgExport, AHiddenGroupIsWrittenWheneverTheSetSelectsHiddenLines) {
+    LineSelection visible, any, behind_one, level_zero;
+    any.visibility = Visibility::Any;
+    behind_one.qi = LevelRange{1, 1};
+    level_zero.qi = LevelRange{0, 0};
+    level_zero.visibility = Visibility::Any;  // replaced by qi
+    EXPECT_FALSE(visible.selects_hidden());
+    EXPECT_TRUE(any.selects_hidden());
+    EXPECT_TRUE(behind_one.selects_hidden());
+    EXPECT_FALSE(level_zero.selects_hidden());
+    const std::string svg = lines_svg(64, 48, {SvgGroup{.id = "front"}, SvgGroup{.id = "behind", .hidden = true}});
+    EXPECT_EQ(svg.find("front-hidden"), std::string::npos);
+    EXPECT_NE(svg.find("<g id=\"behind-hidden\">\n    </g>"), std::string::npos) << svg;
 }
 
 // The dashes cut as geometry are the shader's: every dash triangle lies where fract(s / 8) ≤ ½

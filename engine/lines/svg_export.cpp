@@ -93,7 +93,7 @@ std::string lines_svg(int width, int height, const std::vector<SvgGroup>& groups
         if (group.opacity < 1.0f) svg += " opacity=\"" + number(group.opacity, 3) + "\"";
         svg += ">\n";
         svg += shape_paths(group.shapes, group.opacity, "    ");
-        if (!group.hidden_shapes.empty()) {
+        if (group.hidden || !group.hidden_shapes.empty()) {
             svg += "    <g id=\"" + group.id + "-hidden\">\n";
             svg += shape_paths(group.hidden_shapes, group.opacity, "      ");
             svg += "    </g>\n";

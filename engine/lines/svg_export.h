@@ -12,8 +12,9 @@
 //     `opacity` and its shapes' opacities relative to it: a group is composited once, as
 //     the PNG draws such a set (gpu/coverage_layer.h), so that where its shapes overlap they
 //     do not blend twice;
-//   - `<g id=NAME-hidden>` inside it when the set draws hidden lines: their shapes in their
-//     look (faint: a quarter of the opacity; dashed: the dashes as shapes);
+//   - `<g id=NAME-hidden>` inside it when the set selects hidden lines (in every frame, empty
+//     in one that has none): their shapes in their look (faint: a quarter of the opacity;
+//     dashed: the dashes as shapes);
 //   - `<g id=NAME-centerlines display="none">` after it: one `<polyline>` per visible path
 //     (a closed loop repeats its first point), the paths themselves for tools to read back,
 //     with the set's colour, width, caps and joins (a mitre as SVG's miter at the stroke
@@ -40,6 +41,7 @@ struct SvgGroup {
     float opacity = 1.0f;  // the group's, for a set drawn once: the shapes' alpha is divided by it
     Cap cap = Cap::Square;  // the set's ends and joins, for the centre lines
     Join join = Join::Mitre;
+    bool hidden = false;  // the set selects hidden lines: its -hidden group is written
     const std::vector<ScreenPath>* paths = nullptr;  // the set's paths (null: none)
     // The set's strokes as the renderer builds them without the coverage margin (triangles
     // with per-vertex colour and alpha), visible and hidden runs apart.

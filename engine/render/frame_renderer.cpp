@@ -92,7 +92,7 @@ std::vector<SvgGroup> line_set_svg_groups(const LinesDesc& lines, const Frame& f
     const std::vector<LineSetDesc> sets = effective_line_sets(lines);
     for (const LineSetDesc& set : sets)
         groups.push_back({.id = set.name, .color = set.style.color, .width = set.style.width,
-                          .cap = set.style.cap, .join = set.style.join});
+                          .cap = set.style.cap, .join = set.style.join, .hidden = set.select.selects_hidden()});
     for (const LineSetFrame& out : frame.sets) {
         groups[out.set].paths = &out.paths;
         if (with_shapes) add_svg_shapes(lines, sets[out.set], out, groups[out.set]);

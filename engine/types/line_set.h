@@ -40,6 +40,8 @@ struct LineSelection {
     std::vector<std::string> materials;  // glTF material names; empty: all
 
     bool has_type(LineType t) const { return (types >> uint32_t(t)) & 1u; }
+    // Whether it selects runs behind a surface.
+    bool selects_hidden() const { return qi ? qi->max > 0 : visibility != Visibility::Visible; }
 };
 
 // Stroke ends (Freestyle's caps): butt stops at the end sample, square extends by half the
