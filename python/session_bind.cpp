@@ -156,9 +156,9 @@ format; relative paths from the working folder), or None with vertices (N×3) an
 (M×3) — a dict may come beside them, without "model". device: "auto", "cpu" (lavapipe),
 "gpu" or an index of `linework devices`. size=(w, h), eye/target/up (x, y, z) and fov
 (degrees) override the scene's as the command line's flags do. coherent: parameterize
-every line set's paths (RANSAC from frame to frame) even where no style needs it; as with
-`--dump-paths`, fragments under the minimum stroke length are then dropped and paths split
-where the parameterization does, so plain lines draw a little differently.
+every line set's paths (RANSAC from frame to frame) even where no style needs it, as
+`--dump-paths` does; a set whose strokes read no parameter is fitted beside its drawing and
+drawn as without it.
 validation: the Khronos layer on (None: LINEWORK_VALIDATION decides); a call that makes it
 speak raises RuntimeError. Bad input raises ValueError with the command line's message.)")
         .def(pyb::init([](const pyb::object& scene, const std::string& device, const pyb::object& size,

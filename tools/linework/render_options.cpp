@@ -24,7 +24,9 @@ void add_frame_options(CLI::App* cmd, RenderOptions& o) {
                     "in NAME-hidden, centre lines in a hidden NAME-centerlines group; under --frames FILE_NNNN.svg; its "
                     "folder is made if missing)")
         ->check(output_file_name(".svg"));
-    cmd->add_option("--hidden", o.hidden, "Hidden lines: none (default), dashed or faint")
+    cmd->add_option("--hidden", o.hidden,
+                    "Hidden lines: none (default), dashed or faint (a scene with \"line_sets\" draws them in a set "
+                    "that selects them, and refuses --hidden and --hidden-levels)")
         ->check(CLI::IsMember({"none", "dashed", "faint"}));
     cmd->add_option("--hidden-levels", o.hidden_levels,
                     "With --hidden: only hidden lines behind at most N surfaces (1: the first hidden level; 0, the "
@@ -43,9 +45,9 @@ void add_frame_options(CLI::App* cmd, RenderOptions& o) {
         ->check(within(-36000.0, 36000.0, "degrees"));
     cmd->add_option("--dump-paths", o.dump_paths,
                     "Write DIR/frame_NNNN.json per frame: visible paths, their line set, (ρ, φ), level and samples. "
-                    "The dump needs every line set parameterized, which drops fragments under --min-stroke-length "
-                    "and splits paths where the parameterization does: plain lines then draw as parameterized ones do, "
-                    "a little differently from a render without --dump-paths");
+                    "The dump needs every line set parameterized: a set whose strokes read no parameter (no SLAM, "
+                    "dashes or displacement) is fitted for the dump alone (its pieces, without fragments under "
+                    "--min-stroke-length, are what the dump holds) and drawn as without --dump-paths");
 }
 
 void apply_frame_overrides(const RenderOptions& o, SceneDesc& desc) {

@@ -29,7 +29,8 @@ void add_scene_options(CLI::App* cmd, SceneOptions& o, bool offline) {
     cmd->add_option("--lines", o.lines,
                     "Line types to draw, comma-separated, instead of the scene's: silhouette, suggestive, crease, border "
                     "(the default four), rtsc's ridge, valley, apparent_ridge, suggestive_highlight, "
-                    "principal_highlight, material_boundary and intersection (scene keys lines.TYPE; README \"Line types\")");
+                    "principal_highlight, material_boundary and intersection (scene keys lines.TYPE; README \"Line types\"). "
+                    "A scene with \"line_sets\" selects its types in them, and refuses --lines");
     cmd->add_option("--contours", o.contours,
                     "Silhouettes as the smooth zero set of n·v (rtsc's; the default), the mesh's own edges between front- "
                     "and back-facing faces (a closed outline of a low-poly model), or auto: mesh on models whose faces are "
