@@ -68,6 +68,7 @@ int run_farm(const FarmOptions& o, const CLI::App& cmd) {
                         .warmup = std::max(o.warmup, 0)};
     // The frame options are checked here, once, rather than by every task on the farm.
     SceneDesc desc = scene_from_options(o.render.scene);
+    check_flags_shape_drawn_lines(o.render.scene, desc.lines);
     apply_frame_overrides(o.render, desc);
     (void)camera_override(o.render);
     const FarmPlan plan = plan_farm(request);

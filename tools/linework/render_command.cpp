@@ -242,6 +242,7 @@ int run_render(const RenderOptions& o) {
     const FrameRange frames_flag = frames_given ? parse_frames(o.frames) : FrameRange{};
     const FrameRange part_flag = part_given ? parse_frames(o.part, "--part") : FrameRange{};
     SceneDesc desc = scene_from_options(o.scene);
+    check_flags_shape_drawn_lines(o.scene, desc.lines);
     apply_frame_overrides(o, desc);
     FrameFiles files{o.output, o.svg, o.state_only ? std::string() : o.dump_paths, o.exr};
     const std::optional<RenderState> start_state = read_start_state(o);

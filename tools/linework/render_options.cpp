@@ -70,6 +70,8 @@ void apply_frame_overrides(const RenderOptions& o, SceneDesc& desc) {
         desc.style.shading = o.shading == "flat" ? Shading::Flat : o.shading == "unlit" ? Shading::Unlit : Shading::Toon;
     }
     if (o.lines_only && o.no_lines) throw usage_error("--lines-only and --no-lines leave nothing to draw");
+    if (o.lines_only && !o.shading.empty() && o.shading != "none")
+        throw usage_error("--shading " + o.shading + " shades the surface, --lines-only draws none: give one");
     if (o.scene.lines && o.no_lines) throw usage_error("--lines chooses line types, --no-lines draws none: give one");
     // The flag that asks for hidden lines to be drawn, if any.
     const char* hidden_flag = o.hidden_levels.value_or(0) > 0 ? "--hidden-levels"

@@ -1,11 +1,13 @@
 #include "scene_options.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 
 #include "commands.h"
 #include "cli_numbers.h"
 #include "core/color.h"
+#include "render/line_sets.h"
 
 namespace lw::cli {
 
@@ -125,6 +127,27 @@ SceneDesc scene_from_options(const SceneOptions& o) {
     if (!o.slam.empty() && !std::filesystem::exists(o.slam)) throw Error(o.slam + ": no such SLAM file");
     if (!o.slam.empty()) use_slam_strokes(desc.lines, o.slam, o.stroke_width);
     return desc;
+}
+
+void check_flags_shape_drawn_lines(const SceneOptions& o, const LinesDesc& lines) {
+    if (!lines.enabled) return;
+    uint32_t drawn = 0;  // bit (1 << LineType) of every type an enabled set draws
+    for (const LineSetDesc& set : effective_line_sets(lines))
+        if (set.enabled) drawn |= set.select.types;
+    const auto draws = [&](std::initializer_list<LineType> types) {
+        return std::any_of(types.begin(), types.end(), [&](LineType t) { return (drawn >> uint32_t(t)) & 1u; });
+    };
+    const std::string which = o.lines ? "--lines " + *o.lines : o.input;
+    if (!o.contours.empty() && !draws({LineType::Silhouette}))
+        throw usage_error("--contours: shapes silhouettes, which " + which + " does not draw");
+    if (!o.slam.empty() && !draws({LineType::Silhouette, LineType::Suggestive}))
+        throw usage_error("--slam: textures silhouettes and suggestive contours, which " + which + " does not draw");
+    // Creases, borders, material boundaries and intersections read no curvature.
+    if (!o.curvature.empty() &&
+        !draws({LineType::Silhouette, LineType::Suggestive, LineType::Ridge, LineType::Valley, LineType::ApparentRidge,
+                LineType::SuggestiveHighlight, LineType::PrincipalHighlight}))
+        throw usage_error("--curvature: fits the curvature of silhouettes, suggestive contours and rtsc's other lines, "
+                          "none of which " + which + " draws");
 }
 
 SessionOptions session_options(const SceneOptions& o, const SceneDesc& desc) {

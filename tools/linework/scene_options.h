@@ -39,6 +39,12 @@ void add_scene_options(CLI::App* cmd, SceneOptions& o, bool offline);
 
 // The scene file or bare model with --size and --slam applied; errors name the file.
 [[nodiscard]] SceneDesc scene_from_options(const SceneOptions& o);
+// Offline renders: a flag that shapes only line types `lines` does not draw (--contours
+// without silhouettes, --slam without silhouettes or suggestive contours, --curvature with
+// only creases, borders, material boundaries or intersections) changes nothing, and is
+// refused as the flags that style lines on a render without lines are. (The viewer takes
+// them: its panel can turn the types on.)
+void check_flags_shape_drawn_lines(const SceneOptions& o, const LinesDesc& lines);
 // Policy, splat radius, RANSAC inlier distance, fragment length and κ.
 [[nodiscard]] SessionOptions session_options(const SceneOptions& o, const SceneDesc& desc);
 [[nodiscard]] bool validation_on(const SceneOptions& o);
