@@ -1,9 +1,13 @@
 // python/session_frames.cpp — a Python session's frames: renders, lines and sequences as
 // NumPy data, drawn exactly as `linework render` draws frame f (frame_time over the range,
 // ribbon seed f + 1).
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 
 #include "session.h"
+
+#include "core/image.h"
 
 namespace lw::py {
 
@@ -39,8 +43,12 @@ pyb::dict timings_of(const FrameTimings& t) {
     d["chain_ms"] = t.chain_ms;
     d["visibility_ms"] = t.visibility_ms;
     d["coherence_ms"] = t.coherence_ms;
-    for (const PassTime& p : t.gpu)
-        if (p.ms >= 0.0) d[pyb::str("gpu " + p.name + " ms")] = p.ms;
+    for (const PassTime& p : t.gpu) {
+        if (p.ms < 0.0) continue;
+        std::string key = "gpu_" + p.name + "_ms";  // "gpu_lines_draw_ms", as the keys above
+        std::replace_if(key.begin(), key.end(), [](char c) { return !std::isalnum(static_cast<unsigned char>(c)); }, '_');
+        d[pyb::str(key)] = p.ms;
+    }
     return d;
 }
 
@@ -108,7 +116,7 @@ pyb::object Session::render(std::optional<int> frame, std::optional<float> secon
     const PathTime when = time_of(frame, seconds, seed);
     Frame f = draw(when, seed, {.color = true, .depth = depth});
     const int w = f.image.color.width, h = f.image.color.height;
-    pyb::object image = image_to_array(std::move(f.image.color));
+    pyb::object image = image_to_array(straight_alpha(f.image.color));
     if (!depth) return image;
     return pyb::make_tuple(image, depth_array(std::move(f.image.depth), w, h));
 }
@@ -126,7 +134,7 @@ FrameResult Session::result(int index, const PathTime& when, uint64_t seed, bool
     if (lines) r.lines = lines_of(f, hidden);
     const auto [w, h] = size();
     if (depth) r.depth = depth_array(std::move(f.image.depth), w, h);
-    if (image) r.image = image_to_array(std::move(f.image.color));
+    if (image) r.image = image_to_array(straight_alpha(f.image.color));
     return r;
 }
 

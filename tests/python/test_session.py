@@ -1,6 +1,7 @@
 """linework.Session against the command line: the same lines as its SVG, the same pixels as its
 PNG, meshes as arrays like the same mesh from a file, and the command line's error messages."""
 import json
+import re
 
 import numpy as np
 import pytest
@@ -28,6 +29,21 @@ def test_lines_and_render_equal_the_cli(tmp_path):
     render = s.render()
     assert render.shape == (180, 240, 4) and render.dtype == np.uint8
     assert np.array_equal(render, image)
+
+
+def test_a_transparent_render_equals_the_clis_png(tmp_path):
+    # Over a transparent background both give straight alpha, as PNG stores it (Python gave
+    # the premultiplied frame: [243, 0, 0, 243] where the PNG has [255, 0, 0, 243]).
+    scene = tmp_path / "transparent.json"
+    scene.write_text(json.dumps({"model": str(SPOT), "size": [240, 180], "shading": "none",
+                                 "background": "transparent", "lines": {"silhouette": {"color": [1, 0, 0]}},
+                                 "camera": {"eye": [2.6, 0.9, -2.4], "target": [0, 0.05, 0], "fov": 35}}))
+    image, _ = cli_render(tmp_path, scene)
+    partial = (image[..., 3] > 0) & (image[..., 3] < 255)
+    assert (image[partial][:, 0] == 255).sum() > 100  # red silhouette edges, straight
+    s = linework.Session(scene, device="cpu")
+    assert np.array_equal(s.render(), image)
+    assert np.array_equal(s.frame().image, image)
 
 
 def test_line_sets_scene_equals_the_cli(tmp_path):
@@ -167,6 +183,8 @@ def test_frames_snapshot_and_restore(tmp_path):
     for f in frames:
         assert np.array_equal(f.image, linework.read_image(out / f"frame_{f.index:04d}.png")), f.index
         assert f.lines["silhouette"] and f.timings["total_ms"] > 0
+        # One key style: total_ms, …, gpu_surface_ms (it was "gpu surface ms").
+        assert "gpu_surface_ms" in f.timings and all(re.fullmatch(r"[a-z0-9_]+_ms", k) for k in f.timings), f.timings
     # render(frame=f) draws frame f of the scene's range, in order a coherent sequence too.
     single = linework.Session(scene, device="cpu")
     images = [single.render(frame=f) for f in range(6)]
