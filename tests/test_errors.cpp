@@ -67,6 +67,8 @@ void write_fixtures(const fs::path& tmp) {
     write(tmp / "unknownkey.json", R"({"model": ")" + spot + R"(", "wobble": 1})");
     write(tmp / "badsize.json", R"({"model": ")" + spot + R"(", "size": [0, 10]})");
     write(tmp / "badsamples.json", R"({"model": ")" + spot + R"(", "samples": 2})");
+    write(tmp / "setslam.json", R"({"model": ")" + spot + R"(", "line_sets": [{"name": "a", "style": {"slam": "nope.exr"}}]})");
+    write(tmp / "layerfile.json", R"({"layers": [{"strokes": "nope.svg"}]})");
     write(tmp / "setlevels.json", R"({"model": ")" + spot +
                                       R"(", "lines": {"hidden_levels": 2}, "line_sets": [{"name": "a"}]})");
     write(tmp / "maxlength.json",

@@ -190,11 +190,13 @@ TEST(RibbonCli, SceneLineStyleDrawsRibbonsAlongPaths) {
     EXPECT_GT(coloured, 100u);
     EXPECT_LT(black, coloured / 4) << "plain silhouette lines drawn under the ribbon";
 
-    // A missing exemplar names the file; a SLAM and a ribbon on one type name the key.
+    // A missing exemplar names the scene, the key and the file; a SLAM and a ribbon on one
+    // type name the key.
     write_text(files.dir / "missing.json", scene(R"({"ribbon": ")" + (files.dir / "nope.png").string() + R"("})"));
     const auto missing = run_linework("render " + quote(files.dir / "missing.json") + " -o " + quote(files.dir / "m"));
     EXPECT_EQ(missing.exit_code, 1) << missing.output;
-    EXPECT_NE(missing.output.find("linework: error: " + (files.dir / "nope.png").string() + ": no such file"),
+    EXPECT_NE(missing.output.find("linework: error: " + (files.dir / "missing.json").string() +
+                                  ": lines.silhouette.ribbon: " + (files.dir / "nope.png").string() + ": no such file"),
               std::string::npos)
         << missing.output;
     write_text(files.dir / "both.json", scene(R"({"ribbon": "a.png", "slam": "b.exr"})"));

@@ -453,6 +453,13 @@ SceneDesc parse_scene_json(const std::string& text, const std::filesystem::path&
     return scene;
 }
 
+void check_key_file(const SceneDesc& desc, const std::string& key, const std::string& path) {
+    std::error_code ec;
+    if (path.empty() || std::filesystem::exists(path, ec)) return;
+    throw Error((desc.source.empty() ? std::string("scene") : desc.source.string()) + ": " + key + ": " + path +
+                ": no such file");
+}
+
 SceneDesc load_scene_file(const std::filesystem::path& path) {
     std::error_code ec;
     if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))

@@ -85,6 +85,13 @@ inline constexpr const char* kHiddenBesideLineSets =
     "itself (\"select\": {\"visibility\": \"hidden\"} or {\"qi\": [1, 1]}, with a style such as "
     "\"dashes\": [6, 4])";
 
+// A file a scene key names (a style's SLAM or ribbon exemplar, a layer's strokes), checked
+// when the scene loads: a missing one is refused naming the scene and the key as well as the
+// file ("spot.json: line_sets[0].style.slam: nope.exr: no such file"), where the file's
+// reader would name the file alone. Parsing does not look for files (a scene may be read
+// where they are not: tests, scene editors).
+void check_key_file(const SceneDesc& desc, const std::string& key, const std::string& path);
+
 // True when the path names a model (by extension: .gltf, .glb, .obj, .ply) rather than a scene file.
 [[nodiscard]] bool is_model_path(const std::filesystem::path& path);
 

@@ -1,6 +1,8 @@
 #include "session/scene_layers.h"
 
 #include <algorithm>
+#include <string>
+#include <utility>
 
 #include "io/image_io.h"
 #include "io/slam_io.h"
@@ -13,7 +15,12 @@ namespace lw {
 SceneLayers load_scene_layers(const SceneDesc& desc) {
     SceneLayers layers;
     layers.descs = desc.layers;
-    for (const VectorLayerDesc& layer : desc.layers) {
+    for (size_t i = 0; i < desc.layers.size(); ++i) {
+        const VectorLayerDesc& layer = desc.layers[i];
+        const std::string key = "layers[" + std::to_string(i) + "].";
+        for (const auto& [name, path] : {std::pair{"strokes", &layer.strokes}, std::pair{"slam", &layer.slam},
+                                         std::pair{"ribbon", &layer.ribbon}})
+            check_key_file(desc, key + name, *path);
         StrokeSet drawing = load_strokes(layer.strokes);
         std::vector<std::vector<glm::vec2>> loops;
         for (const Stroke& stroke : drawing.strokes)

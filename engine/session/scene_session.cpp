@@ -155,8 +155,12 @@ void SceneSession::load_line_styles() {
     // SLAM or ribbon exemplar shared by several sets (or kept from before) is read once.
     std::vector<std::optional<Slam>> slams;
     std::vector<std::optional<Exemplar>> ribbons;
-    for (const LineSetDesc& set : sets_) {
-        const LineSetStyle& style = set.style;
+    for (size_t i = 0; i < sets_.size(); ++i) {
+        const LineSetStyle& style = sets_[i].style;
+        const std::string key = desc_.lines.sets.empty() ? "lines." + sets_[i].name + "."
+                                                         : "line_sets[" + std::to_string(i) + "].style.";
+        check_key_file(desc_, key + "slam", style.slam);
+        check_key_file(desc_, key + "ribbon", style.ribbon);
         std::optional<Slam> slam = already_read(style.slam, &LineSetStyle::slam, sets_, slams);
         if (!slam) slam = already_read(style.slam, &LineSetStyle::slam, previous, slams_);
         if (!style.slam.empty() && !slam) slam = read_slam(style.slam);

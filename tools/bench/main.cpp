@@ -25,8 +25,9 @@
 
 #include <CLI/CLI.hpp>
 
-#include "core/error.h"
+#include "cli_errors.h"
 #include "cli_numbers.h"
+#include "core/error.h"
 #include "core/memory.h"
 #include "core/timer.h"
 #include "geometry/subdivide.h"
@@ -350,7 +351,8 @@ int main(int argc, char** argv) {
     } catch (const CLI::CallForHelp& e) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
-        std::fprintf(stderr, "linework-bench: error: %s\nRun with --help for more information.\n", e.what());
+        std::fprintf(stderr, "linework-bench: error: %s\nRun with --help for more information.\n",
+                     lw::cli::parse_error_text(e).c_str());
         return 2;
     }
     try {

@@ -11,6 +11,7 @@
 
 #include <unistd.h>
 
+#include "cli_errors.h"
 #include "commands.h"
 #include "core/error.h"
 #include "core/memory.h"
@@ -89,7 +90,8 @@ int main(int argc, char** argv) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
         // As every other error: one line with the tool's prefix (CLI11's own print has none).
-        std::fprintf(stderr, "linework: error: %s\nRun with --help for more information.\n", e.what());
+        std::fprintf(stderr, "linework: error: %s\nRun with --help for more information.\n",
+                     lw::cli::parse_error_text(e).c_str());
         return 2;
     }
 
