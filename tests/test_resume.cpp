@@ -148,6 +148,7 @@ TEST(Resume, ASecondInterruptStopsAtOnce) {
     ASSERT_TRUE(wait_for(exited)) << "the render went on after a second Ctrl-C";
     EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGINT);
     EXPECT_FALSE(fs::exists(out + "/frame_0000.png"));
+    EXPECT_TRUE(log_holds("stopped at once; the frames written are whole; run the same command with --resume"));
 }
 
 // A still camera on a dense model: the paths kept from frame to frame (still_paths.h) travel
@@ -212,6 +213,23 @@ TEST(Resume, AnAnimatedFrameDrawnAloneEqualsItsFrameInTheSequence) {
     EXPECT_GT(inked, 500u);
     for (const char* other : {"alone", "part"})
         EXPECT_TRUE(read_image_rgba8(dir / other / test::frame_png(3)).pixels == sequence.pixels) << other;
+}
+
+// A part of a parameterized shot rendered without a state starts its strokes afresh, unlike
+// the same frames of one render: said. Plain lines carry nothing from frame to frame: silent.
+TEST(Resume, APartWithoutItsStateSaysItStartsAfresh) {
+    const fs::path dir = test::temp_dir();
+    const std::string spot = test::quote(test::data_dir() / "models/spot/spot.glb") +
+                             " --device cpu --size 64x48 --frames 0:3 --part 2:3 --orbit 10 -o " + test::quote(dir / "out");
+    auto r = test::run_linework("render " + spot + " --slam " + test::quote(test::source_dir() / "scenes/slams/dots.exr"));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("warning: --part 2:3 without --start-state or --warmup: the strokes' parameterization "
+                            "starts afresh at frame 2"),
+              std::string::npos)
+        << r.output;
+    r = test::run_linework("render " + spot);
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_EQ(r.output.find("warning"), std::string::npos) << r.output;
 }
 
 }  // namespace

@@ -86,6 +86,9 @@ public:
     LinesDesc& lines() { return desc_.lines; }
     SurfaceStyle& surface() { return desc_.style; }
     CoherenceParams& coherence() { return options_.coherence; }  // the base (viewer: policy, radius)
+    // Whether a frame carries a parameterization on to the next (a set or layer reads T, or
+    // every set is parameterized): then a frame depends on the frames drawn before it.
+    [[nodiscard]] bool parameterized() const;
     // The line mesh again (a new crease angle); temporal state starts afresh.
     void rebuild_lines();
     // New lines as a whole (a Python script's edit): SLAMs and ribbon exemplars the new sets
@@ -146,7 +149,6 @@ private:
     void build_meshes();
     [[nodiscard]] TriangleMesh posed_mesh(float seconds) const;
     double draw_ribbons(Frame& frame, uint64_t seed);
-    bool parameterized() const;
 
     struct Pending {  // what finish_frame() needs of a frame's request
         float seconds = 0.0f;

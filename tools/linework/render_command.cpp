@@ -35,6 +35,9 @@ volatile std::sig_atomic_t g_interrupted = 0;
 // a temporary file may be left (*.partial.*).
 void on_stop_signal(int signal) {
     if (g_interrupted) {
+        static const char stopped[] =
+            "\nlinework: stopped at once; the frames written are whole; run the same command with --resume to go on\n";
+        [[maybe_unused]] const ssize_t said = ::write(STDERR_FILENO, stopped, sizeof stopped - 1);
         std::signal(signal, SIG_DFL);
         std::raise(signal);
         return;
@@ -266,6 +269,10 @@ int run_render(const RenderOptions& o) {
     if (shot.part.first < shot.range.first || shot.part.last > shot.range.last)
         throw usage_error("--part " + o.part + " lies outside the range " + std::to_string(shot.range.first) + ":" +
                           std::to_string(shot.range.last));
+    if (part_given && !start_state && o.warmup == 0 && shot.part.first > shot.range.first && session.parameterized())
+        log_warning("--part " + o.part + " without --start-state or --warmup: the strokes' parameterization starts "
+                    "afresh at frame " + std::to_string(shot.part.first) + ", where one render of the range carries it "
+                    "on from the frames before (a farm's frames task starts from its state phase's)");
     if (o.state_only) {
         // Frames after the last chunk start leave no state: not drawn.
         int last = shot.part.last;
