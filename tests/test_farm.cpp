@@ -127,6 +127,7 @@ TEST(Farm, ExactPlanRunHereEqualsOneRender) {
     EXPECT_EQ(early.exit_code, 1) << early.output;
     EXPECT_NE(early.output.find("state_0008.lwstate: no render state"), std::string::npos) << early.output;
     const auto failed = test::run_linework("farm status " + test::quote(dir / "farm"));
+    EXPECT_EQ(failed.exit_code, 1) << "a failed task, not 3 (not yet)";
     EXPECT_NE(failed.output.find("failed (exit 1, see"), std::string::npos) << failed.output;
     std::ifstream log(dir / "farm/logs" / ("frames_" + last + ".log"));
     const std::string logged((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());

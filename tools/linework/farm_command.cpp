@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <memory>
@@ -100,6 +101,13 @@ int run_farm(const FarmOptions& o, const CLI::App& cmd) {
     std::printf("wrote %s\n", plan_file.string().c_str());
     std::printf("wrote %s/slurm/submit.sh (run it to submit; then: linework farm status %s)\n",
                 plan.request.dir.string().c_str(), plan.request.dir.string().c_str());
+    // sbatch installed without a cluster fails at submission with its own "fatal: …": say so
+    // now, and what runs the tasks without Slurm. (A bounded wait: a controller that is down
+    // can keep sinfo retrying.)
+    if (std::system("timeout 5 sinfo --noheader > /dev/null 2>&1") != 0)
+        std::printf("note: no Slurm controller answers here (sinfo): submit.sh needs a cluster; without one, run "
+                    "each task with linework farm task %s PHASE I (README \"Render farm\")\n",
+                    plan.request.dir.string().c_str());
     return 0;
 }
 
@@ -172,7 +180,8 @@ int run_status(const std::string& dir) {
     if (!missing.empty()) std::printf("; missing %s", frame_list(missing).c_str());
     if (failed) std::printf("; %d task(s) failed", failed);
     std::printf("\n");
-    return missing.empty() ? 0 : 3;
+    // A failed task is not "not yet": a loop waiting for the shot must be able to stop.
+    return failed ? 1 : missing.empty() ? 0 : 3;
 }
 
 // Runs `command` with its output passed through to ours and appended to `log`; returns its
@@ -264,7 +273,8 @@ Runner add_farm_command(CLI::App& app) {
     cmd->add_option("--cpus-per-task", o->cpus_per_task, "CPUs Slurm gives each task (default 1)");
 
     CLI::App* status = cmd->add_subcommand("status", "List a farm folder's finished, missing and failed frames "
-                                                     "(exit 0 when every frame is there, 3 when some are missing)");
+                                                     "(exit 0 when every frame is there, 3 when some are still missing, 1 when a task "
+                                                     "failed)");
     status->add_option("dir", o->status_dir, "Farm folder (made by linework farm)")->required();
     CLI::App* task = cmd->add_subcommand("task", "Run task I of a phase of the plan (for schedulers that hand out "
                                                  "numbered tasks: OpenCue, Deadline; README \"Render farm\")");
