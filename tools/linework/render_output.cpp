@@ -124,12 +124,16 @@ std::optional<int> resume_point(const std::string& signature, const FrameFiles& 
     if (first_missing > part.last && !std::filesystem::exists(state_path)) return first_missing;
     const RenderState state = read_render_state(state_path);
     if (state.signature != signature)
-        throw Error(state_path.string() + ": written by a render with other options; rerun that command "
+        throw Error(state_path.string() + ": written by a render with other options (the scene, camera, style or "
+                                          "line flags differ from this command's); give the options that render had, "
                                           "with --resume, or remove the file to start over");
     if (first_missing > part.last) return first_missing;
     if (state.frame != first_missing - 1 && state.frame != first_missing - 2)
         throw Error(state_path.string() + ": holds the state after frame " + std::to_string(state.frame) +
-                    ", but the first missing frame is " + std::to_string(first_missing));
+                    ", but the first missing frame is " + std::to_string(first_missing) +
+                    " (removed after the render went past it?), and the state to go on from there is gone: remove "
+                    "the file to render the range again, or draw the missing frames with --part and --warmup K "
+                    "(coherent after K frames)");
     restore_render_state(session, state, range);
     const int start = state.frame + 1;
     if (start < first_missing)
