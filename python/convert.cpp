@@ -107,6 +107,11 @@ std::vector<uint32_t> array_to_indices(const pyb::array& array, const std::strin
     throw pyb::value_error(name + ": expected integer vertex indices, got dtype " + std::string(pyb::str(array.dtype())));
 }
 
+void check_output_folder(const std::filesystem::path& path) {
+    if (const std::filesystem::path folder = path.parent_path(); !folder.empty() && !std::filesystem::is_directory(folder))
+        throw pyb::value_error("path: " + path.string() + ": the folder " + folder.string() + " does not exist");
+}
+
 std::string printable(const std::string& message) {
     std::string out;
     out.reserve(message.size());

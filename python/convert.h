@@ -7,6 +7,7 @@
 // strides), checked for shape with a ValueError naming the argument.
 #pragma once
 
+#include <filesystem>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -64,6 +65,11 @@ void check_validation(Context& ctx);
 // The message as valid UTF-8 (Python's text): bytes that are not (an error quoting a binary
 // file's bytes) become '?', where pybind11 would otherwise raise with an empty message.
 std::string printable(const std::string& message);
+
+// ValueError "path: P: the folder F does not exist" for a file to write whose folder is missing,
+// as the command line's -o says it (the writers' own messages differed: OpenEXR's came twice
+// over, OpenImageIO's as a RuntimeError).
+void check_output_folder(const std::filesystem::path& path);
 
 // Runs f; an engine ParameterError about one of `names` (engine name → Python argument,
 // e.g. {"ribbon piece", "piece"}) becomes a ValueError naming the argument, others keep

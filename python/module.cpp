@@ -46,6 +46,7 @@ PYBIND11_MODULE(linework, m) {
             // A PNG whatever the name says: a .jpg name would hold a PNG no reader expects.
             if (lw::lower(path.extension().string()) != ".png")
                 throw pybind11::value_error("path: " + path.string() + ": write_png writes .png files");
+            lw::py::check_output_folder(path);
             const lw::ImageRGBA8 pixels = lw::py::array_to_image(image, "image");
             lw::write_png(path, pixels);
         },

@@ -134,7 +134,9 @@ void bind_session(pyb::module_& m) {
         .def_readonly("image", &FrameResult::image, "H×W×4 uint8 (None unless image=True)")
         .def_readonly("depth", &FrameResult::depth, "H×W float32 window depth in [0, 1] (None unless depth=True)")
         .def_readonly("lines", &FrameResult::lines, "as Session.lines() (None unless lines=True)")
-        .def_readonly("timings", &FrameResult::timings, "milliseconds per stage");
+        .def_readonly("timings", &FrameResult::timings,
+                      "milliseconds per stage: total_ms, extract_ms, chain_ms, visibility_ms, coherence_ms, and "
+                      "gpu_PASS_ms per timed GPU pass (gpu_surface_ms, gpu_lines_draw_ms, …)");
 
     pyb::class_<SceneSession::Snapshot>(m, "Snapshot",
                                         "The temporal state after a frame (every line set's and layer's "
@@ -158,7 +160,8 @@ format; relative paths from the working folder), or None with vertices (N×3) an
 (degrees) override the scene's as the command line's flags do. coherent: parameterize
 every line set's paths (RANSAC from frame to frame) even where no style needs it, as
 `--dump-paths` does; a set whose strokes read no parameter is fitted beside its drawing and
-drawn as without it.
+drawn as without it (the module returns no parameters: it changes only the time a frame
+takes and what snapshot() holds).
 validation: the Khronos layer on (None: LINEWORK_VALIDATION decides); a call that makes it
 speak raises RuntimeError. Bad input raises ValueError with the command line's message.)")
         .def(pyb::init([](const pyb::object& scene, const std::string& device, const pyb::object& size,
@@ -248,7 +251,11 @@ speak raises RuntimeError. Bad input raises ValueError with the command line's m
         .def("snapshot", &Session::snapshot, "The temporal state after the last frame.")
         .def("restore", &Session::restore, pyb::arg("snapshot"),
              "Go on from a snapshot: the next frame continues its parameterization exactly.")
-        .def_property_readonly("scene", &Session::scene, "The scene as described (and configured), as a dict.")
+        .def_property_readonly("scene", &Session::scene,
+                               "The scene keys as given, as a dict: a scene file's (its relative paths are the "
+                               "file's), a dict's, or none for a bare model; with size= and configure()'s changes "
+                               "merged. A bare model's path and eye=, target=, up=, fov= are not keys in it, so it "
+                               "need not open a Session by itself: edit this session with configure() instead.")
         .def("configure", [](Session& s, const pyb::object& changes) { with_python_warnings([&] { s.configure(changes); }); },
              pyb::arg("changes"),
              "Merge scene keys into the scene (RFC 7396: nested dicts merge, None deletes), check them as a "

@@ -143,9 +143,7 @@ pyb::array_t<float> read_slam_file(const std::filesystem::path& path) {
 void write_slam_file(const std::filesystem::path& path, const pyb::array& ink, const std::string& exemplar_name,
                      const pyb::object& seed) {
     if (path.extension() != ".exr") throw pyb::value_error("path: " + path.string() + ": a SLAM file is OpenEXR (.exr)");
-    // As the command line's -o (OpenEXR's own message came twice over).
-    if (const std::filesystem::path folder = path.parent_path(); !folder.empty() && !std::filesystem::is_directory(folder))
-        throw pyb::value_error("path: " + path.string() + ": the folder " + folder.string() + " does not exist");
+    check_output_folder(path);
     const auto a = pyb::array_t<float, pyb::array::c_style | pyb::array::forcecast>::ensure(ink);
     if (!a || a.ndim() != 3) throw pyb::value_error("ink: expected a float array of shape (levels, height, length)");
     if (a.shape(0) < 2 || a.shape(1) < 1 || a.shape(2) < 1)

@@ -234,6 +234,8 @@ def test_slam_bad_input_gives_the_command_lines_message(tmp_path):
         linework.write_slam(tmp_path / "a.png", np.zeros((2, 4, 16), np.float32))
     with pytest.raises(ValueError, match=r"^path: .*/nodir/w\.exr: the folder .*/nodir does not exist$"):
         linework.write_slam(tmp_path / "nodir" / "w.exr", np.zeros((2, 4, 16), np.float32))
+    with pytest.raises(ValueError, match=r"^path: .*/nodir/w\.png: the folder .*/nodir does not exist$"):
+        linework.write_png(tmp_path / "nodir" / "w.png", np.zeros((4, 4, 4), np.uint8))
     with pytest.raises(ValueError, match=r"^ink: values must lie in \[0, 1\]$"):
         linework.write_slam(tmp_path / "a.exr", np.full((2, 4, 16), 2.0, np.float32))
     # Seeds are whole numbers from 0 (a ValueError, not pybind11's TypeError listing signatures).
