@@ -169,17 +169,17 @@ inline void set_line_types(LineParams& p, uint32_t mask) {
 }
 
 // The types of a comma-separated list of names ("silhouette,ridge") as such a mask; an
-// unknown or empty name: none, and in `error` what is wrong ("unknown line type "x" (...)").
-inline std::optional<uint32_t> line_types_from_list(std::string_view list, std::string& error) {
+// unknown or empty name: none, and in `problem` what is wrong ("unknown line type "x" (...)").
+inline std::optional<uint32_t> line_types_from_list(std::string_view list, std::string& problem) {
     uint32_t mask = 0;
     for (size_t start = 0; start <= list.size();) {
         const size_t comma = std::min(list.find(',', start), list.size());
         const std::string_view name = list.substr(start, comma - start);
         const std::optional<LineType> type = line_type_from_name(name);
         if (!type) {
-            error = name.empty() ? "an empty name in \"" + std::string(list) +
-                                       "\" (names are separated by single commas: " + line_type_names() + ")"
-                                 : "unknown line type \"" + std::string(name) + "\" (" + line_type_names() + ")";
+            const std::string names = line_type_names();
+            problem = name.size() == 0 ? "an empty name in the list (names are separated by single commas: " + names + ")"
+                                   : "unknown line type \"" + std::string(name) + "\" (" + names + ")";
             return std::nullopt;
         }
         mask |= 1u << uint32_t(*type);
