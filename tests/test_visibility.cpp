@@ -87,3 +87,87 @@ TEST(VisibilitySamples, ALineOnTheSurfaceIsVisibleAllAlong) {
 
 }  // namespace
 }  // namespace lw
+
+namespace lw {
+namespace {
+
+// A camera looking straight down at the plane z = 0: points there project linearly.
+CameraMatrices facing_camera() {
+    const ViewCamera view{.eye = {0.0f, 0.0f, 5.0f}, .target = {0.0f, 0.0f, 0.0f}, .fov_deg = 50.0f,
+                          .znear = 0.1f, .zfar = 40.0f};
+    return camera_matrices(view, float(kWidth) / float(kHeight), Bounds{{-1.0f, -1.0f, -1.0f}, {1.0f, 1.0f, 1.0f}});
+}
+
+LinePath plane_path(const std::vector<glm::vec2>& points, bool closed) {
+    LinePath path{.type = LineType::Silhouette, .closed = closed};
+    for (const glm::vec2& p : points)
+        path.vertices.push_back({.position = {p.x, p.y, 0.0f}, .face = 0, .bary = {1, 0, 0}, .alpha = 1.0f});
+    return path;
+}
+
+// A path is sampled only near the image: one that runs a million pixels past it on both sides
+// gives the samples of the image's width and a margin (it gave 400,000 and, panned farther,
+// ran out of memory), its arc length s still counted from its start; one wholly far off
+// gives none.
+TEST(VisibilitySamples, PathsAreSampledOnlyNearTheImage) {
+    const CameraMatrices camera = facing_camera();
+    const std::vector<float> background(size_t(kWidth) * kHeight, 1.0f);
+    const DepthImage image{kWidth, kHeight, background, camera.znear, camera.zfar};
+    const LinePath across = plane_path({{-4000.0f, 0.1f}, {4000.0f, 0.1f}}, false);
+    const glm::vec2 start(project_to_pixel(camera, across.vertices[0].position, kWidth, kHeight));
+    ASSERT_LT(start.x, -1e5f);
+    const std::vector<ScreenPath> runs = compute_visibility({across}, camera, image);
+    size_t samples = 0;
+    for (const ScreenPath& run : runs) {
+        samples += run.samples.size();
+        EXPECT_FALSE(run.closed);
+        for (const ScreenSample& s : run.samples) {
+            EXPECT_GE(s.pixel.x, -64.0f - 2.0f);
+            EXPECT_LE(s.pixel.x, float(kWidth) + 64.0f + 2.0f);
+            EXPECT_NEAR(s.s, s.pixel.x - start.x, 1e-6f * std::abs(start.x) + 0.5f);  // s from the path's start
+        }
+    }
+    EXPECT_GE(samples, size_t(kWidth / 2));
+    EXPECT_LE(samples, size_t((kWidth + 2 * 64) / 2 + 4));
+    const std::vector<ScreenPath> visible_runs = [&] {
+        std::vector<ScreenPath> v;
+        for (const ScreenPath& run : runs)
+            if (run.visible) v.push_back(run);
+        return v;
+    }();
+    ASSERT_EQ(visible_runs.size(), 1u);  // across the image, ending at its edges as before
+    EXPECT_LT(visible_runs[0].samples.front().pixel.x, 2.0f);
+    EXPECT_GT(visible_runs[0].samples.back().pixel.x, float(kWidth) - 2.0f);
+
+    const LinePath far_off = plane_path({{-4000.0f, 0.1f}, {-3000.0f, 0.1f}}, false);
+    EXPECT_TRUE(compute_visibility({far_off}, camera, image).empty());
+}
+
+// A loop that leaves the image is cut where it goes past the margin; the piece through its
+// start goes on after its last piece, so the part on the image is one run of increasing s.
+TEST(VisibilitySamples, ALoopLeavingTheImageIsOneRunOnIt) {
+    const CameraMatrices camera = facing_camera();
+    const std::vector<float> background(size_t(kWidth) * kHeight, 1.0f);
+    const DepthImage image{kWidth, kHeight, background, camera.znear, camera.zfar};
+    // A circle of 200 px about the middle of the image's left edge, starting on the image
+    // (angle 0, 200 px to the right): on the image from -37° to 37°, past the margin on the left.
+    std::vector<glm::vec2> circle;
+    const float origin_x = project_to_pixel(camera, {0, 0, 0}, kWidth, kHeight).x;
+    const float px_per_unit = project_to_pixel(camera, {1, 0, 0}, kWidth, kHeight).x - origin_x;
+    const glm::vec2 centre(-origin_x / px_per_unit, 0.0f);  // pixel x = 0
+    for (int i = 0; i < 720; ++i) {
+        const float a = 6.2831853f * float(i) / 720.0f;
+        circle.push_back(centre + 200.0f / px_per_unit * glm::vec2(std::cos(a), std::sin(a)));
+    }
+    const std::vector<ScreenPath> runs = compute_visibility({plane_path(circle, true)}, camera, image);
+    std::vector<const ScreenPath*> visible;
+    for (const ScreenPath& run : runs)
+        if (run.visible) visible.push_back(&run);
+    ASSERT_EQ(visible.size(), 1u);
+    for (size_t i = 1; i < visible[0]->samples.size(); ++i)
+        EXPECT_GT(visible[0]->samples[i].s, visible[0]->samples[i - 1].s) << i;
+    EXPECT_FALSE(visible[0]->closed);
+}
+
+}  // namespace
+}  // namespace lw

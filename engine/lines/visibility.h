@@ -4,7 +4,9 @@
 // Output: `ScreenPath`s — each path resampled every `sample_spacing_px` pixels of screen
 //         arc length (DESIGN.md step 5), every sample depth-tested, and the path split
 //         into runs of equal visibility. Visible runs are what gets drawn and written to
-//         SVG; hidden runs can be drawn dashed or faint on request.
+//         SVG; hidden runs can be drawn dashed or faint on request. A sample off the image is
+//         hidden; a path is sampled only up to 64 px past the image, and cut into pieces
+//         where it goes farther out (or behind the eye), its arc length s running on.
 //
 // The depth test: a sample is visible when its eye depth is not behind the farthest
 // surface depth in its 3×3 pixel neighbourhood by more than a bias. The neighbourhood
