@@ -80,9 +80,8 @@ std::string inside_out_warning(const ClosedSurfaces& closed) {
 std::vector<DumpGroup> line_set_dump_groups(const Frame& frame) {
     std::vector<DumpGroup> groups;
     for (const LineSetFrame& set : frame.sets) {
-        const bool recorded = !set.recorded_paths.empty();
-        groups.push_back({set.name, recorded ? &set.recorded_paths : &set.paths,
-                          recorded ? &set.recorded_params : &set.params});
+        groups.push_back({set.name, set.recorded ? &set.recorded_paths : &set.paths,
+                          set.recorded ? &set.recorded_params : &set.params});
     }
     return groups;
 }
@@ -238,13 +237,14 @@ void FrameRenderer::restore_coherence(const CoherenceSnapshot& snapshot) {
 
 Frame FrameRenderer::render(const CameraMatrices& camera, const glm::vec3& eye, const SurfaceStyle& surface,
                             const LinesDesc& lines, const FrameOutputs& outputs, const CoherenceParams* coherence,
-                            std::vector<LayerFrame>* layers) {
+                            std::vector<LayerFrame>* layers, bool every_set) {
     begin({.camera = camera,
            .eye = eye,
            .surface = surface,
            .lines = lines,
            .outputs = outputs,
            .coherence = coherence ? std::optional(*coherence) : std::nullopt,
+           .parameterize_every_set = every_set,
            .layers = layers ? std::optional(*layers) : std::nullopt});
     return finish();
 }
@@ -400,7 +400,10 @@ void FrameRenderer::prepare_sets(Frame& frame, const std::vector<LineSetDesc>& s
         if (!sets[i].enabled) continue;
         enabled.push_back(i);
         SetState& state = set_state(i);
-        if (fitted(i) && !state.tracker)
+        // A set not fitted this frame drops its tracker: fitted again later (a viewer's toggle),
+        // it starts afresh rather than from a splat of frames ago.
+        if (!fitted(i)) state.tracker.reset();
+        else if (!state.tracker)
             state.tracker = std::make_unique<CoherenceTracker>(*ctx_, target().width, target().height);
     }
     // One set: its selection, parameterization (its own tracker) and strokes.
@@ -424,6 +427,7 @@ void FrameRenderer::prepare_sets(Frame& frame, const std::vector<LineSetDesc>& s
                                           set, groups);
         if (fitted(i)) {
             const bool for_the_record = !needs_parameterization(set.style) && !state.texture;
+            out.recorded = for_the_record;
             if (for_the_record) out.recorded_paths = out.paths;
             std::vector<ScreenPath>& paths = for_the_record ? out.recorded_paths : out.paths;
             std::vector<PathParam>& params = for_the_record ? out.recorded_params : out.params;

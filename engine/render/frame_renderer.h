@@ -87,6 +87,7 @@ struct LineSetFrame {
     // the picture.
     std::vector<ScreenPath> recorded_paths;
     std::vector<PathParam> recorded_params;
+    bool recorded = false;          // the set was fitted for the record (the two above are its fit)
     CoherenceParams coherence;      // what the set was parameterized with
 };
 
@@ -186,13 +187,15 @@ public:
 
     // One frame. With `coherence` (the base parameters: policy, splat radius, RANSAC), every
     // set's visible paths are parameterized (§4: votes from the previous frame, RANSAC,
-    // splat for the next one) — call it for consecutive frames in order; without, sets that
+    // splat for the next one; with `every_set` false only the sets that read T, as a scene
+    // session draws them) — call it for consecutive frames in order; without, sets that
     // need a parameter (SLAM, dashes, displacement) tile at T = s·κ/Lmax. `layers`:
     // this frame of each layer given to set_layers. Without a mesh (a scene of layers
     // alone) the frame is the background and the layers.
     [[nodiscard]] Frame render(const CameraMatrices& camera, const glm::vec3& eye, const SurfaceStyle& surface,
                                const LinesDesc& lines, const FrameOutputs& outputs = {},
-                               const CoherenceParams* coherence = nullptr, std::vector<LayerFrame>* layers = nullptr);
+                               const CoherenceParams* coherence = nullptr, std::vector<LayerFrame>* layers = nullptr,
+                               bool every_set = true);
 
     // render() in two halves, so that frames overlap: begin() submits the frame's surface
     // pass (and on a CPU device extracts its lines on the host meanwhile) and returns;

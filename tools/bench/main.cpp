@@ -200,8 +200,10 @@ int run_lines(const BenchOptions& b) {
         // The frame as a caller's loop pays for it: drawn, its figures taken, and released
         // (its vertex buffers and path vectors freed), as a Python session's lines() is timed.
         lw::Timer released;
+        // --strokes fits the sets that read T, as `linework render --slam` does; --coherence
+        // fits every set (issue 19's votes + RANSAC + splat figure).
         std::optional<lw::Frame> held(renderer.render(s.camera, s.scene.camera.eye, surface, lines, {.color = false},
-                                                      coherent ? &coherence : nullptr));
+                                                      coherent ? &coherence : nullptr, nullptr, !b.strokes));
         const lw::FrameTimings timings = held->timings;
         if (coherent) {
             coherence_ms.values.push_back(timings.coherence_ms);
@@ -352,7 +354,7 @@ int main(int argc, char** argv) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
         std::fprintf(stderr, "linework-bench: error: %s\nRun with --help for more information.\n",
-                     lw::cli::parse_error_text(e).c_str());
+                     lw::cli::parse_error_text(e, app, argc, argv).c_str());
         return 2;
     }
     try {
