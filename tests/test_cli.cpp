@@ -89,6 +89,23 @@ TEST(Cli, UsageErrorsExitWithTwo) {
     }
 }
 
+// Arguments CLI11 did not expect are named in the order given, one with a space whole (CLI11
+// listed them backwards, and splitting its message cut such an argument in two).
+TEST(Cli, UnexpectedArgumentsAreNamedAsGiven) {
+    const std::string model = quote(test::data_dir() / "models/spot/spot.glb");
+    const std::string out = quote(test::temp_dir());
+    auto r = run_linework("render " + model + " -o " + out + " --sizee 320x240");
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_NE(r.output.find("unexpected arguments (an unknown option, or a value too many): --sizee 320x240"),
+              std::string::npos)
+        << r.output;
+    r = run_linework("render " + model + " -o " + out + " 'my file.png'");
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_NE(r.output.find("unexpected argument (an unknown option, or a value too many): 'my file.png'"),
+              std::string::npos)
+        << r.output;
+}
+
 TEST(Cli, HelpExplainsRender) {
     const auto r = run_linework("render --help");
     EXPECT_EQ(r.exit_code, 0);

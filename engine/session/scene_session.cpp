@@ -271,6 +271,20 @@ bool SceneSession::parameterized() const {
     return false;
 }
 
+bool SceneSession::strokes_carry_state() const {
+    const auto coherent = [&](const std::optional<ParamPolicy>& own) {
+        return own.value_or(options_.coherence.policy) == ParamPolicy::Coherent;
+    };
+    for (const LayerStyle& s : layers_.styles)
+        if (s.slam && options_.coherence.policy == ParamPolicy::Coherent) return true;
+    if (!desc_.lines.enabled || !has_model()) return false;
+    for (size_t i = 0; i < sets_.size(); ++i)
+        if (sets_[i].enabled && (line_set_textured(i) || needs_parameterization(sets_[i].style)) &&
+            coherent(sets_[i].coherence.policy))
+            return true;
+    return false;
+}
+
 void SceneSession::begin_frame(const FrameRequest& request) {
     sets_ = effective_line_sets(desc_.lines);  // the panel may have changed styles
     if (has_model() && !textures_loaded_ && scene_needs_textures(scene_, desc_.style)) {  // the panel turned shading on

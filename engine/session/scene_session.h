@@ -87,8 +87,11 @@ public:
     SurfaceStyle& surface() { return desc_.style; }
     CoherenceParams& coherence() { return options_.coherence; }  // the base (viewer: policy, radius)
     // Whether a frame carries a parameterization on to the next (a set or layer reads T, or
-    // every set is parameterized): then a frame depends on the frames drawn before it.
+    // every set is parameterized).
     [[nodiscard]] bool parameterized() const;
+    // Whether what a frame draws depends on the frames before it: a set or layer whose strokes
+    // read T under the coherent policy (votes from the previous frame's splat).
+    [[nodiscard]] bool strokes_carry_state() const;
     // The line mesh again (a new crease angle); temporal state starts afresh.
     void rebuild_lines();
     // New lines as a whole (a Python script's edit): SLAMs and ribbon exemplars the new sets

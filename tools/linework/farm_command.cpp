@@ -148,7 +148,9 @@ bool report_task(const FarmPlan& plan, const FarmPhase& phase, size_t index, std
         missing_frames.insert(missing_frames.end(), missing.begin(), missing.end());
     }
     const int rc = recorded_exit(plan, task.id);
-    const bool task_failed = !missing.empty() && rc > 0;
+    // Stopped (Ctrl-C, scancel's SIGTERM: 130, 143) is not failed: run again, it resumes.
+    const bool stopped = !missing.empty() && (rc == 130 || rc == 143);
+    const bool task_failed = !missing.empty() && rc > 0 && !stopped;
     failed += task_failed;
     std::printf("  %-12s frames %d-%d: ", task.id.c_str(), task.frames.first, task.frames.last);
     if (missing.empty()) {
@@ -157,9 +159,9 @@ bool report_task(const FarmPlan& plan, const FarmPhase& phase, size_t index, std
     }
     std::printf("%d of %d %s written, missing %s", wanted - int(missing.size()), wanted,
                 phase.name == "state" ? "states (at chunk starts)" : "frames", frame_list(missing).c_str());
-    if (task_failed)
-        std::printf("; failed (exit %d, see %s)", rc,
-                    (plan.logs() / (phase.name + "_" + std::to_string(index) + ".log")).string().c_str());
+    const std::string log = (plan.logs() / (phase.name + "_" + std::to_string(index) + ".log")).string();
+    if (task_failed) std::printf("; failed (exit %d, see %s)", rc, log.c_str());
+    if (stopped) std::printf("; stopped (exit %d): run it again to go on", rc);
     std::printf("\n");
     return false;
 }
@@ -243,6 +245,7 @@ int run_task(const FarmOptions& o) {
     const std::filesystem::path log = plan.logs() / (phase->name + "_" + std::to_string(o.task_index) + ".log");
     std::printf("linework farm: task %s: %s\n", task.id.c_str(), shell_line(task.command).c_str());
     std::ofstream(log, std::ios::app) << "linework farm: task " << task.id << ": " << shell_line(task.command) << "\n";
+    std::filesystem::remove(plan.logs() / (task.id + ".rc"), ec);  // running: not failed, whatever an earlier run said
     const int rc = run_logged(task.command, log);
     std::ofstream(plan.logs() / (task.id + ".rc")) << rc << "\n";
     return rc;

@@ -48,12 +48,15 @@ std::string phase_script(const FarmPlan& plan, size_t index, int throttle, int c
     // A task killed by a signal (SIGKILL, the OOM killer) runs again and resumes; a task
     // that failed on its input (exit 1, 2) or was stopped (130: SIGINT or scancel's
     // SIGTERM) does not.
+    // The exit status is recorded once the task is over: while it runs (or runs again), an
+    // earlier attempt's status would read as a failure to `farm status`.
+    s += "rm -f " + shell_line({logs}) + "/\"$id.rc\"\n";
     s += "for attempt in 1 2 3; do\n";
     s += "  \"${cmd[@]}\"; rc=$?\n";
-    s += "  echo \"$rc\" > " + shell_line({logs}) + "/\"$id.rc\"\n";
     s += "  if [ \"$rc\" -le 128 ] || [ \"$rc\" -eq 130 ] || [ \"$rc\" -eq 143 ]; then break; fi\n";
     s += "  echo \"linework farm: task $id ended by signal $((rc - 128)); running it again (attempt $((attempt + 1)))\"\n";
     s += "done\n";
+    s += "echo \"$rc\" > " + shell_line({logs}) + "/\"$id.rc\"\n";
     s += "exit \"$rc\"\n";
     return s;
 }

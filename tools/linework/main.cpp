@@ -91,7 +91,7 @@ int main(int argc, char** argv) {
     } catch (const CLI::ParseError& e) {
         // As every other error: one line with the tool's prefix (CLI11's own print has none).
         std::fprintf(stderr, "linework: error: %s\nRun with --help for more information.\n",
-                     lw::cli::parse_error_text(e).c_str());
+                     lw::cli::parse_error_text(e, app, argc, argv).c_str());
         return 2;
     }
 

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <csignal>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -27,6 +28,8 @@ namespace lw::cli {
 namespace {
 
 volatile std::sig_atomic_t g_interrupted = 0;
+// What a second signal says as it stops the render: set before the handler is installed.
+const char* volatile g_stopped_message = "";
 
 // Ctrl-C (SIGINT), or a scheduler's SIGTERM (scancel, requeue, pre-emption), finishes the
 // frame in hand, writes it and the state, and stops (exit code 130). A second one stops at
@@ -35,9 +38,8 @@ volatile std::sig_atomic_t g_interrupted = 0;
 // a temporary file may be left (*.partial.*).
 void on_stop_signal(int signal) {
     if (g_interrupted) {
-        static const char stopped[] =
-            "\nlinework: stopped at once; the frames written are whole; run the same command with --resume to go on\n";
-        [[maybe_unused]] const ssize_t said = ::write(STDERR_FILENO, stopped, sizeof stopped - 1);
+        const char* stopped = g_stopped_message;
+        [[maybe_unused]] const ssize_t said = ::write(STDERR_FILENO, stopped, std::strlen(stopped));
         std::signal(signal, SIG_DFL);
         std::raise(signal);
         return;
@@ -49,8 +51,12 @@ void on_stop_signal(int signal) {
 
 class StopOnSignal {
 public:
-    StopOnSignal() {
+    explicit StopOnSignal(bool state_only) {
         g_interrupted = 0;
+        g_stopped_message = state_only ? "\nlinework: stopped at once; the states written are whole; run the same "
+                                         "command with --resume to go on\n"
+                                       : "\nlinework: stopped at once; the frames written are whole; run the same "
+                                         "command with --resume to go on\n";
         int_ = std::signal(SIGINT, on_stop_signal);
         term_ = std::signal(SIGTERM, on_stop_signal);
     }
@@ -269,10 +275,11 @@ int run_render(const RenderOptions& o) {
     if (shot.part.first < shot.range.first || shot.part.last > shot.range.last)
         throw usage_error("--part " + o.part + " lies outside the range " + std::to_string(shot.range.first) + ":" +
                           std::to_string(shot.range.last));
-    if (part_given && !start_state && o.warmup == 0 && shot.part.first > shot.range.first && session.parameterized())
+    if (part_given && !start_state && o.warmup == 0 && shot.part.first > shot.range.first &&
+        session.strokes_carry_state())
         log_warning("--part " + o.part + " without --start-state or --warmup: the strokes' parameterization starts "
                     "afresh at frame " + std::to_string(shot.part.first) + ", where one render of the range carries it "
-                    "on from the frames before (a farm's frames task starts from its state phase's)");
+                    "on from the frames before (--start-state brings it, as a farm's --exact tasks do)");
     if (o.state_only) {
         // Frames after the last chunk start leave no state: not drawn.
         int last = shot.part.last;
@@ -292,7 +299,7 @@ int run_render(const RenderOptions& o) {
     if (!o.state_only) create_folders(files);
     if (!o.save_states.empty()) create_folder(o.save_states, "the --save-states");
     // From the header on, a signal stops after the frame in hand (render_frames reads it).
-    const StopOnSignal stop;
+    const StopOnSignal stop(o.state_only);
     print_header(o, session, ctx, shot, files.sequence, load_timer.elapsed_ms());
 
     shot.start = first_frame(o, shot, files, start_state, session);

@@ -124,9 +124,9 @@ std::optional<int> resume_point(const std::string& signature, const FrameFiles& 
     if (first_missing > part.last && !std::filesystem::exists(state_path)) return first_missing;
     const RenderState state = read_render_state(state_path);
     if (state.signature != signature)
-        throw Error(state_path.string() + ": written by a render with other options (the scene, camera, style or "
-                                          "line flags differ from this command's); give the options that render had, "
-                                          "with --resume, or remove the file to start over");
+        throw Error(state_path.string() + ": written by a render with other options (every option but --resume "
+                                          "counts: the scene, camera, style, device and outputs); give the options "
+                                          "that render had, with --resume, or remove the file to start over");
     if (first_missing > part.last) return first_missing;
     if (state.frame != first_missing - 1 && state.frame != first_missing - 2)
         throw Error(state_path.string() + ": holds the state after frame " + std::to_string(state.frame) +

@@ -15,7 +15,8 @@ namespace {
 
 // 2: one tracker per line set; 3: the line mesh's pose; 4: the view scale of the coherent
 // parameterization; 5: the paths of a still view (still_paths.h); 6: those written field by
-// field, with the key of the settings they were made with; 7: their keys mixed by core's mix64.
+// field, with the key of the settings they were made with; 7: their keys mixed by core's mix64;
+// 8: no pose (the line mesh is built at 0 s, whatever frame comes first).
 constexpr char kMagic[8] = {'L', 'W', 'S', 'T', 'A', 'T', 'E', '8'};
 
 class Writer {
