@@ -49,7 +49,7 @@ void expect_close(const ImageRGBA8& actual, const ImageRGBA8& expected, const fs
 
 TEST(ViewerScript, ParsesAndPlaysFrameByFrame) {
     using Kind = cli::ScriptCommand::Kind;
-    const auto commands = cli::parse_script("# a comment\n\norbit 10 -5\nzoom 2\nwait 3\nkey s\nscreenshot a.png\n"
+    const auto commands = cli::parse_script("# a comment\n\norbit 10 -5  # after a command too\nzoom 2\nwait 3\nkey s\nscreenshot a.png\n"
                                             "key F1\nresize 640 480\nminimize\nrestore\nquit\n",
                                             "s.txt");
     ASSERT_EQ(commands.size(), 10u);

@@ -50,11 +50,25 @@ void save_view_file(ViewerState& s, VkExtent2D extent) {
     SceneDesc saved = s.desc;
     saved.width = int(extent.width);
     saved.height = int(extent.height);
+    // A set whose SLAM strokes are switched off is saved without its SLAM, as it is drawn.
+    for (size_t i = 0; i < s.strokes.size() && i < s.has_slam.size(); ++i) {
+        if (!s.has_slam[i] || s.strokes[i]) continue;
+        if (saved.lines.sets.empty()) saved.lines.styles[i].slam.clear();
+        else if (i < saved.lines.sets.size()) saved.lines.sets[i].style.slam.clear();
+    }
     std::ofstream out(path, std::ios::binary);
     out << scene_json(saved, s.camera.view(), std::filesystem::path(path).parent_path());
     if (!out.flush()) throw Error(path + ": cannot write");
     ++s.saves_done;
     s.message = "wrote " + path;
+    // What the file cannot hold, said: the command line's parameterization settings, and the
+    // frame of an animation on screen (the file keeps the scene's range).
+    if (s.coherence.policy != CoherenceParams{}.policy)
+        s.message += std::string(" (the parameterization is --param ") + policy_name(s.coherence.policy) +
+                     ", which a scene file does not hold: give it to linework render)";
+    if (s.animated)
+        s.message += " (frame " + std::to_string(int(std::lround(s.time_s * s.fps))) +
+                     " is on screen: linework render " + path + " --frames N:N draws it)";
     std::printf("%s\n", s.message.c_str());
     s.save_path.clear();
 }

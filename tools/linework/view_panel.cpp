@@ -1,6 +1,7 @@
 // tools/linework/view_panel.cpp — the viewer's camera, keys and Dear ImGui panel.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include <GLFW/glfw3.h>
 #include <glm/gtc/matrix_transform.hpp>
@@ -18,6 +19,8 @@ OrbitCamera OrbitCamera::from(const ViewCamera& c) {
     o.fov_deg = c.fov_deg;
     o.znear = c.znear;
     o.zfar = c.zfar;
+    o.min_distance = 1e-4f * glm::length(o.offset);
+    o.max_distance = 1e4f * glm::length(o.offset);
     return o;
 }
 
@@ -37,7 +40,9 @@ void OrbitCamera::orbit(float dx_deg, float dy_deg) {
 }
 
 void OrbitCamera::zoom(float factor) {
-    if (factor > 0.0f) offset /= factor;
+    if (!(factor > 0.0f)) return;
+    const float distance = glm::length(offset);
+    offset *= std::clamp(distance / factor, min_distance, max_distance) / distance;
 }
 
 void OrbitCamera::pan(float dx_px, float dy_px, float height) {
@@ -115,6 +120,15 @@ void step_time(ViewerState& s, float frames) {
 
 bool apply_key(ViewerState& s, int key) {
     LineParams& p = s.desc.lines.params;
+    // The per-type keys switch the "lines" shorthand; with line sets they would flip switches
+    // the sets do not read (and a saved view would carry them): said instead.
+    const bool type_key = key == GLFW_KEY_L || key == GLFW_KEY_S || key == GLFW_KEY_C || key == GLFW_KEY_B ||
+                          key == GLFW_KEY_H;
+    if (type_key && !s.desc.lines.sets.empty()) {
+        s.message = "this scene's line sets choose their types and hidden lines: switch the sets in the panel (F1)";
+        std::printf("%s\n", s.message.c_str());
+        return true;
+    }
     switch (key) {
         case GLFW_KEY_L: toggle_type(p, LineType::Silhouette); break;
         case GLFW_KEY_S: toggle_type(p, LineType::Suggestive); break;
@@ -139,9 +153,7 @@ bool apply_key(ViewerState& s, int key) {
             }
             break;
         }
-        case GLFW_KEY_H:  // (line sets draw their hidden lines themselves)
-            if (s.desc.lines.sets.empty()) s.desc.lines.hidden = HiddenLines((int(s.desc.lines.hidden) + 1) % 3);
-            break;
+        case GLFW_KEY_H: s.desc.lines.hidden = HiddenLines((int(s.desc.lines.hidden) + 1) % 3); break;
         case GLFW_KEY_R: s.camera = s.home; break;
         case GLFW_KEY_Q: case GLFW_KEY_ESCAPE: s.quit = true; break;
         case GLFW_KEY_SPACE:

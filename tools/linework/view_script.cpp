@@ -32,8 +32,9 @@ std::vector<ScriptCommand> parse_script(const std::string& text, const std::stri
     for (int n = 1; std::getline(lines, line); ++n) {
         std::istringstream words(line);
         std::vector<std::string> w;
-        for (std::string word; words >> word;) w.push_back(word);
-        if (w.empty() || w[0][0] == '#') continue;
+        // `#` starts a comment, on a line of its own or after a command.
+        for (std::string word; words >> word && word[0] != '#';) w.push_back(word);
+        if (w.empty()) continue;
         const std::string where = source + ":" + std::to_string(n) + ": " + w[0];
         auto args = [&](size_t count) {
             if (w.size() != count + 1)

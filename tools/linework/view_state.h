@@ -7,6 +7,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <deque>
 #include <optional>
 #include <string>
@@ -27,6 +28,9 @@ struct OrbitCamera {
     glm::vec3 up{0.0f, 1.0f, 0.0f};
     float fov_deg = 40.0f;
     float znear = 0.0f, zfar = 0.0f;
+    // How near and far zoom goes: 10^-4 and 10^4 times the first distance (a script's zoom 1e30
+    // put the eye on the target, which ends the viewer with an error).
+    float min_distance = 0.0f, max_distance = INFINITY;
 
     static OrbitCamera from(const ViewCamera& camera);
     [[nodiscard]] ViewCamera view() const;
