@@ -514,8 +514,13 @@ std::vector<PathParam> CoherenceTracker::update(std::vector<ScreenPath>& paths, 
     } else if (has_previous_ && same_camera(camera, previous_camera_)) {
         out = update_still_view(paths, camera, surface, params);
     } else {
-        still_ = {};  // a moving view: no path is where it was
-        out = parameterize(paths, camera, surface, params, nullptr, nullptr);
+        // A moving view (or the first): no path is where it was. Its paths are recorded all
+        // the same, so that a still view after it keeps them: the first frame of a still shot
+        // was not recorded, and the second refitted every path, cutting pieces at junctions
+        // where neighbours' splats blend (spot_line_sets.json: 1.45 % of the pixels changed
+        // from frame 0 to 1, none after).
+        still_ = {};
+        out = update_still_view(paths, camera, surface, params);
     }
     splat(paths, out, params.splat_radius_px, timer);
     has_previous_ = true;
