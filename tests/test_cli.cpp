@@ -73,7 +73,10 @@ TEST(Cli, ExplicitCameraChangesTheImage) {
     ASSERT_EQ(b.exit_code, 0) << b.output;
     auto d = run_linework("diff " + quote(out / "a/frame_0000.png") + " " + quote(out / "b/frame_0000.png"));
     EXPECT_EQ(d.exit_code, 1) << d.output;
-    EXPECT_NE(d.output.find("MISMATCH"), std::string::npos);
+    // A mismatch names the thresholds passed: here PSNR and the share of differing pixels.
+    EXPECT_NE(d.output.find("MISMATCH: psnr "), std::string::npos) << d.output;
+    EXPECT_NE(d.output.find("dB < --min-psnr 40; differing pixels "), std::string::npos) << d.output;
+    EXPECT_NE(d.output.find("> --max-differing 0.005 (0.5 %)"), std::string::npos) << d.output;
 }
 
 TEST(Cli, UsageErrorsExitWithTwo) {

@@ -43,9 +43,24 @@ int run_diff(const DiffOptions& o) {
         write_png(o.out, d.diff);
         std::printf("wrote %s\n", o.out.c_str());
     }
-    const bool pass = d.max_abs_error <= o.max_error && d.psnr_db >= o.min_psnr && d.differing_fraction <= o.max_differing;
-    std::printf("%s\n", pass ? "match" : "MISMATCH");
-    return pass ? 0 : 1;
+    // Which thresholds were passed, so that a MISMATCH says why.
+    std::string failed;
+    char part[160];
+    if (d.max_abs_error > o.max_error) {
+        std::snprintf(part, sizeof part, "; max abs error %d > --max-error %d", d.max_abs_error, o.max_error);
+        failed += part;
+    }
+    if (d.psnr_db < o.min_psnr) {
+        std::snprintf(part, sizeof part, "; psnr %.2f dB < --min-psnr %g", d.psnr_db, o.min_psnr);
+        failed += part;
+    }
+    if (d.differing_fraction > o.max_differing) {
+        std::snprintf(part, sizeof part, "; differing pixels %.4f %% > --max-differing %g (%g %%)",
+                      100.0 * d.differing_fraction, o.max_differing, 100.0 * o.max_differing);
+        failed += part;
+    }
+    std::printf("%s\n", failed.empty() ? "match" : ("MISMATCH: " + failed.substr(2)).c_str());
+    return failed.empty() ? 0 : 1;
 }
 
 }  // namespace
@@ -68,7 +83,8 @@ Runner add_diff_command(CLI::App& app) {
     cmd->add_option("--tolerance", o->tolerance, "Per-channel difference under which a pixel still matches")
         ->check(CLI::Range(0, 255))
         ->capture_default_str();
-    cmd->add_option("--max-differing", o->max_differing, "Largest share of differing pixels allowed (0-1)")
+    cmd->add_option("--max-differing", o->max_differing,
+                    "Largest share of differing pixels allowed, a fraction 0-1 (0.005 is the 0.5 % printed)")
         ->check(within(0.0, 1.0))
         ->capture_default_str();
     return [o] { return run_diff(*o); };

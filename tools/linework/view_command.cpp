@@ -16,6 +16,7 @@
 #include "commands.h"
 #include "render_state.h"
 #include "core/timer.h"
+#include "gpu/render_target.h"
 #include "io/image_io.h"
 #include "platform/swapchain.h"
 #include "scene_options.h"
@@ -77,6 +78,9 @@ uint32_t viewer_samples(const SurfaceStyle& style, const Context& ctx) {
                     "the scene's \"samples\" or the panel)\n");
         return 1;
     }
+    // Checked now, as render does before its first frame: a count the device cannot draw
+    // was refused only when the first frame was made (a script that quit before it, never).
+    (void)sample_count_bit(ctx, surface_samples(style));
     std::printf("surface: %u samples per pixel\n", surface_samples(style));
     return style.samples;
 }
@@ -179,6 +183,11 @@ int run_view(const ViewOptions& o) {
         }
         while (session.frames_in_flight() > 0) (void)session.finish_frame();
         stats.print(swapchain.extent().width, swapchain.extent().height);
+        // A benchmark cut short (a script's quit, the window closed) says so: it printed nothing
+        // when the warm-up frames were not over.
+        if (o.benchmark > 0 && int(stats.frame_ms.size()) < o.benchmark)
+            std::printf("benchmark: stopped after %d frame(s), %zu of the %d timed ones (the first %d are warm-up)\n",
+                        frames, stats.frame_ms.size(), o.benchmark, warmup);
     }  // GPU objects destroyed
     return exit_code_after_validation(ctx, validation);
 }
