@@ -511,16 +511,14 @@ std::vector<PathParam> CoherenceTracker::update(std::vector<ScreenPath>& paths, 
         view_rho_ = 0.0f;  // back to the coherent policy, the scale starts afresh with the splat's T
         still_ = {};
         out = fixed_params(paths, params);
-    } else if (has_previous_ && same_camera(camera, previous_camera_)) {
-        out = update_still_view(paths, camera, surface, params);
     } else {
-        // A moving view (or the first): no path is where it was. Its paths are recorded all
-        // the same, so that a still view after it keeps them: the first frame of a still shot
-        // was not recorded, and the second refitted every path, cutting pieces at junctions
+        // A moving view (or the first) keeps no path: none is where it was. Its paths are
+        // recorded all the same, so that a still view after it keeps them: unrecorded, the
+        // first frame of a still shot was refitted by the second, which cut pieces at junctions
         // where neighbours' splats blend (spot_line_sets.json: 1.45 % of the pixels changed
         // from frame 0 to 1, none after).
-        still_ = {};
-        out = update_still_view(paths, camera, surface, params);
+        if (!has_previous_ || !same_camera(camera, previous_camera_)) still_ = {};
+        out = update_keeping_still_paths(paths, camera, surface, params);
     }
     splat(paths, out, params.splat_radius_px, timer);
     has_previous_ = true;
@@ -563,8 +561,10 @@ std::vector<PathParam> CoherenceTracker::parameterize(std::vector<ScreenPath>& p
     return out;
 }
 
-std::vector<PathParam> CoherenceTracker::update_still_view(std::vector<ScreenPath>& paths, const CameraMatrices& camera,
-                                                           const SurfaceFrame& surface, const CoherenceParams& params) {
+std::vector<PathParam> CoherenceTracker::update_keeping_still_paths(std::vector<ScreenPath>& paths,
+                                                                    const CameraMatrices& camera,
+                                                                    const SurfaceFrame& surface,
+                                                                    const CoherenceParams& params) {
     // The pieces and parameters were made with the set's settings and scale: a set edited
     // under a still camera (the viewer's panel, a Python script) keeps none.
     if (still_.settings != settings_key(params, view_rho_)) still_ = {};

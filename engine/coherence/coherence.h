@@ -168,10 +168,12 @@ private:
                                                       const SurfaceFrame& surface, const CoherenceParams& params,
                                                       std::vector<PieceOrigin>* origins,
                                                       std::vector<uint32_t>* rotations);
-    // Under the previous frame's camera: the paths that did not move keep their pieces and
-    // parameters, the others are parameterized; the record for the next frame is kept.
-    [[nodiscard]] std::vector<PathParam> update_still_view(std::vector<ScreenPath>& paths, const CameraMatrices& camera,
-                                                           const SurfaceFrame& surface, const CoherenceParams& params);
+    // The paths found in the record (`still_`, emptied for a moving view) keep their pieces
+    // and parameters, the others are parameterized; the record for the next frame is kept.
+    [[nodiscard]] std::vector<PathParam> update_keeping_still_paths(std::vector<ScreenPath>& paths,
+                                                                    const CameraMatrices& camera,
+                                                                    const SurfaceFrame& surface,
+                                                                    const CoherenceParams& params);
     // The set's scale (every path's |ρ|), carried through the view's zoom.
     void update_view_scale(VoteSet& votes, float zoom, const CoherenceParams& params);
     void splat(const std::vector<ScreenPath>& paths, const std::vector<PathParam>& params, float radius,
