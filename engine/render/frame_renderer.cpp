@@ -389,10 +389,10 @@ void FrameRenderer::prepare_sets(Frame& frame, const std::vector<LineSetDesc>& s
     const LinesDesc& lines = in.lines;
     const CameraMatrices& camera = in.camera;
     const CoherenceParams* coherence = in.coherence ? &*in.coherence : nullptr;
-    // Whether set i is fitted this frame (its tracker carries its parameterization on).
-    const auto fitted = [&](size_t i) {
-        return coherence && (in.parameterize_every_set || needs_parameterization(sets[i].style) || sets_[i].texture);
-    };
+    // Whether set i's strokes read T (a SLAM drawn, dashes, displacement), and whether it is
+    // fitted this frame (its tracker carries its parameterization on): those sets, or all.
+    const auto reads_t = [&](size_t i) { return needs_parameterization(sets[i].style) || sets_[i].texture; };
+    const auto fitted = [&](size_t i) { return coherence && (in.parameterize_every_set || reads_t(i)); };
     const SurfaceFrame surface{&positions, &line_mesh_->mesh.faces};
     const FaceGroups* groups = groups_.face_group.empty() ? nullptr : &groups_;
     std::vector<size_t> enabled;
@@ -426,7 +426,7 @@ void FrameRenderer::prepare_sets(Frame& frame, const std::vector<LineSetDesc>& s
                                                              levels),
                                           set, groups);
         if (fitted(i)) {
-            const bool for_the_record = !needs_parameterization(set.style) && !state.texture;
+            const bool for_the_record = !reads_t(i);
             out.recorded = for_the_record;
             if (for_the_record) out.recorded_paths = out.paths;
             std::vector<ScreenPath>& paths = for_the_record ? out.recorded_paths : out.paths;

@@ -267,8 +267,12 @@ bool SceneSession::parameterized() const {
     if (!desc_.lines.enabled || !has_model()) return false;
     if (options_.coherent) return true;
     for (size_t i = 0; i < sets_.size(); ++i)
-        if (sets_[i].enabled && (line_set_textured(i) || needs_parameterization(sets_[i].style))) return true;
+        if (reads_parameter(i)) return true;
     return false;
+}
+
+bool SceneSession::reads_parameter(size_t set) const {
+    return sets_[set].enabled && (line_set_textured(set) || needs_parameterization(sets_[set].style));
 }
 
 bool SceneSession::strokes_carry_state() const {
@@ -279,9 +283,7 @@ bool SceneSession::strokes_carry_state() const {
         if (s.slam && options_.coherence.policy == ParamPolicy::Coherent) return true;
     if (!desc_.lines.enabled || !has_model()) return false;
     for (size_t i = 0; i < sets_.size(); ++i)
-        if (sets_[i].enabled && (line_set_textured(i) || needs_parameterization(sets_[i].style)) &&
-            coherent(sets_[i].coherence.policy))
-            return true;
+        if (reads_parameter(i) && coherent(sets_[i].coherence.policy)) return true;
     return false;
 }
 

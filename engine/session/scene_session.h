@@ -150,6 +150,8 @@ private:
     void load_line_styles();
     void pose(float seconds);
     void build_meshes();
+    // Whether line set `set` is drawn and its strokes read T (a SLAM drawn, dashes, displacement).
+    [[nodiscard]] bool reads_parameter(size_t set) const;
     [[nodiscard]] TriangleMesh posed_mesh(float seconds) const;
     double draw_ribbons(Frame& frame, uint64_t seed);
 
