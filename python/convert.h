@@ -96,6 +96,10 @@ auto reading_input(F&& f) {
     }
 }
 
+// `message` as a Python UserWarning (pyb::error_already_set where the filter makes it an
+// error). Call with the GIL held.
+void warn_in_python(const std::string& message);
+
 // Runs f with the engine's warnings on this thread captured (core/log.h), then gives each
 // to Python's `warnings` as a UserWarning (a script can filter or catch them; stderr would
 // not let it). With the warnings filter set to "error" the first one raises.
@@ -103,8 +107,7 @@ template <typename F>
 auto with_python_warnings(F&& f) {
     WarningCapture capture;
     const auto raise = [&] {
-        for (const std::string& message : capture.messages())
-            if (PyErr_WarnEx(PyExc_UserWarning, printable(message).c_str(), 1) != 0) throw pyb::error_already_set();
+        for (const std::string& message : capture.messages()) warn_in_python(message);
     };
     if constexpr (std::is_void_v<decltype(f())>) {
         f();

@@ -197,9 +197,7 @@ pyb::object pattern(const pyb::object& reference, const pyb::object& path, const
         warning = pattern_analysis_warning(ref);
         s = naming_input(target_where, [&] { return synthesize_pattern(ref, target, desc); });
     }
-    if (!warning.empty() &&
-        PyErr_WarnEx(PyExc_UserWarning, printable(reference_where + ": " + warning).c_str(), 1) != 0)
-        throw pyb::error_already_set();
+    if (!warning.empty()) warn_in_python(reference_where + ": " + warning);
     pyb::list out = strokes_value(s.strokes.strokes);
     if (!return_info) return out;
     std::vector<float> centers;
