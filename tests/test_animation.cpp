@@ -510,6 +510,15 @@ TEST(SceneFileAnimation, ClipPerModel) {
     EXPECT_EQ(one.rfind("scenes/x.json: animation.clip: one clip for every model of the scene, and ", 0), 0u) << one;
     EXPECT_NE(one.find("CesiumMan.glb: no animation clip named \"Walk\""), std::string::npos) << one;
     EXPECT_NE(one.find("; give one per model, in \"model\" order"), std::string::npos) << one;
+    // A clip the model lacks is named against the scene key that asked for it.
+    const std::string alone = error_of([&] {
+        (void)load_scene(parse_scene_json(R"({"model": ")" + fox.string() + R"(", "animation": {"clip": "Jump"}})", "scenes/x.json"));
+    });
+    EXPECT_EQ(alone.rfind("scenes/x.json: animation.clip: ", 0), 0u) << alone;
+    EXPECT_NE(alone.find("Fox.glb: no animation clip named \"Jump\""), std::string::npos) << alone;
+    const std::string second = error_of([&] { (void)load_scene(parse_scene_json(both + R"({"clip": ["Walk", 50]}})", "scenes/x.json")); });
+    EXPECT_EQ(second.rfind("scenes/x.json: animation.clip[1]: ", 0), 0u) << second;
+    EXPECT_NE(second.find("CesiumMan.glb: no animation clip 50 (clips: 0 to 18 (unnamed))"), std::string::npos) << second;
     EXPECT_EQ(scene_error(R"({"model": ["a.glb", "b.glb"], "animation": {"clip": ["Walk", 0, 1]}})"),
               "scenes/x.json: animation.clip: 3 clips for 2 models (one per model, in \"model\" order, or one for all)");
     EXPECT_EQ(parse_scene_json(R"({"model": ["a.glb", "b.glb"], "animation": {"clip": ["Walk"]}})", "x.json")

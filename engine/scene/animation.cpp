@@ -107,10 +107,21 @@ void compose_world(const Model& model, Pose& pose) {
 
 std::string clip_list(const Model& model) {
     if (model.animations.empty()) return "the model has no animation clips";
+    // A run of unnamed clips is one entry: exporters write one per animated node, and
+    // CesiumMan's 19 would fill the screen one by one.
     std::string list;
-    for (size_t a = 0; a < model.animations.size(); ++a)
-        list += (list.empty() ? "" : ", ") + std::to_string(a) +
-                (model.animations[a].name.empty() ? " (unnamed)" : " \"" + model.animations[a].name + "\"");
+    const size_t count = model.animations.size();
+    for (size_t a = 0; a < count; ++a) {
+        list += list.empty() ? "" : ", ";
+        if (!model.animations[a].name.empty()) {
+            list += std::to_string(a) + " \"" + model.animations[a].name + "\"";
+            continue;
+        }
+        size_t last = a;
+        while (last + 1 < count && model.animations[last + 1].name.empty()) ++last;
+        list += std::to_string(a) + (last > a ? " to " + std::to_string(last) : "") + " (unnamed)";
+        a = last;
+    }
     return "clips: " + list;
 }
 

@@ -41,17 +41,20 @@ namespace {
 void check_clips(const LoadedScene& scene) {
     const AnimationDesc& animation = scene.desc.animation;
     if (!animation.play) return;
-    const std::string where = (scene.desc.source.empty() ? std::string() : scene.desc.source.string() + ": ") +
-                              "animation.clip: ";
+    const std::string file = scene.desc.source.empty() ? std::string() : scene.desc.source.string() + ": ";
     if (animation.clips.size() != 1 && animation.clips.size() != scene.models.size())
-        throw Error(where + std::to_string(animation.clips.size()) + " clips for " +
+        throw Error(file + "animation.clip: " + std::to_string(animation.clips.size()) + " clips for " +
                     std::to_string(scene.models.size()) + " models (one per model, in \"model\" order, or one for all)");
+    const bool one_for_all = animation.clips.size() == 1;
     for (size_t m = 0; m < scene.models.size(); ++m) {
         try {
             (void)select_clips(scene.models[m], clip_of_model(animation, m));
         } catch (const Error& e) {
-            if (animation.clips.size() != 1 || scene.models.size() == 1) throw;
-            throw Error(where + "one clip for every model of the scene, and " + e.what() +
+            // The model's own message names the model and its clips; the scene key says
+            // which value asked for the clip.
+            if (!one_for_all) throw Error(file + "animation.clip[" + std::to_string(m) + "]: " + e.what());
+            if (scene.models.size() == 1) throw Error(file + "animation.clip: " + e.what());
+            throw Error(file + "animation.clip: one clip for every model of the scene, and " + e.what() +
                         "; give one per model, in \"model\" order (\"all\" plays every clip of its model)");
         }
     }
