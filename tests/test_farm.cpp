@@ -129,9 +129,15 @@ TEST(Farm, ExactPlanRunHereEqualsOneRender) {
     const auto failed = test::run_linework("farm status " + test::quote(dir / "farm"));
     EXPECT_EQ(failed.exit_code, 1) << "a failed task, not 3 (not yet)";
     EXPECT_NE(failed.output.find("failed (exit 1, see"), std::string::npos) << failed.output;
-    std::ifstream log(dir / "farm/logs" / ("frames_" + last + ".log"));
+    // The task's log and exit status side by side, numbered as the states are.
+    const std::string stem = "frames_" + std::string(4 - std::min<size_t>(4, last.size()), '0') + last;
+    std::ifstream log(dir / "farm/logs" / (stem + ".log"));
     const std::string logged((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
     EXPECT_NE(logged.find("no render state"), std::string::npos) << logged;
+    std::ifstream rc(dir / "farm/logs" / (stem + ".rc"));
+    int recorded = -1;
+    EXPECT_TRUE(rc >> recorded) << stem << ".rc";
+    EXPECT_EQ(recorded, 1);
     // Each task as a scheduler without our scripts runs it: `farm task DIR PHASE I`.
     for (const auto& phase : plan.at("phases"))
         for (size_t i = 0; i < phase.at("tasks").size(); ++i) {

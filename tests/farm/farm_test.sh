@@ -86,8 +86,8 @@ echo "killed chunk 12-17 (pid $pid) with $written of its 6 frames written"
 ((written >= 1 && written < 6)) || fail "the kill did not land mid-chunk ($written of 6 frames written)"
 wait_jobs "$jobs" 300
 "$linework" farm status "$work/exact" || fail "farm status: the shot is not complete"
-grep -q "ended by signal 9; running it again" "$work/exact/logs/frames_2.log" || fail "the killed task was not run again"
-grep -q "resuming at frame" "$work/exact/logs/frames_2.log" || fail "the re-run did not resume"
+grep -q "ended by signal 9; running it again" "$work/exact/logs/frames_0002.log" || fail "the killed task was not run again"
+grep -q "resuming at frame" "$work/exact/logs/frames_0002.log" || fail "the re-run did not resume"
 if find "$work/exact" -name '*.partial*' | grep -q .; then fail "half-written files left"; fi
 for f in $(seq -f %04g 0 23); do
   "$linework" diff "$work/one/frame_$f.png" "$work/exact/frames/frame_$f.png" --max-error 0 > "$work/diff.log" ||

@@ -33,7 +33,7 @@ for ((i = 0; i < runs; i++)); do
   a=$(shot "$work/one" 1)
   b=$(shot "$work/two" 2)
   one+=("$a") two+=("$b")
-  state=$(grep -h "time per frame" "$work/two/logs/state_0.log" | tail -n1)
+  state=$(grep -h "time per frame" "$work/two/logs/state_0000.log" | tail -n1)
   echo "run $i: 1 task at a time $a s, 2 at a time $b s (state phase: $state)"
 done
 median() { printf '%s\n' "$@" | sort -g | awk '{v[NR]=$1} END {print v[int((NR+1)/2)]}'; }

@@ -125,8 +125,8 @@ std::string frame_list(const std::vector<int>& frames) {
 }
 
 // The last exit status a task's Slurm script recorded (-1: it has not run under it).
-int recorded_exit(const FarmPlan& plan, const std::string& id) {
-    std::ifstream in(plan.logs() / (id + ".rc"));
+int recorded_exit(const FarmPlan& plan, const FarmPhase& phase, size_t index) {
+    std::ifstream in(plan.task_file(phase.name, index, ".rc"));
     int rc = -1;
     if (in >> rc) return rc;
     return -1;
@@ -147,7 +147,7 @@ bool report_task(const FarmPlan& plan, const FarmPhase& phase, size_t index, std
             if (!std::filesystem::exists(plan.output() / frame_name(f, "png"))) missing.push_back(f);
         missing_frames.insert(missing_frames.end(), missing.begin(), missing.end());
     }
-    const int rc = recorded_exit(plan, task.id);
+    const int rc = recorded_exit(plan, phase, index);
     // Stopped (Ctrl-C, scancel's SIGTERM: 130, 143) is not failed: run again, it resumes.
     const bool stopped = !missing.empty() && (rc == 130 || rc == 143);
     const bool task_failed = !missing.empty() && rc > 0 && !stopped;
@@ -159,7 +159,7 @@ bool report_task(const FarmPlan& plan, const FarmPhase& phase, size_t index, std
     }
     std::printf("%d of %d %s written, missing %s", wanted - int(missing.size()), wanted,
                 phase.name == "state" ? "states (at chunk starts)" : "frames", frame_list(missing).c_str());
-    const std::string log = (plan.logs() / (phase.name + "_" + std::to_string(index) + ".log")).string();
+    const std::string log = plan.task_file(phase.name, index, ".log").string();
     if (task_failed) std::printf("; failed (exit %d, see %s)", rc, log.c_str());
     if (stopped) std::printf("; stopped (exit %d): run it again to go on", rc);
     std::printf("\n");
@@ -242,12 +242,13 @@ int run_task(const FarmOptions& o) {
     std::filesystem::current_path(plan.request.working_dir, ec);
     if (ec) throw Error(plan.request.working_dir.string() + ": cannot run the task there (" + ec.message() + ")");
     create_folder(plan.logs(), "log");
-    const std::filesystem::path log = plan.logs() / (phase->name + "_" + std::to_string(o.task_index) + ".log");
+    const std::filesystem::path log = plan.task_file(phase->name, size_t(o.task_index), ".log");
+    const std::filesystem::path rc_file = plan.task_file(phase->name, size_t(o.task_index), ".rc");
     std::printf("linework farm: task %s: %s\n", task.id.c_str(), shell_line(task.command).c_str());
     std::ofstream(log, std::ios::app) << "linework farm: task " << task.id << ": " << shell_line(task.command) << "\n";
-    std::filesystem::remove(plan.logs() / (task.id + ".rc"), ec);  // running: not failed, whatever an earlier run said
+    std::filesystem::remove(rc_file, ec);  // running: not failed, whatever an earlier run said
     const int rc = run_logged(task.command, log);
-    std::ofstream(plan.logs() / (task.id + ".rc")) << rc << "\n";
+    std::ofstream(rc_file) << rc << "\n";
     return rc;
 }
 

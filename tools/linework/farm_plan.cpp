@@ -32,6 +32,10 @@ std::vector<std::string> render_command(const FarmRequest& r, std::initializer_l
 
 }  // namespace
 
+std::filesystem::path FarmPlan::task_file(const std::string& phase, size_t index, const char* extension) const {
+    return logs() / (phase + "_" + padded(int(index)) + extension);
+}
+
 FarmPlan plan_farm(const FarmRequest& request) {
     if (request.chunk < 1) throw usage_error("--chunk: must be 1 or more frames");
     if (request.warmup < 0) throw usage_error("--warmup: must be 0 or more");

@@ -56,6 +56,9 @@ struct FarmPlan {
     std::filesystem::path output() const { return request.dir / "frames"; }
     std::filesystem::path states() const { return request.dir / "states"; }
     std::filesystem::path logs() const { return request.dir / "logs"; }
+    // logs/PHASE_NNNN.log and .rc: task `index` of a phase, numbered as Slurm's %4a numbers
+    // an array task's output, so that a task's log and exit status sort and read together.
+    std::filesystem::path task_file(const std::string& phase, size_t index, const char* extension) const;
 };
 
 // Throws a usage error for a chunk under 1 or a warm-up under 0.

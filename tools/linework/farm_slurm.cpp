@@ -36,7 +36,7 @@ std::string phase_script(const FarmPlan& plan, size_t index, int throttle, int c
     s += "#SBATCH --chdir=" + shell_line({plan.request.working_dir.string()}) + "\n";
     // Appended, so that a requeued task's log keeps the run it replaces.
     s += "#SBATCH --open-mode=append\n";
-    s += "#SBATCH --output=" + shell_line({logs + "/" + phase.name + "_%a.log"}) + "\n";
+    s += "#SBATCH --output=" + shell_line({logs + "/" + phase.name + "_%4a.log"}) + "\n";
     s += "set -uo pipefail\n";
     s += "case \"${SLURM_ARRAY_TASK_ID:?run me through sbatch (submit.sh)}\" in\n";
     for (size_t t = 0; t < phase.tasks.size(); ++t)
@@ -50,13 +50,15 @@ std::string phase_script(const FarmPlan& plan, size_t index, int throttle, int c
     // SIGTERM) does not.
     // The exit status is recorded once the task is over: while it runs (or runs again), an
     // earlier attempt's status would read as a failure to `farm status`.
-    s += "rm -f " + shell_line({logs}) + "/\"$id.rc\"\n";
+    // The exit status beside the task's log: logs/PHASE_NNNN.rc (FarmPlan::task_file).
+    s += "printf -v rc_file '%s/%s_%04d.rc' " + shell_line({logs, phase.name}) + " \"$SLURM_ARRAY_TASK_ID\"\n";
+    s += "rm -f \"$rc_file\"\n";
     s += "for attempt in 1 2 3; do\n";
     s += "  \"${cmd[@]}\"; rc=$?\n";
     s += "  if [ \"$rc\" -le 128 ] || [ \"$rc\" -eq 130 ] || [ \"$rc\" -eq 143 ]; then break; fi\n";
     s += "  echo \"linework farm: task $id ended by signal $((rc - 128)); running it again (attempt $((attempt + 1)))\"\n";
     s += "done\n";
-    s += "echo \"$rc\" > " + shell_line({logs}) + "/\"$id.rc\"\n";
+    s += "echo \"$rc\" > \"$rc_file\"\n";
     s += "exit \"$rc\"\n";
     return s;
 }
