@@ -135,6 +135,27 @@ TEST(Viewer, ScriptedSessionMatchesGoldenAndRender) {
     expect_close(shot, read_image_rgba8(golden), dir, "viewer vs golden");
 }
 
+// F12 and F5 write the next numbered file that is not there yet: a file from an earlier
+// session is kept, and a screenshot the script names takes no number.
+TEST(Viewer, NumberedFilesGoOnAfterThoseThere) {
+    if (!have_xvfb()) GTEST_SKIP() << "xvfb-run not installed (apt-get install xvfb xauth)";
+    const fs::path dir = test::temp_dir();
+    write_file(dir / "linework_view_0001.png", "an earlier session's");
+    write_file(dir / "session.txt", "wait 1\nscreenshot " + (dir / "named.png").string() +
+                                        "\nkey f12\nwait 1\nkey f12\nwait 1\nkey f5\nwait 1\nquit\n");
+    const auto r = run_view(test::quote(test::data_dir() / "models/spot/spot.glb") + " --size 160x120 -o " +
+                            test::quote(dir) + " --script " + test::quote(dir / "session.txt"));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_EQ(read_image_rgba8(dir / "named.png").width, 160);
+    EXPECT_EQ(read_image_rgba8(dir / "linework_view_0000.png").width, 160) << r.output;
+    std::ifstream kept(dir / "linework_view_0001.png");
+    const std::string earlier((std::istreambuf_iterator<char>(kept)), std::istreambuf_iterator<char>());
+    EXPECT_EQ(earlier, "an earlier session's");
+    EXPECT_EQ(read_image_rgba8(dir / "linework_view_0002.png").width, 160) << r.output;
+    EXPECT_FALSE(fs::exists(dir / "linework_view_0003.png"));
+    EXPECT_EQ(load_scene_file(dir / "linework_view_0000.json").width, 160) << r.output;
+}
+
 // Resizing makes the swapchain again at the new size; minimizing pauses rendering without
 // a zero-sized swapchain; the panel is drawn meanwhile; nothing crashes or warns.
 TEST(Viewer, ResizeAndMinimizeByScript) {

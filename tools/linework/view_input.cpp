@@ -37,16 +37,27 @@ double median(std::vector<double> v) {
     return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-std::string numbered(const std::string& dir, const char* stem, int n, const char* ext) {
-    char name[64];
-    std::snprintf(name, sizeof name, "%s_%04d.%s", stem, n, ext);
-    return (std::filesystem::path(dir) / name).string();
+// The next numbered file (F12, F5, the panel's buttons) from `next` on that is not there yet:
+// a second viewer session in the same folder goes on after the first's files instead of
+// writing over them. Files the script names take no number.
+std::string numbered(const std::string& dir, const char* stem, int& next, const char* ext) {
+    for (;; ++next) {
+        char name[64];
+        std::snprintf(name, sizeof name, "%s_%04d.%s", stem, next, ext);
+        const std::filesystem::path path = std::filesystem::path(dir) / name;
+        std::error_code ec;
+        if (!std::filesystem::exists(path, ec)) {
+            ++next;
+            return path.string();
+        }
+    }
 }
 
 }  // namespace
 
 void save_view_file(ViewerState& s, VkExtent2D extent) {
-    const std::string path = s.save_path == kNumberedFile ? numbered(s.output_dir, "linework_view", s.saves_done, "json") : s.save_path;
+    const std::string path =
+        s.save_path == kNumberedFile ? numbered(s.output_dir, "linework_view", s.next_save, "json") : s.save_path;
     SceneDesc saved = s.desc;
     saved.width = int(extent.width);
     saved.height = int(extent.height);
@@ -59,7 +70,6 @@ void save_view_file(ViewerState& s, VkExtent2D extent) {
     std::ofstream out(path, std::ios::binary);
     out << scene_json(saved, s.camera.view(), std::filesystem::path(path).parent_path());
     if (!out.flush()) throw Error(path + ": cannot write");
-    ++s.saves_done;
     s.message = "wrote " + path;
     // What the file cannot hold, said: the command line's parameterization settings, and the
     // frame of an animation on screen (the file keeps the scene's range).
@@ -75,9 +85,8 @@ void save_view_file(ViewerState& s, VkExtent2D extent) {
 
 void write_screenshot(ViewerState& s, const ImageRGBA8& shot) {
     const std::string path =
-        s.screenshot_path == kNumberedFile ? numbered(s.output_dir, "linework_view", s.screenshots_taken, "png") : s.screenshot_path;
+        s.screenshot_path == kNumberedFile ? numbered(s.output_dir, "linework_view", s.next_screenshot, "png") : s.screenshot_path;
     write_png(path, shot);
-    ++s.screenshots_taken;
     s.message = "wrote " + path;
     std::printf("%s\n", s.message.c_str());
     s.screenshot_path.clear();

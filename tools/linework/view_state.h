@@ -67,7 +67,7 @@ struct ViewerState {
     // Requests the loop carries out after this frame is drawn: a path, or kNumberedFile.
     std::string screenshot_path, save_path;
     std::string output_dir = ".";
-    int screenshots_taken = 0, saves_done = 0;
+    int next_screenshot = 0, next_save = 0;  // where the numbered files' search starts
     // Statistics for the panel.
     double frame_ms = 0.0, render_ms = 0.0, present_ms = 0.0;
     std::vector<PassTime> gpu;
