@@ -107,8 +107,8 @@ std::vector<uint32_t> array_to_indices(const pyb::array& array, const std::strin
     throw pyb::value_error(name + ": expected integer vertex indices, got dtype " + std::string(pyb::str(array.dtype())));
 }
 
-void warn_in_python(const std::string& message) {
-    if (PyErr_WarnEx(PyExc_UserWarning, printable(message).c_str(), 1) != 0) throw pyb::error_already_set();
+void warn_in_python(const std::string& message, PyObject* category) {
+    if (PyErr_WarnEx(category, printable(message).c_str(), 1) != 0) throw pyb::error_already_set();
 }
 
 void check_output_folder(const std::filesystem::path& path) {

@@ -96,9 +96,9 @@ auto reading_input(F&& f) {
     }
 }
 
-// `message` as a Python UserWarning (pyb::error_already_set where the filter makes it an
-// error). Call with the GIL held.
-void warn_in_python(const std::string& message);
+// `message` as a Python warning of `category` (pyb::error_already_set where the filter makes
+// it an error). Call with the GIL held.
+void warn_in_python(const std::string& message, PyObject* category = PyExc_UserWarning);
 
 // Runs f with the engine's warnings on this thread captured (core/log.h), then gives each
 // to Python's `warnings` as a UserWarning (a script can filter or catch them; stderr would

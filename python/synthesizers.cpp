@@ -272,13 +272,13 @@ pyb::object ribbon(const pyb::object& exemplar_value, const pyb::object& curve_v
         const std::string warning = std::to_string(empty) + " of " + std::to_string(s.solution.rules.size()) +
                                     " pieces lie where no ink can avoid the overlap and are left empty "
                                     "(info['empty_pieces'])";
-        if (PyErr_WarnEx(PyExc_RuntimeWarning, warning.c_str(), 1) != 0) throw pyb::error_already_set();
+        warn_in_python(warning, PyExc_RuntimeWarning);
     }
     if (cut > 0) {
         const std::string warning = std::to_string(cut) + " of " + std::to_string(s.solution.rules.size()) +
                                     " pieces cannot hold the whole pattern where the curve bends this tightly and may "
                                     "cut it (info['cut_pieces']); a shorter piece or a wider scale helps";
-        if (PyErr_WarnEx(PyExc_RuntimeWarning, warning.c_str(), 1) != 0) throw pyb::error_already_set();
+        warn_in_python(warning, PyExc_RuntimeWarning);
     }
     pyb::dict info = return_info ? ribbon_info(s, desc, *ctx) : pyb::dict();
     pyb::array_t<uint8_t> out = image_to_array(composite(std::move(s.image), transparent));
