@@ -63,6 +63,26 @@ TEST(Cli, RendersTheDefaultScene) {
     EXPECT_TRUE(fs::exists(out / "frame_0023.png")) << "the default scene turns over 24 frames";
 }
 
+// The scene key coherence.policy draws what --param draws, and the flag overrides the key.
+TEST(Cli, CoherencePolicyKeyDrawsAsTheFlag) {
+    const fs::path dir = test::temp_dir();
+    const std::string model = (test::data_dir() / "models/spot/spot.glb").string();
+    const std::string common = R"("model": ")" + model + R"(", "size": [160, 120], "samples": 1,
+        "camera": {"eye": [2.6, 0.9, -2.4], "target": [0, 0.05, 0], "fov": 35, "orbit": 40},
+        "lines": {"silhouette": {"slam": ")" + (test::source_dir() / "scenes/slams/dots.exr").string() + R"("}})";
+    std::ofstream(dir / "key.json") << "{" + common + R"(, "coherence": {"policy": "arclength"}})";
+    std::ofstream(dir / "plain.json") << "{" + common + "}";
+    const auto render = [&](const std::string& scene, const std::string& flags, const std::string& out) {
+        const auto r = run_linework("render " + quote(dir / scene) + " -o " + quote(dir / out) + " --frames 0:2 --device cpu" + flags);
+        EXPECT_EQ(r.exit_code, 0) << r.output;
+        return read_image_rgba8(dir / out / "frame_0002.png").pixels;
+    };
+    const auto by_key = render("key.json", "", "key");
+    EXPECT_EQ(by_key, render("plain.json", " --param arclength", "flag"));
+    EXPECT_NE(by_key, render("plain.json", "", "coherent"));
+    EXPECT_EQ(render("key.json", " --param coherent", "overridden"), render("plain.json", "", "coherent2"));
+}
+
 TEST(Cli, ExplicitCameraChangesTheImage) {
     const fs::path out = test::temp_dir();
     const fs::path model = test::data_dir() / "models/spot/spot.glb";

@@ -1,6 +1,7 @@
 // Scene files: every key checked, errors name the file and the key path.
 #include "core/error.h"
 #include "scene/scene_file.h"
+#include "session/scene_session.h"
 #include "test_support.h"
 
 namespace lw {
@@ -69,6 +70,43 @@ TEST(SceneFile, DescriptionIsKeptAndWrittenBack) {
     const std::string written = scene_json(s, ViewCamera{.eye = {0, 0, 3}, .target = {0, 0, 0}}, ".");
     EXPECT_EQ(parse_scene_json(written, "y.json").description, "the cow, for the README") << written;
     EXPECT_EQ(error_of(R"({"model": "a.glb", "description": 3})").rfind("scenes/x.json: description: ", 0), 0u);
+}
+
+// "coherence": the parameterization's settings as scene keys (the command line's --param,
+// --splat-radius, --inlier-px, --min-stroke-length, --length-scale), read, applied by the
+// session's defaults and written back.
+TEST(SceneFile, CoherenceKeysAreReadAppliedAndWrittenBack) {
+    const SceneDesc s = parse_scene_json(R"({"model": "a.glb", "coherence": {"policy": "arclength", "splat_radius": 6,
+        "inlier_distance": 2, "min_stroke_length": 12, "length_scale": 3}})", "x.json");
+    ASSERT_TRUE(s.coherence.policy.has_value());
+    EXPECT_EQ(*s.coherence.policy, ParamPolicy::Arclength);
+    const SessionOptions options = default_session_options(s);
+    EXPECT_EQ(options.coherence.policy, ParamPolicy::Arclength);
+    EXPECT_FLOAT_EQ(options.coherence.splat_radius_px, 6.0f);
+    EXPECT_FLOAT_EQ(options.coherence.ransac.inlier_px, 2.0f);
+    EXPECT_FLOAT_EQ(options.coherence.min_stroke_length_px, 12.0f);
+    // κ fills in for sets without their own: not an override of theirs, as --length-scale is.
+    EXPECT_FLOAT_EQ(options.length_scale, 0.0f);
+    EXPECT_EQ(s.coherence.length_scale.value_or(0.0f), 3.0f);
+
+    const SceneDesc back = parse_scene_json(scene_json(s, ViewCamera{.eye = {0, 0, 3}, .target = {0, 0, 0}}, "."), "y.json");
+    EXPECT_EQ(back.coherence.policy, s.coherence.policy);
+    EXPECT_EQ(back.coherence.splat_radius_px, s.coherence.splat_radius_px);
+    EXPECT_EQ(back.coherence.inlier_px, s.coherence.inlier_px);
+    EXPECT_EQ(back.coherence.min_stroke_length_px, s.coherence.min_stroke_length_px);
+    EXPECT_EQ(back.coherence.length_scale, s.coherence.length_scale);
+
+    // Left out: the defaults, δ twice the sample spacing, and nothing written.
+    const SceneDesc plain = parse_scene_json(R"({"model": "a.glb", "lines": {"sample_spacing": 3}})", "x.json");
+    EXPECT_EQ(default_session_options(plain).coherence.policy, ParamPolicy::Coherent);
+    EXPECT_FLOAT_EQ(default_session_options(plain).coherence.splat_radius_px, 6.0f);
+    EXPECT_EQ(scene_json(plain, ViewCamera{.eye = {0, 0, 3}, .target = {0, 0, 0}}, ".").find("coherence"), std::string::npos);
+
+    EXPECT_EQ(error_of(R"({"model": "a.glb", "coherence": {"policy": "tiled"}})").rfind("scenes/x.json: coherence.policy: ", 0), 0u);
+    EXPECT_EQ(error_of(R"({"model": "a.glb", "coherence": {"splat_radius": 0}})").rfind("scenes/x.json: coherence.splat_radius: ", 0), 0u);
+    EXPECT_EQ(error_of(R"({"model": "a.glb", "coherence": {"inlier": 2}})"),
+              "scenes/x.json: coherence.inlier: unknown key (known here: inlier_distance, length_scale, min_stroke_length, "
+              "policy, splat_radius)");
 }
 
 TEST(SceneFile, ErrorsNameTheKey) {

@@ -285,6 +285,20 @@ LayerTransform read_layer_transform(ObjectReader& r) {
     return t;
 }
 
+// "coherence": {"policy", "splat_radius", "inlier_distance", "min_stroke_length",
+// "length_scale"}, all optional; pixels but for κ.
+SceneCoherence read_scene_coherence(ObjectReader& scene, const std::filesystem::path& file) {
+    ObjectReader r(scene.at("coherence"), "coherence", file);
+    SceneCoherence c;
+    if (r.has("policy")) c.policy = param_policy_named(r.string_of("policy", {"coherent", "arclength", "stretch"}));
+    if (r.has("splat_radius")) c.splat_radius_px = float(r.number("splat_radius", 0.1, 1024.0));
+    if (r.has("inlier_distance")) c.inlier_px = float(r.number("inlier_distance", 0.01, 1024.0));
+    if (r.has("min_stroke_length")) c.min_stroke_length_px = float(r.number("min_stroke_length", 0.0, 1e5));
+    if (r.has("length_scale")) c.length_scale = float(r.number("length_scale", 1e-3, 1e4));
+    r.reject_unknown();
+    return c;
+}
+
 // "layers": [{"strokes": FILE, "color", "width_scale", "scale_widths", "outline", "fill",
 //             "slam" | "ribbon" (+ "ribbon_scale"), "taper", "transform" | "keyframes"}, ...]
 std::vector<VectorLayerDesc> read_layers(ObjectReader& scene, const std::filesystem::path& file) {
@@ -362,7 +376,8 @@ SceneDesc parse_scene_json(const std::string& text, const std::filesystem::path&
         // A misspelt "model" is what is missing more often than a model: name the key first.
         static const std::set<std::string> kTopKeys{"version", "description", "model", "size", "fov", "camera",
                                                      "camera_path", "animation", "shading", "color", "materials",
-                                                     "background", "samples", "lines", "line_sets", "layers"};
+                                                     "background", "samples", "lines", "line_sets", "layers",
+                                                     "coherence"};
         for (const auto& [key, value] : root.items())
             if (!kTopKeys.count(key)) r.fail_key(key, "unknown key (and no \"model\")");
         r.fail_key("model", "required (a .gltf/.glb, .obj or .ply path, or an array of them) unless the scene has layers");
@@ -439,6 +454,7 @@ SceneDesc parse_scene_json(const std::string& text, const std::filesystem::path&
         scene.style.samples = static_cast<uint32_t>(n.get<long long>());
     }
     if (r.has("lines")) scene.lines = read_lines(r, source);
+    if (r.has("coherence")) scene.coherence = read_scene_coherence(r, source);
     if (r.has("line_sets")) {
         if (!scene.lines.enabled) r.fail_key("line_sets", "cannot be combined with \"lines\": false");
         scene.lines.sets = read_line_sets(r, source);

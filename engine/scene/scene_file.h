@@ -41,6 +41,18 @@ inline const ClipChoice& clip_of_model(const AnimationDesc& animation, size_t mo
     return animation.clips.size() == 1 ? animation.clips.front() : animation.clips.at(model);
 }
 
+// "coherence": the stroke parameterization's settings for the whole scene (Bénard et al.
+// 2010 §4; the command line's --param, --splat-radius, --inlier-px, --min-stroke-length and
+// --length-scale override them). A line set's own "coherence" overrides policy and
+// length_scale for that set. Absent: the defaults the session picks.
+struct SceneCoherence {
+    std::optional<ParamPolicy> policy;            // absent: coherent
+    std::optional<float> splat_radius_px;         // δ of the splat sprites; absent: twice the sample spacing
+    std::optional<float> inlier_px;               // RANSAC's inlier distance along the path
+    std::optional<float> min_stroke_length_px;    // shorter visible paths are not drawn as strokes
+    std::optional<float> length_scale;            // κ for every set and layer; absent: each its own
+};
+
 struct SceneDesc {
     std::filesystem::path source;                // the scene file; empty for a bare model
     std::string description;                     // "description": what the image is for (not drawn)
@@ -55,6 +67,7 @@ struct SceneDesc {
     float fov_deg = 40.0f;                       // used when framing
     SurfaceStyle style;
     LinesDesc lines;
+    SceneCoherence coherence;
     std::vector<VectorLayerDesc> layers;         // 2D drawings over the 3D frame, in order
 };
 
@@ -70,7 +83,7 @@ struct SceneDesc {
 // view"), in the format load_scene_file reads. Model, SLAM and ribbon paths are written
 // relative to `dest_dir` (the folder the file will be in) when they can be. Written: models,
 // size, fov, camera, shading and colours, lines (every type, thresholds, styles), the line
-// sets (every key), the animation's clip and fps. Not written: camera paths (the view is one fixed camera) and
+// sets (every key), the coherence settings given, the animation's clip and fps. Not written: camera paths (the view is one fixed camera) and
 // vector layers.
 [[nodiscard]] std::string scene_json(const SceneDesc& desc, const ViewCamera& camera,
                                      const std::filesystem::path& dest_dir);

@@ -115,9 +115,7 @@ json line_sets(const std::vector<LineSetDesc>& sets, const std::filesystem::path
         if (!set.select.models.empty()) select["models"] = set.select.models;
         if (!set.select.materials.empty()) select["materials"] = set.select.materials;
         json coherence = json::object();
-        if (const auto& p = set.coherence.policy)
-            coherence["policy"] = *p == ParamPolicy::Coherent ? "coherent" : *p == ParamPolicy::Arclength ? "arclength"
-                                                                                                            : "stretch";
+        if (const auto& p = set.coherence.policy) coherence["policy"] = param_policy_name(*p);
         if (set.coherence.length_scale > 0.0f) coherence["length_scale"] = round6(set.coherence.length_scale);
         if (set.coherence.sample_spacing_px > 0.0f) coherence["sample_spacing"] = round6(set.coherence.sample_spacing_px);
         out.push_back({{"name", set.name}, {"enabled", set.enabled}, {"select", select},
@@ -184,6 +182,14 @@ std::string scene_json(const SceneDesc& desc, const ViewCamera& camera, const st
         root["lines"] = l;
         if (!lines.sets.empty()) root["line_sets"] = line_sets(lines.sets, dest_dir);
     }
+    json coherence = json::object();
+    const SceneCoherence& c = desc.coherence;
+    if (c.policy) coherence["policy"] = param_policy_name(*c.policy);
+    if (c.splat_radius_px) coherence["splat_radius"] = round6(*c.splat_radius_px);
+    if (c.inlier_px) coherence["inlier_distance"] = round6(*c.inlier_px);
+    if (c.min_stroke_length_px) coherence["min_stroke_length"] = round6(*c.min_stroke_length_px);
+    if (c.length_scale) coherence["length_scale"] = round6(*c.length_scale);
+    if (!coherence.empty()) root["coherence"] = coherence;
     if (desc.animation.play) {
         json a{{"fps", round6(desc.animation.fps)}};
         const auto clip_json = [](const ClipChoice& clip) -> json {

@@ -52,7 +52,14 @@ LoadedScene load_models(SceneDesc& desc, std::vector<Model> models) {
 
 SessionOptions default_session_options(const SceneDesc& desc) {
     SessionOptions options;
-    options.coherence.splat_radius_px = desc.lines.sample_spacing_px * 2.0f;
+    CoherenceParams& c = options.coherence;
+    const SceneCoherence& given = desc.coherence;
+    c.policy = given.policy.value_or(c.policy);
+    c.splat_radius_px = given.splat_radius_px.value_or(desc.lines.sample_spacing_px * 2.0f);
+    c.ransac.inlier_px = given.inlier_px.value_or(c.ransac.inlier_px);
+    c.min_stroke_length_px = given.min_stroke_length_px.value_or(c.min_stroke_length_px);
+    // The scene's κ is not copied into options.length_scale: --length-scale overrides every
+    // set's own, the scene's only fills in for sets without one (load_line_styles).
     return options;
 }
 
@@ -72,8 +79,10 @@ SceneSession::SceneSession(const Context& ctx, SceneDesc desc, const SessionOpti
     if (options.camera.up) scene_.camera.up = *options.camera.up;
     if (scene_.camera.eye == scene_.camera.target) throw Error("camera: the eye and the target coincide");
     load_line_styles();
-    for (LayerStyle& style : layers_.styles) {  // the same policy and tracker settings for layers
-        if (options.length_scale > 0.0f) style.coherence.length_scale = options.length_scale;
+    // Layers: the same policy and tracker settings, and κ from --length-scale or the scene.
+    const float layer_kappa = options.length_scale > 0.0f ? options.length_scale : desc_.coherence.length_scale.value_or(0.0f);
+    for (LayerStyle& style : layers_.styles) {
+        if (layer_kappa > 0.0f) style.coherence.length_scale = layer_kappa;
         style.coherence.policy = options.coherence.policy;
         style.coherence.splat_radius_px = options.coherence.splat_radius_px;
         style.coherence.ransac = options.coherence.ransac;
@@ -145,9 +154,15 @@ void check_line_set_groups(const std::vector<LineSetDesc>& sets, const LoadedSce
 
 void SceneSession::load_line_styles() {
     if (has_model()) check_line_set_groups(desc_.lines.sets, scene_, desc_.source.empty() ? "scene" : desc_.source.string());
+    // κ: --length-scale for every set; else the scene's "coherence.length_scale" for the sets
+    // (and the shorthand's) that give none of their own.
     if (options_.length_scale > 0.0f) {
         desc_.lines.length_scale = options_.length_scale;
         for (LineSetDesc& set : desc_.lines.sets) set.coherence.length_scale = options_.length_scale;
+    } else if (const std::optional<float>& kappa = desc_.coherence.length_scale) {
+        if (!(desc_.lines.length_scale > 0.0f)) desc_.lines.length_scale = *kappa;
+        for (LineSetDesc& set : desc_.lines.sets)
+            if (!(set.coherence.length_scale > 0.0f)) set.coherence.length_scale = *kappa;
     }
     const std::vector<LineSetDesc> previous = std::move(sets_);  // what slams_ and ribbons_ were read for
     sets_ = effective_line_sets(desc_.lines);

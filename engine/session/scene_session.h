@@ -50,8 +50,9 @@ struct SessionOptions {
     CameraOverride camera;
 };
 
-// What `linework render` runs a scene with when no option changes it: the base coherence
-// parameters with δ twice the scene's sample spacing (§4.1), the rest at their defaults.
+// What `linework render` runs a scene with when no option changes it: the scene's
+// "coherence" keys, and where it gives none δ twice the scene's sample spacing (§4.1) and
+// the rest at their defaults.
 [[nodiscard]] SessionOptions default_session_options(const SceneDesc& desc);
 
 struct FrameRequest {

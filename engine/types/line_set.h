@@ -22,6 +22,20 @@ namespace lw {
 // coherent (votes + RANSAC), arclength (tiling, T = s·κ/Lmax) or stretch (T = s/L).
 enum class ParamPolicy { Coherent, Arclength, Stretch };
 
+// The names scene keys and flags give the policies ("coherent", "arclength", "stretch").
+inline const char* param_policy_name(ParamPolicy policy) {
+    switch (policy) {
+        case ParamPolicy::Coherent: return "coherent";
+        case ParamPolicy::Arclength: return "arclength";
+        case ParamPolicy::Stretch: return "stretch";
+    }
+    return "?";
+}
+// The caller has checked that `name` is one of the three.
+inline ParamPolicy param_policy_named(const std::string& name) {
+    return name == "arclength" ? ParamPolicy::Arclength : name == "stretch" ? ParamPolicy::Stretch : ParamPolicy::Coherent;
+}
+
 enum class Visibility { Visible, Hidden, Any };
 
 // Occlusion levels a set selects (ScreenPath::qi): 0 is visible, 1 behind one surface, …

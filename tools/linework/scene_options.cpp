@@ -51,27 +51,28 @@ void add_scene_options(CLI::App* cmd, SceneOptions& o, bool offline) {
         ->needs(slam);
     cmd->add_option("--param", o.param,
                     "Stroke parameterization: coherent (default; Bénard et al. 2010 §4), arclength (tiling) or "
-                    "stretch (one texture per path)")
+                    "stretch (one texture per path) (scene key coherence.policy)")
         ->check(CLI::IsMember({"coherent", "arclength", "stretch"}));
     cmd->add_option("--splat-radius", o.splat_radius,
                     "δ of the parameterization sprites, pixels (default: twice the sample spacing); larger keeps "
-                    "fast lines coherent, smaller keeps nearby lines apart (§4.1)")
+                    "fast lines coherent, smaller keeps nearby lines apart (§4.1; scene key coherence.splat_radius)")
         ->check(positive("pixels"));
     cmd->add_flag("--validation", o.validation,
                   "Enable the Khronos validation layer; any warning or error fails the run (also LINEWORK_VALIDATION=1)");
     if (!offline) return;
     cmd->add_option("--length-scale", o.length_scale,
                     "κ: SLAM periods per native texture length (default: square texels, the SLAM's height over "
-                    "the stroke width)")
+                    "the stroke width; scene key coherence.length_scale)")
         ->check(positive());
-    cmd->add_option("--inlier-px", o.inlier_px, "RANSAC inlier distance along the path, pixels (§4.2)")
-        ->check(positive("pixels"))
-        ->capture_default_str();
+    cmd->add_option("--inlier-px", o.inlier_px,
+                    "RANSAC inlier distance along the path, pixels (§4.2; default " +
+                        number_text(RansacParams{}.inlier_px) + "; scene key coherence.inlier_distance)")
+        ->check(positive("pixels"));
     cmd->add_option("--min-stroke-length", o.min_stroke_length,
                     "Visible paths shorter than this many pixels are not drawn as strokes, splatted or dumped "
-                    "(0 keeps every fragment)")
-        ->check(non_negative("pixels"))
-        ->capture_default_str();
+                    "(0 keeps every fragment; default " + number_text(CoherenceParams{}.min_stroke_length_px) +
+                        "; scene key coherence.min_stroke_length)")
+        ->check(non_negative("pixels"));
 }
 
 namespace {
@@ -153,13 +154,14 @@ void check_flags_shape_drawn_lines(const SceneOptions& o, const LinesDesc& lines
 SessionOptions session_options(const SceneOptions& o, const SceneDesc& desc) {
     SessionOptions session = default_session_options(desc);
     CoherenceParams& c = session.coherence;
-    if (o.param == "arclength") c.policy = ParamPolicy::Arclength;
-    if (o.param == "stretch") c.policy = ParamPolicy::Stretch;
+    if (!o.param.empty()) c.policy = param_policy_named(o.param);
     if (o.splat_radius > 0.0f) c.splat_radius_px = o.splat_radius;
-    c.ransac.inlier_px = o.inlier_px;
-    c.min_stroke_length_px = o.min_stroke_length;
-    session.length_scale = o.length_scale;
-    session.coherent = !o.param.empty();
+    if (o.inlier_px) c.ransac.inlier_px = *o.inlier_px;
+    if (o.min_stroke_length) c.min_stroke_length_px = *o.min_stroke_length;
+    if (o.length_scale > 0.0f) session.length_scale = o.length_scale;
+    // A policy the user chose, on the command line or in the scene: every set is fitted
+    // (and dumped), as SessionOptions::coherent says.
+    session.coherent = !o.param.empty() || desc.coherence.policy.has_value();
     return session;
 }
 

@@ -26,11 +26,13 @@ struct SceneOptions {
     std::string curvature;  // --curvature exact|trimesh2 (empty: the scene's)
     std::string slam;
     float stroke_width = 6.0f;
+    // The parameterization's flags; each unset (empty, 0, absent) leaves the scene's
+    // "coherence" key, else the default.
     std::string param;
-    float splat_radius = 0.0f;  // 0: twice the sample spacing
-    float inlier_px = 1.5f;
-    float min_stroke_length = CoherenceParams{}.min_stroke_length_px;
-    float length_scale = 0.0f;  // 0: square texels (the SLAM's height over the stroke width)
+    float splat_radius = 0.0f;
+    std::optional<float> inlier_px;
+    std::optional<float> min_stroke_length;
+    float length_scale = 0.0f;
     bool validation = false;
 };
 

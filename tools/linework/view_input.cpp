@@ -67,15 +67,19 @@ void save_view_file(ViewerState& s, VkExtent2D extent) {
         if (saved.lines.sets.empty()) saved.lines.styles[i].slam.clear();
         else if (i < saved.lines.sets.size()) saved.lines.sets[i].style.slam.clear();
     }
+    // The parameterization on screen (the panel's policy and splat radius, or the flags'),
+    // where it is not what the saved scene would give anyway.
+    const SessionOptions would_be = default_session_options(saved);
+    if (s.coherence.policy != would_be.coherence.policy || saved.coherence.policy)
+        saved.coherence.policy = s.coherence.policy;
+    if (s.coherence.splat_radius_px != would_be.coherence.splat_radius_px)
+        saved.coherence.splat_radius_px = s.coherence.splat_radius_px;
     std::ofstream out(path, std::ios::binary);
     out << scene_json(saved, s.camera.view(), std::filesystem::path(path).parent_path());
     if (!out.flush()) throw Error(path + ": cannot write");
     s.message = "wrote " + path;
-    // What the file cannot hold, said: the command line's parameterization settings, and the
-    // frame of an animation on screen (the file keeps the scene's range).
-    if (s.coherence.policy != CoherenceParams{}.policy)
-        s.message += std::string(" (the parameterization is --param ") + policy_name(s.coherence.policy) +
-                     ", which a scene file does not hold: give it to linework render)";
+    // What the file cannot hold, said: the frame of an animation on screen (the file keeps
+    // the scene's range).
     if (s.animated)
         s.message += " (frame " + std::to_string(int(std::lround(s.time_s * s.fps))) +
                      " is on screen: linework render " + path + " --frames N:N draws it)";

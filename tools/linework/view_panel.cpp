@@ -55,15 +55,6 @@ void OrbitCamera::pan(float dx_px, float dy_px, float height) {
     target += move;
 }
 
-const char* policy_name(ParamPolicy policy) {
-    switch (policy) {
-        case ParamPolicy::Coherent: return "coherent";
-        case ParamPolicy::Arclength: return "arclength";
-        case ParamPolicy::Stretch: return "stretch";
-    }
-    return "?";
-}
-
 namespace {
 
 void toggle_type(LineParams& p, LineType type) { set_line_type_enabled(p, type, !line_type_enabled(p, type)); }
@@ -137,7 +128,7 @@ bool apply_key(ViewerState& s, int key) {
         case GLFW_KEY_1: case GLFW_KEY_2: case GLFW_KEY_3: case GLFW_KEY_4: toggle_strokes(s, size_t(key - GLFW_KEY_1)); break;
         case GLFW_KEY_P:
             s.coherence.policy = ParamPolicy((int(s.coherence.policy) + 1) % 3);
-            s.message = std::string("parameterization: ") + policy_name(s.coherence.policy);
+            s.message = std::string("parameterization: ") + param_policy_name(s.coherence.policy);
             break;
         case GLFW_KEY_T: {
             SurfaceStyle& st = s.desc.style;

@@ -79,8 +79,6 @@ struct ViewerState {
     std::string message;                  // last action ("wrote shot.png")
 };
 
-const char* policy_name(ParamPolicy policy);
-
 // The action of a key (GLFW key code); returns false for keys the viewer does not use.
 bool apply_key(ViewerState& s, int key);
 
