@@ -58,14 +58,24 @@ HatchSequence generate_hatching(const HatchTraining& t, const HatchDesc& desc, R
     std::vector<int> history(static_cast<size_t>(n));  // Z_temp ← Z_t
     for (int i = 0; i < n; ++i) history[size_t(i)] = i;
     const Samples training = t.vectors;
-    const double threshold =
-        desc.threshold < 0.0 ? 3.0 * random_block_kl2(t, std::min(desc.block, desc.count), rng) : desc.threshold;
-    out.threshold = threshold;
+    // The automatic threshold is KL2's scale for the block's size, which grows as the sample
+    // shrinks: a shorter last block is held to its own, not to a full block's.
+    std::vector<std::pair<int, double>> thresholds;  // (block size, threshold), at most two
+    const auto threshold_for = [&](int size) {
+        if (desc.threshold >= 0.0) return desc.threshold;
+        for (const auto& [n_strokes, value] : thresholds)
+            if (n_strokes == size) return value;
+        thresholds.emplace_back(size, 3.0 * random_block_kl2(t, size, rng));
+        return thresholds.back().second;
+    };
+    out.threshold = threshold_for(std::min(desc.block, desc.count));
     int window = desc.window;
     int index = 0;
     while (int(out.ids.size()) < desc.count) {
         ++index;
         const int size = std::min(desc.block, desc.count - int(out.ids.size()));
+        const double threshold = threshold_for(size);
+        const int first_window = window;
         HatchBlock best_block;
         std::vector<int> best_ids;
         for (int attempt = 1;; ++attempt) {
@@ -78,21 +88,28 @@ HatchSequence generate_hatching(const HatchTraining& t, const HatchDesc& desc, R
                 h.push_back(pick);
             }
             HatchBlock b{index, out.ids.size() + 1, out.ids.size() + size_t(size), window,
-                         kl2_divergence(training, sequence_vectors(t, ids)), attempt, false};
+                         kl2_divergence(training, sequence_vectors(t, ids)), attempt, false, threshold};
             if (best_ids.empty() || b.kl2 < best_block.kl2) best_block = b, best_ids = ids;
             const bool over = threshold > 0.0 && b.kl2 > threshold;
             if (!over) {
                 best_block = b, best_ids = ids;
                 break;
             }
+            const bool last_attempt = attempt > desc.max_restarts || window + 1 >= n;
+            b.next_window = last_attempt ? 0 : std::min(window + 2, n - 1);  // a larger window (§3.1)
             if (on_block) on_block(b, false);
-            if (attempt > desc.max_restarts || window + 1 >= n) {
+            if (last_attempt) {
                 best_block.over_threshold = true;
                 best_block.attempts = attempt;
                 break;
             }
-            window = std::min(window + 2, n - 1);  // restart with a larger window (§3.1)
+            window = b.next_window;
         }
+        // The next block goes on with the window that passed; where no attempt passed, with
+        // this block's first window: a window that only grew while every attempt failed would
+        // climb block by block to the training's size, where the N-gram copies the training in
+        // a loop (a run of 100,000 strokes reached 40 of 41).
+        window = best_block.over_threshold ? first_window : best_block.window;
         history.insert(history.end(), best_ids.begin(), best_ids.end());
         out.ids.insert(out.ids.end(), best_ids.begin(), best_ids.end());
         out.blocks.push_back(best_block);

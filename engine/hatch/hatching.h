@@ -58,6 +58,8 @@ struct HatchBlock {
     double kl2 = 0.0;
     int attempts = 1;
     bool over_threshold = false;  // kept although above the threshold (every attempt was)
+    double threshold = 0.0;   // the KL2 threshold for a block of this size (0: none)
+    int next_window = 0;      // a rejected attempt: the window of the next one
 };
 
 struct HatchSequence {

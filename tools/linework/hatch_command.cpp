@@ -53,13 +53,19 @@ int run_hatch(const HatchOptions& o) {
     desc.plausible = o.plausible;
     Rng rng(o.seed);
     size_t restarts = 0, over = 0;
+    int last_window = o.window;
     auto report = [&](const HatchBlock& b, bool kept) {
         if (!kept) {
             ++restarts;
-            std::fprintf(stderr, "hatch: block %d (window %d) KL2 %.3f over the threshold: generated again with window %d\n",
-                         b.index, b.window, b.kl2, b.window + 2);
+            if (b.next_window > 0)
+                std::fprintf(stderr, "hatch: block %d (window %d) KL2 %.3f over the threshold %.3g: generated again with window %d\n",
+                             b.index, b.window, b.kl2, b.threshold, b.next_window);
+            else
+                std::fprintf(stderr, "hatch: block %d (window %d) KL2 %.3f over the threshold %.3g: the best attempt is kept\n",
+                             b.index, b.window, b.kl2, b.threshold);
             return;
         }
+        last_window = b.window;
         if (b.over_threshold) ++over;
         if (o.kl2)
             std::printf("block %d strokes %zu-%zu KL2 %.4f\n", b.index, b.first, b.last, b.kl2);
@@ -79,10 +85,12 @@ int run_hatch(const HatchOptions& o) {
                       : " along " + std::to_string(paths.size()) + " path(s), one sequence each, " +
                             std::to_string(out.strokes.size()) + " placed (" +
                             std::to_string(h.generated - out.strokes.size()) + " ran past a path's end),";
-    std::fprintf(info, "generated %zu strokes%s with window %d in blocks of %s%d (%.1f ms); %zu block(s) generated again, "
+    const std::string windows =
+        last_window == o.window ? std::to_string(o.window) : std::to_string(o.window) + " (" + std::to_string(last_window) + " at the end)";
+    std::fprintf(info, "generated %zu strokes%s with window %s in blocks of %s%d (%.1f ms); %zu block(s) generated again, "
                  "%zu kept above the KL2 threshold %.3g\n",
-                 h.generated, along.c_str(), o.window, paths.empty() ? "" : "up to ", o.block, generation_ms, restarts, over,
-                 threshold);
+                 h.generated, along.c_str(), windows.c_str(), paths.empty() ? "" : "up to ", o.block, generation_ms, restarts,
+                 over, threshold);
     save_strokes(o.output, out);
     std::fprintf(info, "wrote %s (%.1f ms in all)\n", o.output.c_str(), total.elapsed_ms());
     return 0;
