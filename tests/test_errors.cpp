@@ -92,6 +92,7 @@ void write_fixtures(const fs::path& tmp) {
     write(tmp / "twice.json", R"({"model": [")" + spot + R"(", ")" + spot + R"("]})");
     const std::string fox = (data / "models/Fox/Fox.glb").string(), man = (data / "models/CesiumMan/CesiumMan.glb").string();
     write(tmp / "oneclip.json", R"({"model": [")" + fox + R"(", ")" + man + R"("], "animation": {"clip": "Walk"}})");
+    fs::copy_file(test::source_dir() / "scenes/patterns/hatch_training.svg", tmp / "training.svg");
     write(tmp / "past.obj", "v 0 0 0\nv 1 0 0\nf 1 2 9\n");
     write(tmp / "nan.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n");
     write(tmp / "words.obj", "hello world\n");

@@ -58,6 +58,9 @@ void use_slam_strokes(LinesDesc& lines, const std::string& slam, float width);
 // `extension` ending in it (render's --svg, whose folder render makes: an SVG named
 // frame_0000.png replaced the frame it was named after).
 [[nodiscard]] CLI::Validator output_file_name(const std::string& extension = "");
+// A usage error when `output` names the same file as one of `inputs` (empty ones skipped):
+// `hatch tr.svg -o tr.svg` wrote over the hand-drawn training it had just read.
+void refuse_writing_over_input(const std::string& output, std::initializer_list<std::string> inputs);
 // 1 (after one line on stderr) when validation was on and reported anything, else 0.
 int exit_code_after_validation(const Context& ctx, bool validation);
 // The "bounds:" line render and view print: the model's box in scene units (what a camera

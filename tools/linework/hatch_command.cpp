@@ -28,6 +28,7 @@ struct HatchOptions {
 int run_hatch(const HatchOptions& o) {
     Timer total;
     if (!is_stroke_file_path(o.output)) throw usage_error("-o: " + o.output + ": strokes are written as .svg or .json");
+    refuse_writing_over_input(o.output, {o.training, o.along});
     StrokeSet train = load_strokes(o.training);
     const HatchTraining t = naming(o.training, [&] { return make_training(std::move(train.strokes)); });
     if (o.window >= int(t.strokes.size()))

@@ -60,6 +60,18 @@ CLI::Validator output_file(const std::string& extension) {
         "", "output file");
 }
 
+void refuse_writing_over_input(const std::string& output, std::initializer_list<std::string> inputs) {
+    for (const std::string& input : inputs) {
+        if (input.empty()) continue;
+        std::error_code error;
+        const bool same = std::filesystem::exists(output, error)
+                              ? std::filesystem::equivalent(output, input, error)
+                              : std::filesystem::weakly_canonical(output, error) == std::filesystem::weakly_canonical(input, error);
+        if (same && !error)
+            throw usage_error("-o: " + output + " is the input " + input + ", which it would be written over; name another file");
+    }
+}
+
 CLI::Validator output_file_name(const std::string& extension) {
     return CLI::Validator([extension](const std::string& text) { return file_name_problem(text, extension); }, "",
                           "output file name");

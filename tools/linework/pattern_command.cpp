@@ -42,6 +42,7 @@ PatternFrame load_frame(const std::string& file, bool along_path) {
 
 int run_pattern(const PatternOptions& o) {
     if (!is_stroke_file_path(o.output)) throw usage_error("-o: " + o.output + ": strokes are written as .svg or .json");
+    refuse_writing_over_input(o.output, {o.reference, o.path, o.region, o.ref_path, o.ref_region});
     const bool along_path = !o.path.empty();
     if (along_path == !o.region.empty()) throw usage_error("give exactly one of --path and --region");
     if (!o.ref_path.empty() && !along_path) throw usage_error("--ref-path goes with --path (use --ref-region with --region)");

@@ -60,6 +60,7 @@ ImageRGBA8 composite(const ImageRGBA8& image, bool transparent) {
 
 int run_ribbon(const RibbonOptions& o) {
     // Flags first (exit code 2), then files (exit code 1 naming the file).
+    refuse_writing_over_input(o.output, {o.exemplar, o.avoid});
     std::optional<glm::ivec2> size;
     if (!o.size.empty()) size = parse_size(o.size, "--size");
     const DeviceChoice device = parse_device_choice(o.device);
