@@ -60,6 +60,13 @@ TEST(SceneFile, ColoursMayBeStrings) {
     EXPECT_EQ(silhouette, glm::vec3(0.0f, 0.0f, 1.0f));
     EXPECT_NE(error_of(R"({"model": "a.glb", "background": 3})").find("background: expected [r, g, b] in [0, 1] or a colour string"),
               std::string::npos);
+    // HTML's sixteen names, as SVG files use them (navy and teal were refused).
+    EXPECT_EQ(parse_scene_json(R"({"model": "a.glb", "background": "navy"})", "x.json").style.background,
+              glm::vec3(0.0f, 0.0f, 128.0f / 255.0f));
+    EXPECT_EQ(parse_scene_json(R"({"model": "a.glb", "background": "Teal"})", "x.json").style.background,
+              glm::vec3(0.0f, 128.0f / 255.0f, 128.0f / 255.0f));
+    EXPECT_NE(error_of(R"({"model": "a.glb", "background": "navyblue"})").find("or a colour name (aqua, black, "),
+              std::string::npos);
 }
 
 // "description" says what the image is for: kept as written, written back (a saved view keeps

@@ -12,10 +12,40 @@
 
 namespace lw {
 
+namespace {
+
+// HTML 4's sixteen colour names (also SVG's and CSS's, with the same values), and a few more
+// that drawings use; SVG files name colours so.
+const std::map<std::string, glm::vec3>& color_names() {
+    constexpr float h = 128 / 255.f;
+    static const std::map<std::string, glm::vec3> names = {
+        {"black", {0, 0, 0}},      {"silver", {192 / 255.f, 192 / 255.f, 192 / 255.f}},
+        {"gray", {h, h, h}},       {"grey", {h, h, h}},
+        {"white", {1, 1, 1}},      {"maroon", {h, 0, 0}},
+        {"red", {1, 0, 0}},        {"purple", {h, 0, h}},
+        {"fuchsia", {1, 0, 1}},    {"magenta", {1, 0, 1}},
+        {"green", {0, h, 0}},      {"lime", {0, 1, 0}},
+        {"olive", {h, h, 0}},      {"yellow", {1, 1, 0}},
+        {"navy", {0, 0, h}},       {"blue", {0, 0, 1}},
+        {"teal", {0, h, h}},       {"aqua", {0, 1, 1}},
+        {"cyan", {0, 1, 1}},       {"orange", {1, 165 / 255.f, 0}},
+        {"brown", {165 / 255.f, 42 / 255.f, 42 / 255.f}}, {"pink", {1, 192 / 255.f, 203 / 255.f}}};
+    return names;
+}
+
+std::string color_name_list() {
+    std::string list;
+    for (const auto& [name, value] : color_names()) list += (list.empty() ? "" : ", ") + name;
+    return list;
+}
+
+}  // namespace
+
 glm::vec3 parse_color(const std::string& text, const std::string& where) {
     const std::string t = lower(trim(text));
     auto fail = [&]() -> glm::vec3 {
-        throw Error(where + ": colour \"" + text + "\" is not #rgb, #rrggbb, rgb(r, g, b) or a basic name");
+        throw Error(where + ": colour \"" + text + "\" is not #rgb, #rrggbb, rgb(r, g, b) or a colour name (" +
+                    color_name_list() + ")");
     };
     auto hex = [&](char c) -> int {
         if (c >= '0' && c <= '9') return c - '0';
@@ -45,14 +75,8 @@ glm::vec3 parse_color(const std::string& text, const std::string& where) {
         if (v.size() != 3) return fail();
         return {v[0], v[1], v[2]};
     }
-    static const std::map<std::string, glm::vec3> names = {
-        {"black", {0, 0, 0}},         {"white", {1, 1, 1}},          {"red", {1, 0, 0}},
-        {"green", {0, 128 / 255.f, 0}}, {"blue", {0, 0, 1}},          {"yellow", {1, 1, 0}},
-        {"cyan", {0, 1, 1}},          {"magenta", {1, 0, 1}},        {"gray", {128 / 255.f, 128 / 255.f, 128 / 255.f}},
-        {"grey", {128 / 255.f, 128 / 255.f, 128 / 255.f}}, {"orange", {1, 165 / 255.f, 0}},
-        {"brown", {165 / 255.f, 42 / 255.f, 42 / 255.f}}, {"purple", {128 / 255.f, 0, 128 / 255.f}}};
-    const auto it = names.find(t);
-    if (it == names.end()) return fail();
+    const auto it = color_names().find(t);
+    if (it == color_names().end()) return fail();
     return it->second;
 }
 

@@ -9,8 +9,8 @@
 
 namespace lw {
 
-// "#rgb", "#rrggbb", "rgb(r, g, b)" (0–255 or percentages) or a basic name (black, white,
-// red, green, blue, yellow, cyan, magenta, gray/grey, orange, brown, purple), as the
+// "#rgb", "#rrggbb", "rgb(r, g, b)" (0–255 or percentages) or a colour name (HTML's sixteen,
+// as SVG and CSS define them, with orange, brown, pink, cyan, magenta and grey), as the
 // components of [r, g, b] in [0, 1] (the same values a scene's arrays give). Throws
 // lw::Error "`where`: colour "…" …".
 [[nodiscard]] glm::vec3 parse_color(const std::string& text, const std::string& where);

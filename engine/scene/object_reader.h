@@ -103,7 +103,7 @@ public:
     }
 
     // A colour: [r, g, b] in [0, 1] or a string as stroke files and SVG write it ("#rrggbb",
-    // "#rgb", "rgb(…)", a basic name; core/color.h).
+    // "#rgb", "rgb(…)", a colour name; core/color.h).
     glm::vec3 color(const std::string& key) {
         const json& v = at(key);
         if (v.is_string()) return parse_color(v.get<std::string>(), file_.string() + ": " + path(key));

@@ -20,7 +20,7 @@ void add_scene_options(CLI::App* cmd, SceneOptions& o, bool offline) {
     cmd->add_option("--size", o.size, offline ? "Image size WxH (default: the scene's, else 960x720)"
                                               : "Window size WxH (default: the scene's, else 960x720)");
     cmd->add_option("--background", o.background,
-                    "Background: a colour (#rrggbb, #rgb, rgb(r, g, b), a basic name) or \"transparent\": alpha 0 "
+                    "Background: a colour (#rrggbb, #rgb, rgb(r, g, b), a colour name) or \"transparent\": alpha 0 "
                     "where nothing is drawn, PNGs with straight alpha and EXRs premultiplied, to composite the "
                     "lines over a plate (default: the scene's \"background\", else white)");
     cmd->add_option("--samples", o.samples,
