@@ -133,6 +133,14 @@ TEST(HatchCli, AlongPathsHelpAndErrors) {
     EXPECT_EQ(run_linework("hatch " + quote(pattern("hatch_training.svg")) + " -o x.svg").exit_code, 2);  // no --count
     r = run_linework("hatch " + quote(pattern("hatch_training.svg")) + " -o x.svg --count 5 --window 60");
     EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_NE(r.output.find("--window: 60 must be smaller than the training size (41 strokes"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("give --window 40 or less"), std::string::npos) << r.output;
+    // The default window, which the user did not give, is named as such.
+    std::ofstream(dir / "four.json") << R"({"strokes": [{"points": [[0, 0], [1, 1]]}, {"points": [[2, 0], [3, 1]]},
+        {"points": [[4, 0], [5, 1]]}, {"points": [[6, 0], [7, 1]]}]})";
+    r = run_linework("hatch " + quote(dir / "four.json") + " -o x.svg --count 5");
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_NE(r.output.find("--window: 6 (the default) must be smaller"), std::string::npos) << r.output;
     std::ofstream(dir / "two.json") << R"({"strokes": [{"points": [[0, 0], [1, 1]]}, {"points": [[2, 0], [3, 1]]}]})";
     r = run_linework("hatch " + quote(dir / "two.json") + " -o x.svg --count 5");
     EXPECT_EQ(r.exit_code, 1);

@@ -23,6 +23,7 @@ struct HatchOptions {
     float plausible = 0.5f;
     uint64_t seed = 1;
     bool kl2 = false;
+    bool window_given = false;
 };
 
 int run_hatch(const HatchOptions& o) {
@@ -32,8 +33,9 @@ int run_hatch(const HatchOptions& o) {
     StrokeSet train = load_strokes(o.training);
     const HatchTraining t = naming(o.training, [&] { return make_training(std::move(train.strokes)); });
     if (o.window >= int(t.strokes.size()))
-        throw usage_error("--window: must be smaller than the training size (" + std::to_string(t.strokes.size()) +
-                          " strokes in " + o.training + ")");
+        throw usage_error("--window: " + std::to_string(o.window) + (o.window_given ? "" : " (the default)") +
+                          " must be smaller than the training size (" + std::to_string(t.strokes.size()) + " strokes in " +
+                          o.training + "): give --window " + std::to_string(int(t.strokes.size()) - 1) + " or less");
     // With --kl2 stdout holds the block lines only; the rest goes to stderr.
     FILE* info = o.kl2 ? stderr : stdout;
 
@@ -88,10 +90,18 @@ int run_hatch(const HatchOptions& o) {
                             std::to_string(h.generated - out.strokes.size()) + " ran past a path's end),";
     const std::string windows =
         last_window == o.window ? std::to_string(o.window) : std::to_string(o.window) + " (" + std::to_string(last_window) + " at the end)";
-    std::fprintf(info, "generated %zu strokes%s with window %s in blocks of %s%d (%.1f ms); %zu block(s) generated again, "
-                 "%zu kept above the KL2 threshold %.3g\n",
-                 h.generated, along.c_str(), windows.c_str(), paths.empty() ? "" : "up to ", o.block, generation_ms, restarts,
-                 over, threshold);
+    // The automatic threshold is 3 times the KL2 of random blocks, which a training of a few
+    // strokes can put at or below 0 (the estimator's bias): then no block is checked.
+    char checked[160];
+    if (threshold > 0.0)
+        std::snprintf(checked, sizeof checked, "%zu block(s) generated again, %zu kept above the KL2 threshold %.3g", restarts,
+                      over, threshold);
+    else
+        std::snprintf(checked, sizeof checked, "no block checked (%s)",
+                      o.threshold == 0.0 ? "--threshold 0"
+                                         : "random blocks of this training score KL2 at or below 0: too few strokes to judge");
+    std::fprintf(info, "generated %zu strokes%s with window %s in blocks of %s%d (%.1f ms); %s\n", h.generated, along.c_str(),
+                 windows.c_str(), paths.empty() ? "" : "up to ", o.block, generation_ms, checked);
     save_strokes(o.output, out);
     std::fprintf(info, "wrote %s (%.1f ms in all)\n", o.output.c_str(), total.elapsed_ms());
     return 0;
@@ -118,7 +128,7 @@ Runner add_hatch_command(CLI::App& app) {
     cmd->add_option("--count", o->count, "Strokes to generate (with --along: at most this many per path)")
         ->required()
         ->check(CLI::Range(1, 1000000));
-    cmd->add_option("--window", o->window,
+    CLI::Option* window = cmd->add_option("--window", o->window,
                     "N, the N-gram window: each stroke follows the last N − 1 (larger follows the training\n"
                     "more closely; a window too small for the training may loop, and KL2 shows it)")
         ->check(CLI::Range(1, 1000))
@@ -139,7 +149,10 @@ Runner add_hatch_command(CLI::App& app) {
     cmd->add_option("--seed", o->seed, "Seed of the random picks")->check(seed())->capture_default_str();
     cmd->add_flag("--kl2", o->kl2,
                   "Print one line per block on stdout: `block B strokes A-B KL2 V` (the rest goes to stderr)");
-    return [o] { return run_hatch(*o); };
+    return [o, window] {
+        o->window_given = window->count() > 0;
+        return run_hatch(*o);
+    };
 }
 
 }  // namespace lw::cli
