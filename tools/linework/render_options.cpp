@@ -22,7 +22,7 @@ void add_frame_options(CLI::App* cmd, RenderOptions& o) {
                   "Ignore the models' glTF materials: every face in the scene colour, opaque (scene key \"materials\": false)");
     cmd->add_option("--svg", o.svg, "Also write the lines as SVG, drawn as the PNG draws them (filled shapes per line set, hidden lines "
                     "in NAME-hidden, centre lines in a hidden NAME-centerlines group; under --frames FILE_NNNN.svg; its "
-                    "folder is made if missing)")
+                    "folder is made if missing). Vector layers are not written to it")
         ->check(output_file_name(".svg"));
     cmd->add_option("--hidden", o.hidden,
                     "Hidden lines: none (default), dashed or faint (a scene with \"line_sets\" draws them in a set "
@@ -105,6 +105,10 @@ void apply_frame_overrides(const RenderOptions& o, SceneDesc& desc) {
         desc.lines.hidden_levels = uint32_t(*o.hidden_levels);
     }
     if (!o.svg.empty() && o.no_lines) throw usage_error("--svg needs lines (drop --no-lines)");
+    // The SVG holds the 3D lines; layers are not in it (README "Scene files").
+    if (!o.svg.empty() && desc.models.empty())
+        throw usage_error("--svg writes a model's lines, and " + o.scene.input +
+                          " has layers only (layers are not written as SVG; their stroke files are SVG already)");
     if (o.orbit) desc.camera_path = CameraPath{.kind = CameraPath::Kind::Orbit, .orbit = {.degrees = *o.orbit}};
 }
 
