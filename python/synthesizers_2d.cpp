@@ -225,8 +225,9 @@ pyb::object hatch(const pyb::object& training, int count, int window, int block,
     std::vector<Stroke> training_strokes = strokes_argument(training, "training", &training_where);
     const HatchTraining t = naming_input(training_where, [&] { return make_training(std::move(training_strokes)); });
     if (window >= int(t.strokes.size()))
-        throw pyb::value_error("window: must be smaller than the training size (" + std::to_string(t.strokes.size()) +
-                               " strokes in " + training_where + ")");
+        throw pyb::value_error("window: " + std::to_string(window) + " must be smaller than the training size (" +
+                               std::to_string(t.strokes.size()) + " strokes in " + training_where + "): give window=" +
+                               std::to_string(int(t.strokes.size()) - 1) + " or less");
     std::vector<ArclengthCurve> paths;
     if (!along.is_none()) {
         std::string along_where;
