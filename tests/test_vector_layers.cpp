@@ -197,6 +197,20 @@ TEST(VectorLayerCli, StipplesAreDotsAndEndsAreRound) {
             for (int u = x - 6; u <= x + 6; ++u) n += tapered.pixels[4 * (size_t(v) * tapered.width + size_t(u))] < 128;
         EXPECT_EQ(n, ink_near(x, y)) << "dot at " << x << ", " << y;
     }
+    // Under a SLAM the dots are drawn solid, as without it: too short for the texture, they
+    // were dropped as the tracker drops an extraction's fragments (spot_layers' flower centres).
+    std::ofstream(dir / "slam.json") << R"({"size": [100, 100], "background": [1, 1, 1], "layers": [{"strokes": "dots.json",
+        "color": [0, 0, 0], "slam": ")" + (test::source_dir() / "scenes/slams/dots.exr").string() + R"("}]})";
+    const auto sl = test::run_linework("render " + test::quote(dir / "slam.json") + " -o " + test::quote(dir / "s") +
+                                       " --device cpu --validation");
+    ASSERT_EQ(sl.exit_code, 0) << sl.output;
+    const ImageRGBA8 slam = read_image_rgba8(dir / "s/frame_0000.png");
+    for (const auto& [x, y] : {std::pair{20, 20}, std::pair{50, 50}})
+        for (int v = y - 6; v <= y + 6; ++v)
+            for (int u = x - 6; u <= x + 6; ++u) {
+                const size_t i = 4 * (size_t(v) * slam.width + size_t(u));
+                ASSERT_EQ(slam.pixels[i], image.pixels[i]) << "dot at " << x << ", " << y << ": pixel " << u << ", " << v;
+            }
 }
 
 }  // namespace

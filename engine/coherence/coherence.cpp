@@ -499,13 +499,15 @@ bool same_camera(const CameraMatrices& a, const CameraMatrices& b) {
 
 }  // namespace
 
+bool too_short_for_texture(const ScreenPath& path, const CoherenceParams& params) {
+    return path.visible && path_length(path) < params.min_stroke_length_px;
+}
+
 std::vector<PathParam> CoherenceTracker::update(std::vector<ScreenPath>& paths, const CameraMatrices& camera,
                                                 const SurfaceFrame& surface, const CoherenceParams& params,
                                                 GpuTimer* timer) {
     // Fragments too short to carry a stroke texture are not drawn, splatted or dumped.
-    std::erase_if(paths, [&](const ScreenPath& path) {
-        return path.visible && path_length(path) < params.min_stroke_length_px;
-    });
+    std::erase_if(paths, [&](const ScreenPath& path) { return too_short_for_texture(path, params); });
     std::vector<PathParam> out;
     if (params.policy != ParamPolicy::Coherent) {
         view_rho_ = 0.0f;  // back to the coherent policy, the scale starts afresh with the splat's T

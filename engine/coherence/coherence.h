@@ -69,6 +69,10 @@ struct ParameterizedPaths {
     std::vector<PathParam> params;  // per path
 };
 
+// A visible path shorter than params.min_stroke_length_px: a fragment the tracker drops (it
+// shows only a sliver of the texture; a vector layer draws such strokes solid instead).
+[[nodiscard]] bool too_short_for_texture(const ScreenPath& path, const CoherenceParams& params);
+
 // Arclength of a sample along its path (the path's own origin).
 inline float path_arclength(const ScreenPath& path, size_t sample) { return path.samples[sample].s - path.samples.front().s; }
 

@@ -1,5 +1,7 @@
 #include "render/layer_pass.h"
 
+#include <algorithm>
+
 #include "core/error.h"
 #include "stroke/modifiers.h"
 
@@ -45,11 +47,22 @@ std::vector<LayerResult> LayerPass::prepare(std::vector<LayerFrame>& frames, boo
         LayerResult& result = results[i];
         layer.fill.clear();
         layer.strokes.clear();
+        layer.plain.clear();
         for (const glm::vec2& p : frame.fill)
             layer.fill.push_back({p, glm::vec3(0.0f, 0.5f, 1.0f), glm::vec4(layer.style.fill_color, 1.0f), kInteriorEdge});
         if (layer.tracker) {
             CoherenceParams params = layer.style.coherence;
             if (!coherent) params.policy = ParamPolicy::Arclength;
+            // The artist's dots and short dashes are not fragments of an extraction: they
+            // are drawn solid rather than dropped with them.
+            const auto short_end = std::stable_partition(frame.paths.begin(), frame.paths.end(), [&](const ScreenPath& path) {
+                return too_short_for_texture(path, params);
+            });
+            for (auto path = frame.paths.begin(); path != short_end && layer.style.strokes; ++path) {
+                const LineSetStyle style = layer_stroke_style(layer.style, frame.colors[path->source]);
+                append_stroke(*path, StrokeParams{}, evaluate_attributes(*path, style), style.cap, style.join, layer.plain);
+            }
+            frame.paths.erase(frame.paths.begin(), short_end);
             result.params = layer.tracker->update(frame.paths, frame.camera, {}, params);
             for (size_t p = 0; p < frame.paths.size(); ++p)
                 frame.paths[p] = resample_at_phase(frame.paths[p], result.params[p], spacing);
@@ -87,6 +100,7 @@ void LayerPass::record(const Context& ctx, VkCommandBuffer cmd, const RenderTarg
                        UploadArena& arena) const {
     for (const Layer& layer : layers_) {
         if (!layer.fill.empty()) strokes.record(ctx, cmd, target, layer.fill, *solid_, arena);
+        if (!layer.plain.empty()) strokes.record(ctx, cmd, target, layer.plain, *solid_, arena);
         if (!layer.strokes.empty())
             strokes.record(ctx, cmd, target, layer.strokes, layer.texture ? *layer.texture : *solid_, arena);
     }

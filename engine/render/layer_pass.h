@@ -62,7 +62,9 @@ private:
         LayerStyle style;
         std::unique_ptr<SlamTexture> texture;       // null: the solid texture
         std::unique_ptr<CoherenceTracker> tracker;  // SLAM layers only
-        std::vector<StrokeVertex> fill, strokes;    // this frame's triangles
+        // This frame's triangles; a SLAM layer's strokes too short for its texture are drawn
+        // solid (`plain`), as the same layer without "slam" draws them: dots, short dashes.
+        std::vector<StrokeVertex> fill, strokes, plain;
     };
     std::vector<Layer> layers_;
     std::unique_ptr<SlamTexture> solid_;  // full ink everywhere: fills and plain strokes
