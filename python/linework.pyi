@@ -189,5 +189,5 @@ def hatch(training: StrokesIn, *, count: int, window: int = 6, block: int = 50, 
           plausible: float = 0.5, along: Optional[StrokesIn] = None, seed: int = 1,
           return_info: Literal[True]) -> Tuple[list[Stroke], dict[str, Any]]:
     """(strokes, info): info holds blocks (index, first, last, window, kl2, attempts,
-    over_threshold, as --kl2 prints them), restarts, over_threshold, threshold, training_strokes,
-    dimensions."""
+    over_threshold, as --kl2 prints them, and the block's own threshold), restarts,
+    over_threshold, threshold (the full blocks'), training_strokes, dimensions."""

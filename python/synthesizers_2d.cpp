@@ -264,7 +264,8 @@ pyb::object hatch(const pyb::object& training, int count, int window, int block,
     for (const HatchBlock& b : kept) {
         over += b.over_threshold ? 1 : 0;
         blocks.append(pyb::dict("index"_a = b.index, "first"_a = b.first, "last"_a = b.last, "window"_a = b.window,
-                                "kl2"_a = b.kl2, "attempts"_a = b.attempts, "over_threshold"_a = b.over_threshold));
+                                "kl2"_a = b.kl2, "attempts"_a = b.attempts, "over_threshold"_a = b.over_threshold,
+                                "threshold"_a = b.threshold));
     }
     const pyb::dict info("blocks"_a = blocks, "restarts"_a = restarts, "over_threshold"_a = over,
                          "threshold"_a = used_threshold, "training_strokes"_a = t.strokes.size(),
@@ -329,8 +330,9 @@ seed: seed of the random picks.
 
 Returns the generated strokes as stroke dicts (see linework.pattern) — the strokes
 `linework hatch` writes; with return_info, (strokes, info), info holding blocks (one dict per
-kept block: index, first, last, window, kl2, attempts, over_threshold, as --kl2 prints),
-restarts (blocks made again), over_threshold, threshold (the one used), training_strokes and
+kept block: index, first, last, window, kl2, attempts, over_threshold, as --kl2 prints, and
+threshold, the block's own: a shorter last block has one of its size), restarts (blocks made
+again), over_threshold, threshold (the full blocks'), training_strokes and
 dimensions (varying vector dimensions).)");
 }
 

@@ -85,6 +85,23 @@ TEST_F(SessionArrays, InMemoryModelsGiveTheFilesLines) {
     }
 }
 
+// The scene's "coherence.length_scale" is κ for the sets without their own, in the sets the
+// session draws; the description keeps the key as written (a saved view writes it back).
+TEST_F(SessionArrays, TheScenesKappaFillsInForSetsWithoutTheirOwn) {
+    const SceneDesc desc = parse_scene_json(R"({"model": ")" + kSpot.string() + R"(", "coherence": {"length_scale": 3},
+        "line_sets": [{"name": "own", "coherence": {"length_scale": 5}}, {"name": "base"}]})", "x.json");
+    SceneSession session(ctx(), desc, default_session_options(desc));
+    ASSERT_EQ(session.line_sets().size(), 2u);
+    EXPECT_FLOAT_EQ(session.line_sets()[0].coherence.length_scale, 5.0f);
+    EXPECT_FLOAT_EQ(session.line_sets()[1].coherence.length_scale, 3.0f);
+    EXPECT_FLOAT_EQ(session.desc().lines.sets[1].coherence.length_scale, 0.0f);
+    SessionOptions flag = default_session_options(desc);
+    flag.length_scale = 2.0f;  // --length-scale overrides every set's
+    SceneSession overridden(ctx(), desc, flag);
+    EXPECT_FLOAT_EQ(overridden.line_sets()[0].coherence.length_scale, 2.0f);
+    EXPECT_FLOAT_EQ(overridden.line_sets()[1].coherence.length_scale, 2.0f);
+}
+
 TEST_F(SessionArrays, SetLinesAppliesAndABadFileChangesNothing) {
     SceneDesc desc = scene_for_model(kSpot);
     desc.width = 160;

@@ -154,18 +154,19 @@ void check_line_set_groups(const std::vector<LineSetDesc>& sets, const LoadedSce
 
 void SceneSession::load_line_styles() {
     if (has_model()) check_line_set_groups(desc_.lines.sets, scene_, desc_.source.empty() ? "scene" : desc_.source.string());
-    // κ: --length-scale for every set; else the scene's "coherence.length_scale" for the sets
-    // (and the shorthand's) that give none of their own.
+    // κ: --length-scale for every set.
     if (options_.length_scale > 0.0f) {
         desc_.lines.length_scale = options_.length_scale;
         for (LineSetDesc& set : desc_.lines.sets) set.coherence.length_scale = options_.length_scale;
-    } else if (const std::optional<float>& kappa = desc_.coherence.length_scale) {
-        if (!(desc_.lines.length_scale > 0.0f)) desc_.lines.length_scale = *kappa;
-        for (LineSetDesc& set : desc_.lines.sets)
-            if (!(set.coherence.length_scale > 0.0f)) set.coherence.length_scale = *kappa;
     }
     const std::vector<LineSetDesc> previous = std::move(sets_);  // what slams_ and ribbons_ were read for
     sets_ = effective_line_sets(desc_.lines);
+    // Else the scene's "coherence.length_scale" for the sets (and the shorthand's) that give
+    // none of their own: filled in the sets drawn, not in the description, which a saved view
+    // writes back with the key as it was.
+    if (const std::optional<float>& kappa = desc_.coherence.length_scale; kappa && !(options_.length_scale > 0.0f))
+        for (LineSetDesc& set : sets_)
+            if (!(set.coherence.length_scale > 0.0f)) set.coherence.length_scale = *kappa;
     // Every file a style names, read before any rendering so that a bad one fails first; a
     // SLAM or ribbon exemplar shared by several sets (or kept from before) is read once.
     std::vector<std::optional<Slam>> slams;

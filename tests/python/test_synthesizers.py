@@ -452,6 +452,9 @@ def test_hatch_equals_the_command_lines_strokes(tmp_path):
     printed = [line for line in out.splitlines() if line.startswith("block ")]
     assert printed == [f"block {b['index']} strokes {b['first']}-{b['last']} KL2 {b['kl2']:.4f}"
                        for b in info["blocks"]]
+    # 50 + 50 + 20: the last block is held to a threshold of its own size.
+    assert info["blocks"][0]["threshold"] == info["threshold"]
+    assert info["blocks"][2]["threshold"] > info["threshold"]
 
 
 def hatch_training(seed):

@@ -226,8 +226,8 @@ int run_logged(const std::vector<std::string>& command, const std::filesystem::p
 // `farm task DIR PHASE I`: runs task I of the phase in the plan's working folder, so that a
 // scheduler that hands out numbered tasks (OpenCue's frames of a layer, Deadline's frames of a
 // job) needs no script of ours. As the Slurm script does, it appends the task's output to
-// logs/PHASE_I.log and records its exit status in logs/ID.rc for `farm status`; the exit
-// code is the task's.
+// logs/PHASE_NNNN.log and records its exit status in logs/PHASE_NNNN.rc for `farm status`;
+// the exit code is the task's.
 int run_task(const FarmOptions& o) {
     const FarmPlan plan = read_plan(o.task_dir);
     const auto phase = std::find_if(plan.phases.begin(), plan.phases.end(),

@@ -68,7 +68,8 @@ int run_hatch(const HatchOptions& o) {
                              b.index, b.window, b.kl2, b.threshold);
             return;
         }
-        last_window = b.window;
+        // A block kept above the threshold does not keep its window (generate_hatching).
+        if (!b.over_threshold) last_window = b.window;
         if (b.over_threshold) ++over;
         if (o.kl2)
             std::printf("block %d strokes %zu-%zu KL2 %.4f\n", b.index, b.first, b.last, b.kl2);

@@ -56,23 +56,23 @@ void add_scene_options(CLI::App* cmd, SceneOptions& o, bool offline) {
     cmd->add_option("--splat-radius", o.splat_radius,
                     "δ of the parameterization sprites, pixels (default: twice the sample spacing); larger keeps "
                     "fast lines coherent, smaller keeps nearby lines apart (§4.1; scene key coherence.splat_radius)")
-        ->check(positive("pixels"));
+        ->check(within(0.1, 1024.0, "pixels"));
     cmd->add_flag("--validation", o.validation,
                   "Enable the Khronos validation layer; any warning or error fails the run (also LINEWORK_VALIDATION=1)");
     if (!offline) return;
     cmd->add_option("--length-scale", o.length_scale,
                     "κ: SLAM periods per native texture length (default: square texels, the SLAM's height over "
                     "the stroke width; scene key coherence.length_scale)")
-        ->check(positive());
+        ->check(within(1e-3, 1e4));
     cmd->add_option("--inlier-px", o.inlier_px,
                     "RANSAC inlier distance along the path, pixels (§4.2; default " +
                         number_text(RansacParams{}.inlier_px) + "; scene key coherence.inlier_distance)")
-        ->check(positive("pixels"));
+        ->check(within(0.01, 1024.0, "pixels"));
     cmd->add_option("--min-stroke-length", o.min_stroke_length,
                     "Visible paths shorter than this many pixels are not drawn as strokes, splatted or dumped "
                     "(0 keeps every fragment; default " + number_text(CoherenceParams{}.min_stroke_length_px) +
                         "; scene key coherence.min_stroke_length)")
-        ->check(non_negative("pixels"));
+        ->check(within(0.0, 1e5, "pixels"));
 }
 
 namespace {
@@ -159,9 +159,9 @@ SessionOptions session_options(const SceneOptions& o, const SceneDesc& desc) {
     if (o.inlier_px) c.ransac.inlier_px = *o.inlier_px;
     if (o.min_stroke_length) c.min_stroke_length_px = *o.min_stroke_length;
     if (o.length_scale > 0.0f) session.length_scale = o.length_scale;
-    // A policy the user chose, on the command line or in the scene: every set is fitted
-    // (and dumped), as SessionOptions::coherent says.
-    session.coherent = !o.param.empty() || desc.coherence.policy.has_value();
+    // A policy given on the command line: every set is fitted (and dumped), as
+    // SessionOptions::coherent says. The scene's key only sets the policy, as in Python.
+    session.coherent = !o.param.empty();
     return session;
 }
 
