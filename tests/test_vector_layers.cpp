@@ -213,5 +213,30 @@ TEST(VectorLayerCli, StipplesAreDotsAndEndsAreRound) {
             }
 }
 
+// A SLAM layer draws its strokes in file order, the solid short ones among the textured: a
+// dot drawn after a line lies over it, as in the same layer without a SLAM.
+TEST(VectorLayerCli, ASlamLayerDrawsItsStrokesInFileOrder) {
+    const fs::path dir = test::temp_dir();
+    std::ofstream(dir / "order.json") << R"({"size": [100, 100], "strokes": [
+        {"points": [[10, 50], [90, 50]], "width": 8, "color": [0, 0, 0]},
+        {"points": [[50, 50]], "width": 14, "color": [1, 0, 0]}]})";
+    std::ofstream(dir / "scene.json") << R"({"size": [100, 100], "background": [1, 1, 1], "layers": [{"strokes": "order.json",
+        "slam": ")" + (test::source_dir() / "scenes/slams/pencil.exr").string() + R"("}]})";
+    const auto r = test::run_linework("render " + test::quote(dir / "scene.json") + " -o " + test::quote(dir / "out") +
+                                      " --device cpu --validation");
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const ImageRGBA8 image = read_image_rgba8(dir / "out/frame_0000.png");
+    int red = 0, other = 0, line_ink = 0;
+    for (int y = 45; y <= 55; ++y)
+        for (int x = 45; x <= 55; ++x) {
+            if ((x - 50) * (x - 50) + (y - 50) * (y - 50) > 16) continue;  // within 4 px of the dot's centre
+            const uint8_t* p = &image.pixels[4 * (size_t(y) * image.width + size_t(x))];
+            (p[0] > 200 && p[1] < 60 && p[2] < 60 ? red : other)++;
+        }
+    for (int x = 15; x <= 35; ++x) line_ink += image.pixels[4 * (size_t(50) * image.width + size_t(x))] < 200;
+    EXPECT_GT(line_ink, 5) << "the pencil line inks its row";
+    EXPECT_EQ(other, 0) << red << " red pixels: the line was drawn over the dot";
+}
+
 }  // namespace
 }  // namespace lw

@@ -46,8 +46,15 @@ std::vector<LayerResult> LayerPass::prepare(std::vector<LayerFrame>& frames, boo
         LayerFrame& frame = frames[i];
         LayerResult& result = results[i];
         layer.fill.clear();
-        layer.strokes.clear();
-        layer.plain.clear();
+        layer.runs.clear();
+        // Appends a stroke to the run of its kind, starting a new run where the kind changes.
+        const auto append = [&](const ScreenPath& path, const PathParam& param, bool solid) {
+            if (layer.runs.empty() || layer.runs.back().solid != solid) layer.runs.push_back({.solid = solid});
+            const LineSetStyle style = layer_stroke_style(layer.style, frame.colors[path.source]);
+            append_stroke(path, StrokeParams{.rho = param.rho, .phi = param.phi, .fold = param.fold},
+                          evaluate_attributes(path, style), style.cap, style.join, layer.runs.back().vertices);
+        };
+        std::vector<ScreenPath> short_paths;  // in file order (by source)
         for (const glm::vec2& p : frame.fill)
             layer.fill.push_back({p, glm::vec3(0.0f, 0.5f, 1.0f), glm::vec4(layer.style.fill_color, 1.0f), kInteriorEdge});
         if (layer.tracker) {
@@ -58,10 +65,7 @@ std::vector<LayerResult> LayerPass::prepare(std::vector<LayerFrame>& frames, boo
             const auto short_end = std::stable_partition(frame.paths.begin(), frame.paths.end(), [&](const ScreenPath& path) {
                 return too_short_for_texture(path, params);
             });
-            for (auto path = frame.paths.begin(); path != short_end && layer.style.strokes; ++path) {
-                const LineSetStyle style = layer_stroke_style(layer.style, frame.colors[path->source]);
-                append_stroke(*path, StrokeParams{}, evaluate_attributes(*path, style), style.cap, style.join, layer.plain);
-            }
+            short_paths.assign(std::make_move_iterator(frame.paths.begin()), std::make_move_iterator(short_end));
             frame.paths.erase(frame.paths.begin(), short_end);
             result.params = layer.tracker->update(frame.paths, frame.camera, {}, params);
             for (size_t p = 0; p < frame.paths.size(); ++p)
@@ -69,12 +73,16 @@ std::vector<LayerResult> LayerPass::prepare(std::vector<LayerFrame>& frames, boo
         } else {
             result.params.assign(frame.paths.size(), PathParam{});
         }
+        // The textured strokes in the tracker's order, each solid one drawn before the first
+        // textured stroke that comes after it in the file.
+        size_t next_short = 0;
         for (size_t p = 0; p < frame.paths.size() && layer.style.strokes; ++p) {
-            const PathParam& param = result.params[p];
-            const LineSetStyle style = layer_stroke_style(layer.style, frame.colors[frame.paths[p].source]);
-            append_stroke(frame.paths[p], StrokeParams{.rho = param.rho, .phi = param.phi, .fold = param.fold},
-                          evaluate_attributes(frame.paths[p], style), style.cap, style.join, layer.strokes);
+            for (; next_short < short_paths.size() && short_paths[next_short].source < frame.paths[p].source; ++next_short)
+                append(short_paths[next_short], PathParam{}, true);
+            append(frame.paths[p], result.params[p], false);
         }
+        for (; next_short < short_paths.size() && layer.style.strokes; ++next_short)
+            append(short_paths[next_short], PathParam{}, true);
         result.paths = frame.paths;
     }
     return results;
@@ -100,9 +108,8 @@ void LayerPass::record(const Context& ctx, VkCommandBuffer cmd, const RenderTarg
                        UploadArena& arena) const {
     for (const Layer& layer : layers_) {
         if (!layer.fill.empty()) strokes.record(ctx, cmd, target, layer.fill, *solid_, arena);
-        if (!layer.plain.empty()) strokes.record(ctx, cmd, target, layer.plain, *solid_, arena);
-        if (!layer.strokes.empty())
-            strokes.record(ctx, cmd, target, layer.strokes, layer.texture ? *layer.texture : *solid_, arena);
+        for (const Layer::Run& run : layer.runs)
+            strokes.record(ctx, cmd, target, run.vertices, run.solid || !layer.texture ? *solid_ : *layer.texture, arena);
     }
 }
 

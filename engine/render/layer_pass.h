@@ -62,9 +62,15 @@ private:
         LayerStyle style;
         std::unique_ptr<SlamTexture> texture;       // null: the solid texture
         std::unique_ptr<CoherenceTracker> tracker;  // SLAM layers only
-        // This frame's triangles; a SLAM layer's strokes too short for its texture are drawn
-        // solid (`plain`), as the same layer without "slam" draws them: dots, short dashes.
-        std::vector<StrokeVertex> fill, strokes, plain;
+        // This frame's triangles, fill first, then the strokes in file order: runs of
+        // textured strokes and, in a SLAM layer, of strokes too short for its texture, which
+        // are drawn solid as the same layer without "slam" draws them (dots, short dashes).
+        struct Run {
+            bool solid = false;
+            std::vector<StrokeVertex> vertices;
+        };
+        std::vector<StrokeVertex> fill;
+        std::vector<Run> runs;
     };
     std::vector<Layer> layers_;
     std::unique_ptr<SlamTexture> solid_;  // full ink everywhere: fills and plain strokes
