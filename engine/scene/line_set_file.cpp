@@ -262,9 +262,10 @@ LineSetCoherence read_coherence(ObjectReader& set, const std::filesystem::path& 
     if (!set.has("coherence")) return coherence;
     ObjectReader r(set.at("coherence"), set.path("coherence"), file);
     if (r.has("policy")) {
-        coherence.policy = param_policy_named(r.string_of("policy", {"coherent", "arclength", "stretch"}));
+        coherence.policy = param_policy_named(r.string_of("policy", kParamPolicyNameSet));
     }
-    if (r.has("length_scale")) coherence.length_scale = float(r.number("length_scale", 1e-3, 1e4));
+    if (r.has("length_scale"))
+        coherence.length_scale = float(r.number("length_scale", kLengthScaleRange.min, kLengthScaleRange.max));
     if (r.has("sample_spacing")) coherence.sample_spacing_px = float(r.number("sample_spacing", 0.25, 64.0));
     r.reject_unknown();
     return coherence;

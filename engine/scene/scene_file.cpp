@@ -290,11 +290,12 @@ LayerTransform read_layer_transform(ObjectReader& r) {
 SceneCoherence read_scene_coherence(ObjectReader& scene, const std::filesystem::path& file) {
     ObjectReader r(scene.at("coherence"), "coherence", file);
     SceneCoherence c;
-    if (r.has("policy")) c.policy = param_policy_named(r.string_of("policy", {"coherent", "arclength", "stretch"}));
-    if (r.has("splat_radius")) c.splat_radius_px = float(r.number("splat_radius", 0.1, 1024.0));
-    if (r.has("inlier_distance")) c.inlier_px = float(r.number("inlier_distance", 0.01, 1024.0));
-    if (r.has("min_stroke_length")) c.min_stroke_length_px = float(r.number("min_stroke_length", 0.0, 1e5));
-    if (r.has("length_scale")) c.length_scale = float(r.number("length_scale", 1e-3, 1e4));
+    const auto in = [&](const char* key, ValueRange range) { return float(r.number(key, range.min, range.max)); };
+    if (r.has("policy")) c.policy = param_policy_named(r.string_of("policy", kParamPolicyNameSet));
+    if (r.has("splat_radius")) c.splat_radius_px = in("splat_radius", kSplatRadiusRange);
+    if (r.has("inlier_distance")) c.inlier_px = in("inlier_distance", kInlierDistanceRange);
+    if (r.has("min_stroke_length")) c.min_stroke_length_px = in("min_stroke_length", kMinStrokeLengthRange);
+    if (r.has("length_scale")) c.length_scale = in("length_scale", kLengthScaleRange);
     r.reject_unknown();
     return c;
 }

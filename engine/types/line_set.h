@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -31,10 +32,25 @@ inline const char* param_policy_name(ParamPolicy policy) {
     }
     return "?";
 }
+// The three names in the enum's order (a flag's check lists them so), and as the set a scene
+// key's reader checks against.
+inline const std::vector<std::string> kParamPolicyNames{"coherent", "arclength", "stretch"};
+inline const std::set<std::string> kParamPolicyNameSet{kParamPolicyNames.begin(), kParamPolicyNames.end()};
 // The caller has checked that `name` is one of the three.
 inline ParamPolicy param_policy_named(const std::string& name) {
     return name == "arclength" ? ParamPolicy::Arclength : name == "stretch" ? ParamPolicy::Stretch : ParamPolicy::Coherent;
 }
+
+// The values the parameterization's settings take, as scene keys ("coherence", a set's
+// "coherence") and as the flags that override them: one range for both, so that a view
+// saved with a flag's value reads back.
+struct ValueRange {
+    double min, max;
+};
+inline constexpr ValueRange kSplatRadiusRange{0.1, 1024.0};       // px
+inline constexpr ValueRange kInlierDistanceRange{0.01, 1024.0};   // px
+inline constexpr ValueRange kMinStrokeLengthRange{0.0, 1e5};      // px
+inline constexpr ValueRange kLengthScaleRange{1e-3, 1e4};         // κ
 
 enum class Visibility { Visible, Hidden, Any };
 

@@ -52,27 +52,27 @@ void add_scene_options(CLI::App* cmd, SceneOptions& o, bool offline) {
     cmd->add_option("--param", o.param,
                     "Stroke parameterization: coherent (default; Bénard et al. 2010 §4), arclength (tiling) or "
                     "stretch (one texture per path) (scene key coherence.policy)")
-        ->check(CLI::IsMember({"coherent", "arclength", "stretch"}));
+        ->check(CLI::IsMember(kParamPolicyNames));
     cmd->add_option("--splat-radius", o.splat_radius,
                     "δ of the parameterization sprites, pixels (default: twice the sample spacing); larger keeps "
                     "fast lines coherent, smaller keeps nearby lines apart (§4.1; scene key coherence.splat_radius)")
-        ->check(within(0.1, 1024.0, "pixels"));
+        ->check(within(kSplatRadiusRange.min, kSplatRadiusRange.max, "pixels"));
     cmd->add_flag("--validation", o.validation,
                   "Enable the Khronos validation layer; any warning or error fails the run (also LINEWORK_VALIDATION=1)");
     if (!offline) return;
     cmd->add_option("--length-scale", o.length_scale,
                     "κ: SLAM periods per native texture length (default: square texels, the SLAM's height over "
                     "the stroke width; scene key coherence.length_scale)")
-        ->check(within(1e-3, 1e4));
+        ->check(within(kLengthScaleRange.min, kLengthScaleRange.max));
     cmd->add_option("--inlier-px", o.inlier_px,
                     "RANSAC inlier distance along the path, pixels (§4.2; default " +
                         number_text(RansacParams{}.inlier_px) + "; scene key coherence.inlier_distance)")
-        ->check(within(0.01, 1024.0, "pixels"));
+        ->check(within(kInlierDistanceRange.min, kInlierDistanceRange.max, "pixels"));
     cmd->add_option("--min-stroke-length", o.min_stroke_length,
                     "Visible paths shorter than this many pixels are not drawn as strokes, splatted or dumped "
                     "(0 keeps every fragment; default " + number_text(CoherenceParams{}.min_stroke_length_px) +
                         "; scene key coherence.min_stroke_length)")
-        ->check(within(0.0, 1e5, "pixels"));
+        ->check(within(kMinStrokeLengthRange.min, kMinStrokeLengthRange.max, "pixels"));
 }
 
 namespace {
