@@ -224,6 +224,7 @@ TEST(Farm, BadRequestsAreOneClearError) {
     EXPECT_EQ(other.exit_code, 1);
     EXPECT_NE(other.output.find("state_0005.lwstate: saved by a render with other options"), std::string::npos)
         << other.output;
+    EXPECT_NE(other.output.find("(--hidden dashed is given now, not then;"), std::string::npos) << other.output;
     const auto wrong = test::run_linework("render " + kShot + " --frames 0:9 --part 6:9 -o " + test::quote(dir / "o") +
                                           " --start-state " + state);
     EXPECT_EQ(wrong.exit_code, 1);

@@ -89,6 +89,42 @@ TEST(Resume, InterruptedAndResumedSequenceEqualsAnUnbrokenOne) {
     EXPECT_EQ(other.exit_code, 1) << other.output;
     EXPECT_NE(other.output.find(".linework-state: written by a render with other options"), std::string::npos)
         << other.output;
+    EXPECT_NE(other.output.find("--orbit was 90 then, 45 now"), std::string::npos) << other.output;
+}
+
+// The options name the scene file, not what is in it: a scene edited between the interrupted
+// render and its resume (or between a farm's state phase and its chunks) is refused, naming
+// the file, instead of drawing on from frames of the scene as it was. The SLAM a key names
+// counts as well.
+TEST(Resume, AnEditedSceneOrSlamIsNotResumed) {
+    const fs::path dir = test::temp_dir();
+    fs::copy_file(test::source_dir() / "scenes/slams/dots.exr", dir / "dots.exr");
+    const auto write_scene = [&](const std::string& eye) {
+        std::ofstream(dir / "shot.json") << R"({"model": ")" << (test::data_dir() / "models/spot/spot.glb").string()
+                                         << R"(", "size": [96, 72], "camera": {"eye": )" << eye
+                                         << R"(, "target": [0, 0, 0], "orbit": 90},
+            "lines": {"silhouette": {"slam": "dots.exr"}}, "animation": {"frames": [0, 3]}})";
+    };
+    write_scene("[2.6, 0.9, -2.4]");
+    const std::string render = "render " + test::quote(dir / "shot.json") + " --device cpu -o " + test::quote(dir / "o");
+    ASSERT_EQ(test::run_linework(render).exit_code, 0);
+    // Unchanged, every frame is there already (the state says whose they are).
+    const auto same = test::run_linework(render + " --resume");
+    ASSERT_EQ(same.exit_code, 0) << same.output;
+    EXPECT_NE(same.output.find("all frames 0 to 3 are already in"), std::string::npos) << same.output;
+
+    write_scene("[2.7, 0.9, -2.4]");
+    const auto edited = test::run_linework(render + " --resume");
+    EXPECT_EQ(edited.exit_code, 1) << edited.output;
+    EXPECT_NE(edited.output.find(".linework-state: written by a render with other options or inputs ("), std::string::npos)
+        << edited.output;
+    EXPECT_NE(edited.output.find("shot.json has changed since"), std::string::npos) << edited.output;
+
+    write_scene("[2.6, 0.9, -2.4]");  // as it was: resumes again
+    std::ofstream(dir / "dots.exr", std::ios::app) << '\0';
+    const auto slam = test::run_linework(render + " --resume");
+    EXPECT_EQ(slam.exit_code, 1) << slam.output;
+    EXPECT_NE(slam.output.find("dots.exr has changed since"), std::string::npos) << slam.output;
 }
 
 // A second Ctrl-C does not wait for the frame in hand: a ribbon style can take minutes a

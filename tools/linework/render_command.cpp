@@ -99,8 +99,10 @@ std::optional<RenderState> read_start_state(const RenderOptions& o) {
                                     "have run; `render --save-states` writes them)");
     RenderState state = read_render_state(o.start_state);
     if (state.signature != o.state_signature)
-        throw Error(o.start_state + ": saved by a render with other options (the scene, camera, style and line "
-                                    "options must be the same; only the part, output and warm-up options may differ)");
+        throw Error(o.start_state + ": saved by a render with other options or inputs (" +
+                    signature_difference(state.signature, o.state_signature) +
+                    "; the scene, camera, style and line options and the files they name must be the same; only the "
+                    "part, output and warm-up options may differ)");
     return state;
 }
 
@@ -244,7 +246,7 @@ int render_frames(const RenderOptions& o, const Shot& shot, const FrameFiles& fi
     return 0;
 }
 
-int run_render(const RenderOptions& o) {
+int run_render(RenderOptions o) {
     check_range_options(o);
     // Plain values and flags (an optional here sets off GCC 12's -Wmaybe-uninitialized).
     const bool frames_given = !o.frames.empty(), part_given = !o.part.empty();
@@ -253,6 +255,9 @@ int run_render(const RenderOptions& o) {
     SceneDesc desc = scene_from_options(o.scene);
     check_flags_shape_drawn_lines(o.scene, desc.lines);
     apply_frame_overrides(o, desc);
+    const std::string inputs = input_files_signature(desc, o.scene.slam);
+    o.signature += inputs;
+    o.state_signature += inputs;
     FrameFiles files{o.output, o.svg, o.state_only ? std::string() : o.dump_paths, o.exr};
     const std::optional<RenderState> start_state = read_start_state(o);
 

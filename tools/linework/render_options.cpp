@@ -2,9 +2,17 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+
+#include <nlohmann/json.hpp>
 
 #include "commands.h"
 #include "cli_numbers.h"
+#include "core/random.h"
 
 namespace lw::cli {
 
@@ -142,6 +150,114 @@ std::string given_options_signature(const CLI::App& cmd, const std::vector<std::
         signature += "\n";
     }
     return signature;
+}
+
+namespace {
+
+// A file's bytes as 64 bits (mix64 over 8-byte words and the length): only to tell an edited
+// file from the one a state was saved with, not a cryptographic hash.
+std::string file_hash(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return "unreadable";
+    uint64_t h = 0x6c696e65776f726bull;
+    std::vector<char> buffer(1 << 16);
+    uint64_t length = 0;
+    while (in) {
+        in.read(buffer.data(), std::streamsize(buffer.size()));
+        const size_t n = size_t(in.gcount());
+        length += n;
+        for (size_t i = 0; i < n; i += 8) {
+            uint64_t word = 0;
+            std::memcpy(&word, buffer.data() + i, std::min<size_t>(8, n - i));
+            h = mix64(h ^ word);
+        }
+    }
+    char text[17];
+    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(mix64(h ^ length)));
+    return text;
+}
+
+// A .gltf's external buffers and images (a .glb holds its own; a missing one failed the load).
+std::vector<std::filesystem::path> gltf_companions(const std::filesystem::path& model) {
+    std::vector<std::filesystem::path> files;
+    if (model.extension() != ".gltf") return files;
+    std::ifstream in(model);
+    const nlohmann::json doc = nlohmann::json::parse(in, nullptr, false);
+    if (!doc.is_object()) return files;
+    for (const char* array : {"buffers", "images"})
+        if (const auto it = doc.find(array); it != doc.end() && it->is_array())
+            for (const nlohmann::json& entry : *it)
+                if (entry.is_object() && entry.contains("uri") && entry["uri"].is_string()) {
+                    const std::string uri = entry["uri"].get<std::string>();
+                    if (!uri.starts_with("data:")) files.push_back(model.parent_path() / uri);
+                }
+    return files;
+}
+
+}  // namespace
+
+std::string input_files_signature(const SceneDesc& desc, const std::string& slam_flag) {
+    std::vector<std::filesystem::path> files;
+    if (!desc.source.empty()) files.push_back(desc.source);
+    for (const std::filesystem::path& model : desc.models) {
+        files.push_back(model);
+        for (std::filesystem::path& companion : gltf_companions(model)) files.push_back(std::move(companion));
+    }
+    const auto add = [&](const std::string& path) {
+        if (!path.empty()) files.emplace_back(path);
+    };
+    add(slam_flag);
+    for (const LineStyle& style : desc.lines.styles) {
+        add(style.slam);
+        add(style.ribbon);
+    }
+    for (const LineSetDesc& set : desc.lines.sets) {
+        add(set.style.slam);
+        add(set.style.ribbon);
+    }
+    for (const VectorLayerDesc& layer : desc.layers) {
+        add(layer.strokes);
+        add(layer.slam);
+        add(layer.ribbon);
+    }
+    std::ranges::sort(files);
+    files.erase(std::unique(files.begin(), files.end()), files.end());
+    std::string signature;
+    for (const std::filesystem::path& file : files) signature += "file " + file.string() + "=" + file_hash(file) + "\n";
+    return signature;
+}
+
+std::string signature_difference(const std::string& saved, const std::string& now) {
+    // "NAME=VALUE" lines by name: an option ("--size") or a file ("file PATH").
+    const auto lines = [](const std::string& signature) {
+        std::map<std::string, std::string> by_name;
+        size_t start = 0;
+        for (size_t end; (end = signature.find('\n', start)) != std::string::npos; start = end + 1) {
+            const std::string line = signature.substr(start, end - start);
+            const size_t equals = line.find('=');
+            by_name[line.substr(0, equals)] = equals == std::string::npos ? "" : line.substr(equals + 1);
+        }
+        return by_name;
+    };
+    const std::map<std::string, std::string> then = lines(saved), here = lines(now);
+    const auto value = [](std::string v) {
+        while (!v.empty() && v.back() == ';') v.pop_back();
+        return v == "given" ? std::string() : v;  // an option counted by its presence
+    };
+    for (const auto& [name, was] : then) {
+        const auto it = here.find(name);
+        const bool file = name.starts_with("file ");
+        const std::string what = file ? name.substr(5) : name;
+        if (it == here.end())
+            return file ? what + " was one of its input files, and is not now"
+                        : what + (value(was).empty() ? "" : " " + value(was)) + " was given then, not now";
+        if (it->second != was) return file ? what + " has changed since" : what + " was " + value(was) + " then, " + value(it->second) + " now";
+    }
+    for (const auto& [name, is] : here)
+        if (!then.contains(name))
+            return name.starts_with("file ") ? "it does not record the contents of " + name.substr(5)
+                                             : name + (value(is).empty() ? "" : " " + value(is)) + " is given now, not then";
+    return "the options are the same but in another form";
 }
 
 std::vector<std::string> given_arguments(const CLI::App& cmd, const std::vector<std::string>& except) {

@@ -43,6 +43,17 @@ void add_frame_options(CLI::App* cmd, RenderOptions& o);
 [[nodiscard]] std::string given_options_signature(const CLI::App& cmd, const std::vector<std::string>& except,
                                                   const std::vector<std::string>& presence = {});
 
+// What the options cannot say: the contents of every file the frames are made from (the
+// scene file, its models with a .gltf's buffers and images, and the SLAMs, ribbon
+// exemplars and stroke files its keys or --slam name), as "file PATH=HASH\n" lines. Appended
+// to the signatures, so that --resume and --start-state refuse a state made before one of
+// them was edited instead of drawing on from frames of another scene.
+[[nodiscard]] std::string input_files_signature(const SceneDesc& desc, const std::string& slam_flag);
+
+// Why a saved signature is not this command's, for its error: the first option or file that
+// differs ("--size was 320x240 then", "spot.json has changed since").
+[[nodiscard]] std::string signature_difference(const std::string& saved, const std::string& now);
+
 // The given options of `cmd` again as arguments (the positional first), leaving out those
 // named in `except`: what `farm` puts on each task's command line.
 [[nodiscard]] std::vector<std::string> given_arguments(const CLI::App& cmd, const std::vector<std::string>& except);

@@ -5,6 +5,7 @@
 
 #include "commands.h"
 #include "io/image_io.h"
+#include "render_options.h"
 #include "render_state.h"
 
 #include <cstdio>
@@ -124,9 +125,10 @@ std::optional<int> resume_point(const std::string& signature, const FrameFiles& 
     if (first_missing > part.last && !std::filesystem::exists(state_path)) return first_missing;
     const RenderState state = read_render_state(state_path);
     if (state.signature != signature)
-        throw Error(state_path.string() + ": written by a render with other options (every option but --resume "
-                                          "counts: the scene, camera, style, device and outputs); give the options "
-                                          "that render had, with --resume, or remove the file to start over");
+        throw Error(state_path.string() + ": written by a render with other options or inputs (" +
+                    signature_difference(state.signature, signature) +
+                    "; every option but --resume counts, and so do the contents of the scene and the files it names): "
+                    "give the options and files that render had, with --resume, or remove the file to start over");
     if (first_missing > part.last) return first_missing;
     if (state.frame != first_missing - 1 && state.frame != first_missing - 2)
         throw Error(state_path.string() + ": holds the state after frame " + std::to_string(state.frame) +
