@@ -8,8 +8,10 @@
 
 #include "coherence/path_dump.h"
 #include "core/image.h"
+#include "core/log.h"
 #include "io/image_io.h"
 #include "scene/scene_file.h"
+#include "session/scene_layers.h"
 #include "test_support.h"
 #include "vector/fill.h"
 #include "vector/layer.h"
@@ -112,6 +114,40 @@ TEST(VectorLayer, SceneKeysAreCheckedByName) {
               std::string::npos);
     EXPECT_NE(error_of(R"({"layers": [{"strokes": "a.svg", "wobble": 1}]})").find("layers[0]"), std::string::npos);
     EXPECT_NE(error_of(R"({"size": [10, 10]})").find("model: required"), std::string::npos);
+    // A ribbon's size without a ribbon changed nothing, in silence; now refused, by key.
+    EXPECT_EQ(error_of(R"({"layers": [{"strokes": "a.svg", "ribbon_scale": 24}]})"),
+              "/tmp/layers.json: layers[0].ribbon_scale: sizes a ribbon's exemplar, and this layer has no \"ribbon\"");
+    EXPECT_EQ(error_of(R"({"model": "m.glb", "line_sets": [{"name": "a", "style": {"ribbon_scale": 24}}]})"),
+              "/tmp/layers.json: line_sets[0].style.ribbon_scale: sizes a ribbon's exemplar, and this set has no "
+              "\"ribbon\"");
+    EXPECT_EQ(error_of(R"({"model": "m.glb", "lines": {"crease": {"ribbon_scale": 24}}})"),
+              "/tmp/layers.json: lines.crease.ribbon_scale: sizes a ribbon's exemplar, and this type has no \"ribbon\"");
+    EXPECT_EQ(error_of(R"({"layers": [{"strokes": "a.svg", "ribbon": "r.png", "ribbon_scale": 24}]})"), "no error");
+}
+
+// "fill" on a drawing without a closed stroke fills nothing: said, naming the scene key and
+// the file; a drawing with closed strokes is filled without a word.
+TEST(VectorLayer, AFillWithNothingClosedIsSaid) {
+    const fs::path dir = test::temp_dir();
+    std::ofstream(dir / "open.json") << R"({"strokes": [{"points": [[0, 0], [10, 0], [10, 10]], "width": 2}]})";
+    std::ofstream(dir / "loop.json")
+        << R"({"strokes": [{"points": [[0, 0], [10, 0], [10, 10]], "width": 2, "closed": true}]})";
+    for (const char* name : {"open.json", "loop.json"}) {
+        const SceneDesc desc = parse_scene_json(
+            R"({"layers": [{"strokes": ")" + (dir / name).string() + R"(", "fill": "red"}]})", dir / "scene.json");
+        WarningCapture warnings;
+        const SceneLayers layers = load_scene_layers(desc);
+        if (std::string(name) == "loop.json") {
+            EXPECT_TRUE(warnings.messages().empty());
+            EXPECT_FALSE(layers.fills[0].empty());
+        } else {
+            ASSERT_EQ(warnings.messages().size(), 1u);
+            EXPECT_EQ(warnings.messages()[0], (dir / "scene.json").string() + ": layers[0].fill: " +
+                                                  (dir / "open.json").string() +
+                                                  " has no closed stroke (an SVG path ending in Z, a polygon, a "
+                                                  "closed JSON stroke): nothing is filled");
+        }
+    }
 }
 
 // Fig. 5 of the SLAM paper: a drawing zoomed 16× keeps its texture period on screen within

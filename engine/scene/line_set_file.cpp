@@ -234,6 +234,8 @@ LineSetStyle read_style(ObjectReader& set, const std::filesystem::path& file) {
     if (r.has("ribbon")) style.ribbon = r.file_path("ribbon", "a ribbon exemplar image (.png)");
     if (!style.slam.empty() && !style.ribbon.empty()) r.fail_key("ribbon", "a set is drawn with a SLAM or a ribbon, not both");
     if (r.has("ribbon_scale")) style.ribbon_scale = float(r.number("ribbon_scale", 1.0, 4096.0));
+    if (r.has("ribbon_scale") && style.ribbon.empty())
+        r.fail_key("ribbon_scale", "sizes a ribbon's exemplar, and this set has no \"ribbon\"");
     read_shape(r, style);
     if (!style.slam.empty()) style.cap = r.has("cap") ? style.cap : Cap::Butt;  // SLAM strokes end at their ends
     if (r.has("width_modifiers")) style.width_modifiers = scalar_modifiers(r, "width_modifiers", file);

@@ -170,6 +170,8 @@ LineStyle read_line_type(ObjectReader& lines, LineType type, const std::filesyst
     if (r.has("taper")) style.taper_px = static_cast<float>(r.number("taper", 0.0, 4096.0));
     if (r.has("ribbon")) style.ribbon = r.file_path("ribbon", "a ribbon exemplar image (.png)");
     if (r.has("ribbon_scale")) style.ribbon_scale = static_cast<float>(r.number("ribbon_scale", 1.0, 4096.0));
+    if (r.has("ribbon_scale") && style.ribbon.empty())
+        r.fail_key("ribbon_scale", "sizes a ribbon's exemplar, and this type has no \"ribbon\"");
     if (!style.ribbon.empty() && !style.slam.empty())
         r.fail_key("ribbon", "a line type is drawn with a SLAM or a ribbon, not both");
     if (float* threshold = line_type_threshold(p, type); threshold && r.has("threshold")) {
@@ -323,6 +325,8 @@ std::vector<VectorLayerDesc> read_layers(ObjectReader& scene, const std::filesys
         if (!layer.slam.empty() && !layer.ribbon.empty())
             r.fail_key("ribbon", "a layer is drawn with a SLAM or a ribbon, not both");
         if (r.has("ribbon_scale")) layer.ribbon_scale = static_cast<float>(r.number("ribbon_scale", 1.0, 4096.0));
+        if (r.has("ribbon_scale") && layer.ribbon.empty())
+            r.fail_key("ribbon_scale", "sizes a ribbon's exemplar, and this layer has no \"ribbon\"");
         if (r.has("taper")) layer.taper_px = static_cast<float>(r.number("taper", 0.0, 4096.0));
         // Settings that would draw nothing, or change nothing, were taken in silence.
         if (!layer.outline && !layer.fill && layer.ribbon.empty())

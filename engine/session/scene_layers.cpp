@@ -4,6 +4,7 @@
 #include <string>
 #include <utility>
 
+#include "core/log.h"
 #include "io/image_io.h"
 #include "io/slam_io.h"
 #include "ribbon/ribbon_strokes.h"
@@ -25,6 +26,10 @@ SceneLayers load_scene_layers(const SceneDesc& desc) {
         std::vector<std::vector<glm::vec2>> loops;
         for (const Stroke& stroke : drawing.strokes)
             if (stroke.closed) loops.push_back(stroke.points);
+        if (layer.fill && loops.empty())  // the file decides, so said rather than refused
+            log_warning(desc.source.string() + ": " + key + "fill: " + layer.strokes +
+                        " has no closed stroke (an SVG path ending in Z, a polygon, a closed JSON stroke): nothing is "
+                        "filled");
         layers.fills.push_back(layer.fill ? triangulate_even_odd(loops) : std::vector<glm::vec2>{});
 
         LayerStyle style{.taper_px = layer.taper_px, .strokes = layer.outline && layer.ribbon.empty(),
