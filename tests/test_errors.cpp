@@ -110,6 +110,8 @@ void write_fixtures(const fs::path& tmp) {
     write(tmp / "missingmodel.json", R"({"model": "missing.glb"})");
     write(tmp / "layernostrokes.json", R"({"layers": [{"fill": [1, 0, 0]}]})");
     write(tmp / "layermissing.json", R"({"layers": [{"strokes": "nope.svg"}]})");
+    write(tmp / "layertext.json", R"({"layers": [{"strokes": "text.svg"}]})");
+    write(tmp / "slamtext.json", R"({"model": ")" + spot + R"(", "lines": {"silhouette": {"slam": "text.exr"}}})");
     write(tmp / "onepoint.json", R"({"points": [[1, 2]]})");
     write(tmp / "square.json", R"({"points": [[0, 0], [100, 0], [100, 100], [0, 100]], "closed": true})");
     write(tmp / "afterz.svg", R"(<svg><path d="M0 0 L5 5 Z 3 4" stroke="black"/></svg>)");

@@ -477,8 +477,11 @@ SceneDesc parse_scene_json(const std::string& text, const std::filesystem::path&
 void check_key_file(const SceneDesc& desc, const std::string& key, const std::string& path) {
     std::error_code ec;
     if (path.empty() || std::filesystem::exists(path, ec)) return;
-    throw Error((desc.source.empty() ? std::string("scene") : desc.source.string()) + ": " + key + ": " + path +
-                ": no such file");
+    throw Error(key_file_prefix(desc, key) + path + ": no such file");
+}
+
+std::string key_file_prefix(const SceneDesc& desc, const std::string& key) {
+    return (desc.source.empty() ? std::string("scene") : desc.source.string()) + ": " + key + ": ";
 }
 
 SceneDesc load_scene_file(const std::filesystem::path& path) {

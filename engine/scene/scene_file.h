@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "core/error.h"
 #include "scene/animation.h"
 #include "scene/camera.h"
 #include "scene/camera_path.h"
@@ -104,6 +105,22 @@ inline constexpr const char* kHiddenBesideLineSets =
 // reader would name the file alone. Parsing does not look for files (a scene may be read
 // where they are not: tests, scene editors).
 void check_key_file(const SceneDesc& desc, const std::string& key, const std::string& path);
+
+// "spot.json: line_sets[0].style.slam: " (or "scene: …" for a scene given as data): what an
+// error about a file a scene key names starts with.
+[[nodiscard]] std::string key_file_prefix(const SceneDesc& desc, const std::string& key);
+
+// Returns `read()`, a reader of a file a scene key names; its error, which names the file
+// alone, gains the scene and the key in front: "spot.json: layers[0].slam: bad.exr: cannot
+// read SLAM: …".
+template <class Read>
+auto read_key_file(const SceneDesc& desc, const std::string& key, Read&& read) -> decltype(read()) {
+    try {
+        return read();
+    } catch (const Error& e) {
+        throw Error(key_file_prefix(desc, key) + e.what(), e.exit_code());
+    }
+}
 
 // True when the path names a model (by extension: .gltf, .glb, .obj, .ply) rather than a scene file.
 [[nodiscard]] bool is_model_path(const std::filesystem::path& path);

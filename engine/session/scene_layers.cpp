@@ -22,7 +22,7 @@ SceneLayers load_scene_layers(const SceneDesc& desc) {
         for (const auto& [name, path] : {std::pair{"strokes", &layer.strokes}, std::pair{"slam", &layer.slam},
                                          std::pair{"ribbon", &layer.ribbon}})
             check_key_file(desc, key + name, *path);
-        StrokeSet drawing = load_strokes(layer.strokes);
+        StrokeSet drawing = read_key_file(desc, key + "strokes", [&] { return load_strokes(layer.strokes); });
         std::vector<std::vector<glm::vec2>> loops;
         for (const Stroke& stroke : drawing.strokes)
             if (stroke.closed) loops.push_back(stroke.points);
@@ -35,7 +35,7 @@ SceneLayers load_scene_layers(const SceneDesc& desc) {
         LayerStyle style{.taper_px = layer.taper_px, .strokes = layer.outline && layer.ribbon.empty(),
                          .fill_color = layer.fill.value_or(glm::vec3(0.0f))};
         if (!layer.slam.empty()) {
-            style.slam = read_slam(layer.slam);
+            style.slam = read_key_file(desc, key + "slam", [&] { return read_slam(layer.slam); });
             // κ: square texels over the drawing's typical stroke width, as for 3D strokes.
             std::vector<float> widths;
             for (const Stroke& stroke : drawing.strokes) widths.push_back(mean_width(stroke) * layer.width_scale);
@@ -44,9 +44,9 @@ SceneLayers load_scene_layers(const SceneDesc& desc) {
             style.coherence.slam_length_px = float(style.slam->length);
             style.coherence.length_scale = float(style.slam->height) / width;
         }
-        layers.ribbons.push_back(layer.ribbon.empty() ? std::nullopt
-                                                      : std::optional(make_exemplar(read_image_rgba8(layer.ribbon),
-                                                                                    layer.ribbon)));
+        layers.ribbons.push_back(layer.ribbon.empty() ? std::nullopt : std::optional(read_key_file(desc, key + "ribbon", [&] {
+            return make_exemplar(read_image_rgba8(layer.ribbon), layer.ribbon);
+        })));
         layers.styles.push_back(std::move(style));
         layers.drawings.push_back(std::move(drawing));
     }

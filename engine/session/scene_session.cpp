@@ -179,11 +179,13 @@ void SceneSession::load_line_styles() {
         check_key_file(desc_, key + "ribbon", style.ribbon);
         std::optional<Slam> slam = already_read(style.slam, &LineSetStyle::slam, sets_, slams);
         if (!slam) slam = already_read(style.slam, &LineSetStyle::slam, previous, slams_);
-        if (!style.slam.empty() && !slam) slam = read_slam(style.slam);
+        if (!style.slam.empty() && !slam) slam = read_key_file(desc_, key + "slam", [&] { return read_slam(style.slam); });
         slams.push_back(std::move(slam));
         std::optional<Exemplar> ribbon = already_read(style.ribbon, &LineSetStyle::ribbon, sets_, ribbons);
         if (!ribbon) ribbon = already_read(style.ribbon, &LineSetStyle::ribbon, previous, ribbons_);
-        if (!style.ribbon.empty() && !ribbon) ribbon = make_exemplar(read_image_rgba8(style.ribbon), style.ribbon);
+        if (!style.ribbon.empty() && !ribbon)
+            ribbon = read_key_file(desc_, key + "ribbon",
+                                   [&] { return make_exemplar(read_image_rgba8(style.ribbon), style.ribbon); });
         ribbons.push_back(std::move(ribbon));
     }
     // Every file read: only now is the old state replaced.

@@ -7,6 +7,7 @@
 #include "commands.h"
 #include "cli_numbers.h"
 #include "core/color.h"
+#include "io/slam_io.h"
 #include "render/line_sets.h"
 
 namespace lw::cli {
@@ -124,8 +125,16 @@ SceneDesc scene_from_options(const SceneOptions& o) {
                 throw usage_error(std::string(flag) + ": " + o.input + " draws no lines (\"lines\": false)");
     if (!o.contours.empty()) desc.lines.params.contours = contour_mode(o.contours);
     if (!o.curvature.empty()) desc.lines.params.curvature = curvature_fit(o.curvature);
-    // Read when the first frame is drawn; a farm plans its tasks from these options.
+    // Read here as well as when the first frame is drawn: a farm plans its tasks from these
+    // options, and the session names a file it cannot read by the scene key it sets.
     if (!o.slam.empty() && !std::filesystem::exists(o.slam)) throw Error(o.slam + ": no such SLAM file");
+    if (!o.slam.empty()) {
+        try {
+            (void)read_slam(o.slam);
+        } catch (const Error& e) {
+            throw Error(std::string("--slam: ") + e.what());
+        }
+    }
     if (!o.slam.empty()) use_slam_strokes(desc.lines, o.slam, o.stroke_width);
     return desc;
 }
