@@ -348,6 +348,34 @@ TEST(Coherence, SlidingComparesASharedEndWithItsOwnPath) {
     EXPECT_EQ(still.p90_dt, 0.0);
 }
 
+// Two layers' strokes lying on each other are measured each in its own layer, as two line
+// sets are: the dump names each path's layer, and one layer's phase is not compared with the
+// other's (which read as a pop at every sample before the index).
+TEST(Coherence, EachLayerIsMeasuredOnItsOwn) {
+    const auto layer = [](float y, float phi) {
+        ScreenPath path;
+        for (int x = 0; x <= 40; x += 2)
+            path.samples.push_back({.pixel = {float(x), y}, .depth = 1.0f, .s = float(x), .position = {}, .face = 0,
+                                    .bary = {}, .alpha = 1.0f});
+        return ParameterizedPaths{.paths = {path}, .params = {PathParam{.rho = 0.01f, .phi = phi}}};
+    };
+    // Layer 0 stays put; layer 1 comes over it (half a pixel off, half a period apart) every
+    // other frame and lies far off between.
+    std::vector<PathDump> frames;
+    for (int f = 0; f < 4; ++f)
+        frames.push_back(parse_path_dump(
+            path_dump_json(f, 64, 64, {}, {layer(5.0f, 0.0f), layer(f % 2 ? 5.5f : 40.0f, 0.5f)}), "frame"));
+    ASSERT_EQ(line_sets_in(frames), (std::vector<std::string>{"layers[0]", "layers[1]"}));
+    const SlidingMeasure first = measure_sliding(paths_of_line_set(frames, "layers[0]"));
+    EXPECT_EQ(first.pairs, 3u * 21u);
+    EXPECT_EQ(first.pops, 0.0);
+    EXPECT_EQ(measure_sliding(paths_of_line_set(frames, "layers[1]")).pairs, 0u);
+    // Read as one group, as dumps without the index were, layer 1 is compared with layer 0.
+    for (PathDump& frame : frames)
+        for (DumpPath& path : frame.paths) path.line_set.clear();
+    EXPECT_GT(measure_sliding(frames).pops, 0.0);
+}
+
 // A sample is compared with T on the previous frame's path where it lies, interpolated between
 // that path's samples, not with the nearest sample's T: samples 2 px apart that moved 0.7 px
 // along a texture that did not slide measure 0, and a texture sliding 0.5 px a frame measures

@@ -17,7 +17,7 @@ namespace lw {
 namespace {
 
 void append_paths(nlohmann::json& out, const std::vector<ScreenPath>& paths, const std::vector<PathParam>& params,
-                  const char* type_override, const std::string& line_set) {
+                  const char* type_override, const std::string& line_set, int layer = -1) {
     using nlohmann::json;
     for (size_t p = 0; p < paths.size(); ++p) {
         const ScreenPath& path = paths[p];
@@ -33,6 +33,7 @@ void append_paths(nlohmann::json& out, const std::vector<ScreenPath>& paths, con
         }
         json entry = {{"type", type_override ? type_override : line_type_name(path.type)}};
         if (!line_set.empty()) entry["line_set"] = line_set;
+        if (layer >= 0) entry["layer"] = layer;
         entry.update(json{{"closed", path.closed}, {"rho", param.rho}, {"phi", param.phi},
                                 {"level", param.fold.level}, {"votes", param.votes}, {"samples", std::move(samples)}});
         out["paths"].push_back(std::move(entry));
@@ -47,7 +48,8 @@ std::string path_dump_json(int frame, int width, int height, const std::vector<D
     static const std::vector<PathParam> none;
     for (const DumpGroup& set : sets)
         if (set.paths) append_paths(out, *set.paths, set.params ? *set.params : none, nullptr, set.line_set);
-    for (const ParameterizedPaths& layer : layers) append_paths(out, layer.paths, layer.params, "layer", "");
+    for (size_t i = 0; i < layers.size(); ++i)
+        append_paths(out, layers[i].paths, layers[i].params, "layer", "", int(i));
     return out.dump();
 }
 
@@ -66,6 +68,8 @@ PathDump parse_path_dump(const std::string& text, const std::string& name) {
         dump.frame = j.at("frame").get<int>();
         for (const auto& p : j.at("paths")) {
             DumpPath path{p.at("type").get<std::string>(), p.value("line_set", std::string()), p.at("rho").get<float>(), {}};
+            // Each layer is measured on its own, as a line set is (dumps before the index: one group).
+            if (p.contains("layer")) path.line_set = "layers[" + std::to_string(p.at("layer").get<int>()) + "]";
             for (const auto& s : p.at("samples"))
                 path.samples.push_back({{s.at("x").get<float>(), s.at("y").get<float>()}, s.at("s").get<float>(),
                                         s.at("t").get<float>(), s.at("u").get<float>()});

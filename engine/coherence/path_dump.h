@@ -2,7 +2,8 @@
 //
 // Dump contract (`linework render --dump-paths DIR`, one DIR/frame_NNNN.json per frame):
 //   {"frame": f, "width": W, "height": H, "paths": [{"type": "silhouette|suggestive|crease|border|layer",
-//    "line_set": the name of the line set that drew it (absent for layers), "closed": bool, "rho": ρ, "phi": φ, "level": l, "votes": n, "samples": [{"x": px, "y": px,
+//    "line_set": the name of the line set that drew it (absent for layers), "layer": the index
+//    of the scene's layer that drew it (absent for line sets), "closed": bool, "rho": ρ, "phi": φ, "level": l, "votes": n, "samples": [{"x": px, "y": px,
 //    "s": arclength px, "t": T(s) = ρs + φ, "u": the coordinate along the SLAM level actually
 //    sampled, in periods of that level's texture, "p": [x, y, z] surface position}]}]}
 // Only visible paths are dumped.
@@ -47,7 +48,7 @@ struct DumpSample {
 };
 struct DumpPath {
     std::string type;
-    std::string line_set;  // "" for layers
+    std::string line_set;  // "layers[N]" for a layer's paths ("" in dumps written before the index)
     float rho = 0.0f;
     std::vector<DumpSample> samples;
 };
@@ -105,7 +106,7 @@ struct StretchMeasure {
 };
 [[nodiscard]] StretchMeasure measure_stretch(const std::vector<PathDump>& frames);
 
-// The frames with only the paths of one line set ("" : the layers), so that each set is
+// The frames with only the paths of one line set ("layers[N]": a layer's), so that each set is
 // measured on its own; and the line-set names found, in order of first appearance.
 [[nodiscard]] std::vector<PathDump> paths_of_line_set(const std::vector<PathDump>& frames, const std::string& line_set);
 [[nodiscard]] std::vector<std::string> line_sets_in(const std::vector<PathDump>& frames);

@@ -147,7 +147,10 @@ std::vector<Group> groups_of(const std::vector<PathDump>& frames) {
     const std::vector<std::string> sets = line_sets_in(frames);
     if (sets.size() > 1)
         for (const std::string& set : sets)
-            groups.push_back({set.empty() ? "layers" : "line set " + set, paths_of_line_set(frames, set)});
+            groups.push_back({set.empty()                ? "layers"
+                              : set.starts_with("layers[") ? set
+                                                           : "line set " + set,
+                              paths_of_line_set(frames, set)});
     const std::vector<std::string> types = types_in(frames);
     if (types.size() > 1)
         for (const std::string& type : types) groups.push_back({"type " + type, paths_of_type(frames, type)});
