@@ -127,6 +127,42 @@ TEST(Resume, AnEditedSceneOrSlamIsNotResumed) {
     EXPECT_NE(slam.output.find("dots.exr has changed since"), std::string::npos) << slam.output;
 }
 
+// What --resume takes as written: every file the command writes for a frame (not the PNG
+// alone), frames that a state speaks for (not frames with none, nor a folder a still frame was
+// drawn into since), whatever the spelling of the folders' names.
+TEST(Resume, OnlyWholeFramesOfThisRenderAreSkipped) {
+    const fs::path dir = test::temp_dir();
+    const std::string shot = test::quote(test::data_dir() / "models/spot/spot.glb") +
+                             " --device cpu --size 96x72 --frames 0:3 --orbit 30 --dump-paths " + test::quote(dir / "d");
+    ASSERT_EQ(test::run_linework("render " + shot + " -o " + test::quote(dir / "o")).exit_code, 0);
+    // The same folders spelled another way are the same render.
+    const auto spelled = test::run_linework("render " + shot + "/ -o " + test::quote(dir / "x/../o/") + " --resume");
+    EXPECT_EQ(spelled.exit_code, 0) << spelled.output;
+    EXPECT_NE(spelled.output.find("all frames 0 to 3 are already in"), std::string::npos) << spelled.output;
+    // A frame whose dump is gone is not written: here the state has gone past it.
+    fs::remove(dir / "d/frame_0001.json");
+    const auto dump_gone = test::run_linework("render " + shot + " -o " + test::quote(dir / "o") + " --resume");
+    EXPECT_EQ(dump_gone.exit_code, 1) << dump_gone.output;
+    EXPECT_NE(dump_gone.output.find("the first missing frame is 1"), std::string::npos) << dump_gone.output;
+    // Every frame there but no state: nothing says which render wrote them.
+    ASSERT_EQ(test::run_linework("render " + shot + " -o " + test::quote(dir / "o")).exit_code, 0);
+    fs::remove(dir / "o/.linework-state");
+    const auto no_state = test::run_linework("render " + shot + " -o " + test::quote(dir / "o") + " --resume");
+    EXPECT_EQ(no_state.exit_code, 1) << no_state.output;
+    EXPECT_NE(no_state.output.find(".linework-state: no render state to resume from (frames 0 to 3 are there, but no "
+                                   "state says which render wrote them)"),
+              std::string::npos)
+        << no_state.output;
+    // A still frame drawn into the folder takes the sequence's state away with it.
+    ASSERT_EQ(test::run_linework("render " + shot + " -o " + test::quote(dir / "o")).exit_code, 0);
+    ASSERT_EQ(test::run_linework("render " + test::quote(test::data_dir() / "models/spot/spot.glb") +
+                                 " --device cpu --size 48x36 -o " + test::quote(dir / "o"))
+                  .exit_code,
+              0);
+    EXPECT_FALSE(fs::exists(dir / "o/.linework-state"));
+    EXPECT_EQ(test::run_linework("render " + shot + " -o " + test::quote(dir / "o") + " --resume").exit_code, 1);
+}
+
 // A second Ctrl-C does not wait for the frame in hand: a ribbon style can take minutes a
 // frame (here a 1024-texel exemplar along a drawing's strokes), and the first Ctrl-C only
 // asks for a stop after it. The process dies of the signal, with nothing written.

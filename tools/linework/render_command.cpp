@@ -75,7 +75,7 @@ private:
 void check_range_options(const RenderOptions& o) {
     if (o.warmup < 0) throw usage_error("--warmup: must be 0 or more");
     if (o.chunk < 0) throw usage_error("--chunk: must be 1 or more");
-    if (!o.save_states.empty() && o.chunk == 0) throw usage_error("--save-states needs --chunk N (frames per chunk)");
+    if (!o.save_states.empty() && o.chunk == 0) throw usage_error("--save-states needs --chunk N, 1 or more frames per chunk");
     if (o.chunk > 0 && o.save_states.empty()) throw usage_error("--chunk is the spacing of --save-states: give both");
     if (o.state_only && o.save_states.empty())
         throw usage_error("--state-only writes nothing but the states: add --save-states DIR --chunk N");
@@ -302,6 +302,12 @@ int run_render(RenderOptions o) {
                                                       : std::string(".linework-state"));
     // Made once the scene has loaded, so that a scene that fails to load leaves no empty folders.
     if (!o.state_only) create_folders(files);
+    // A still frame written into a sequence's folder: the sequence's state no longer speaks
+    // for every frame there (a sequence rewrites it before its first frame).
+    if (!files.sequence && !o.state_only && !o.resume) {
+        std::error_code ec;
+        std::filesystem::remove(files.progress_state, ec);
+    }
     if (!o.save_states.empty()) create_folder(o.save_states, "the --save-states");
     // From the header on, a signal stops after the frame in hand (render_frames reads it).
     const StopOnSignal stop(o.state_only);

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <set>
 
 #include <nlohmann/json.hpp>
 
@@ -135,6 +136,23 @@ bool left_out(const CLI::Option& option, const std::vector<std::string>& except)
     return option.count() == 0 || std::find(except.begin(), except.end(), option.get_name()) != except.end();
 }
 
+// A file or folder named by an option, as one spelling: `-o out/`, `-o ./out` and `-o
+// /abs/out` are one folder, and a resume that spells it another way is the same render.
+std::string one_spelling(const std::string& path) {
+    std::error_code ec;
+    const std::filesystem::path canonical = std::filesystem::weakly_canonical(path, ec);
+    if (ec) return path;
+    std::string text = canonical.lexically_normal().string();
+    while (text.size() > 1 && text.back() == '/') text.pop_back();
+    return text;
+}
+
+bool names_a_path(const std::string& option) {
+    static const std::set<std::string> kPaths = {"input",         "--output",      "--slam", "--svg", "--dump-paths",
+                                                 "--save-states", "--start-state"};
+    return kPaths.contains(option);
+}
+
 }  // namespace
 
 std::string given_options_signature(const CLI::App& cmd, const std::vector<std::string>& except,
@@ -146,7 +164,8 @@ std::string given_options_signature(const CLI::App& cmd, const std::vector<std::
         if (std::ranges::find(presence, option->get_name()) != presence.end())
             signature += "given;";
         else
-            for (const std::string& value : option->results()) signature += value + ";";
+            for (const std::string& value : option->results())
+                signature += (names_a_path(option->get_name()) ? one_spelling(value) : value) + ";";
         signature += "\n";
     }
     return signature;
@@ -223,7 +242,8 @@ std::string input_files_signature(const SceneDesc& desc, const std::string& slam
     std::ranges::sort(files);
     files.erase(std::unique(files.begin(), files.end()), files.end());
     std::string signature;
-    for (const std::filesystem::path& file : files) signature += "file " + file.string() + "=" + file_hash(file) + "\n";
+    for (const std::filesystem::path& file : files)
+        signature += "file " + one_spelling(file.string()) + "=" + file_hash(file) + "\n";
     return signature;
 }
 

@@ -48,9 +48,16 @@ std::filesystem::path svg_path(const FrameFiles& files, int f) {
     return svg;
 }
 
-namespace {
-
-}  // namespace
+bool frame_written(const FrameFiles& files, int f) {
+    // The PNG is written last (write_frame_files), but each file may have been removed since.
+    const auto there = [](const std::filesystem::path& file) {
+        std::error_code ec;
+        return std::filesystem::is_regular_file(file, ec);
+    };
+    return there(files.out_dir / frame_name(f, "png")) && (!files.exr || there(files.out_dir / frame_name(f, "exr"))) &&
+           (files.svg.empty() || there(svg_path(files, f))) &&
+           (files.dump_paths.empty() || there(std::filesystem::path(files.dump_paths) / frame_name(f, "json")));
+}
 
 void create_folders(const FrameFiles& files) {
     if (!files.out_dir.empty()) create_folder(files.out_dir, "output");
@@ -116,13 +123,18 @@ void restore_render_state(SceneSession& session, const RenderState& state, Frame
 std::optional<int> resume_point(const std::string& signature, const FrameFiles& files, FrameRange range,
                                 FrameRange part, SceneSession& session) {
     int first_missing = part.first;
-    while (first_missing <= part.last && std::filesystem::exists(files.out_dir / frame_name(first_missing, "png")))
-        ++first_missing;
+    while (first_missing <= part.last && frame_written(files, first_missing)) ++first_missing;
     if (first_missing == part.first) return std::nullopt;
+    if (!files.sequence) return first_missing;  // one still frame: no state to go on from
     const std::filesystem::path& state_path = files.progress_state;
     // Frames there by another command (other options) are not this render's: even when
-    // every frame is there, the state says whose they are.
-    if (first_missing > part.last && !std::filesystem::exists(state_path)) return first_missing;
+    // every frame is there, the state says whose they are; frames with no state, whoever
+    // wrote them, are not taken as this render's either.
+    if (!std::filesystem::exists(state_path))
+        throw Error(state_path.string() + ": no render state to resume from (frames " + std::to_string(part.first) +
+                    " to " + std::to_string(first_missing - 1) +
+                    " are there, but no state says which render wrote them): render without --resume to draw the "
+                    "range again");
     const RenderState state = read_render_state(state_path);
     if (state.signature != signature)
         throw Error(state_path.string() + ": written by a render with other options or inputs (" +

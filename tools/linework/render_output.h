@@ -32,6 +32,10 @@ struct FrameFiles {
 // Frame f's SVG: --svg's name, with _NNNN before the extension in a sequence.
 [[nodiscard]] std::filesystem::path svg_path(const FrameFiles& files, int f);
 
+// Whether every file of frame f that `files` asks for is there (the PNG, and the EXR, SVG
+// and path dump where asked for): what --resume skips.
+[[nodiscard]] bool frame_written(const FrameFiles& files, int f);
+
 // Makes the output folder, the dump folder and the SVG's folder (when asked for); errors
 // name them.
 void create_folders(const FrameFiles& files);

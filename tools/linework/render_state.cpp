@@ -169,6 +169,10 @@ void write_render_state(const std::filesystem::path& path, const RenderState& st
 }
 
 RenderState read_render_state(const std::filesystem::path& path) {
+    std::error_code ec;
+    if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
+        throw Error(path.string() + ": " + (std::filesystem::is_directory(path, ec) ? "a folder" : "not a regular file") +
+                    ", not a render state (a farm's states are its DIR/states/state_NNNN.lwstate files)");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw Error(path.string() + ": no render state to resume from (the sequence was not started, or by an "
                                          "older linework)");
