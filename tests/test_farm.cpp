@@ -2,11 +2,13 @@
 // temporal state run alone (its states equal those of a full render), the plan's tasks run
 // here in order giving the frames of one render, and the errors. The same shot through a
 // real Slurm is tests/farm/farm_test.sh.
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <set>
 #include <string>
+#include <thread>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -186,6 +188,36 @@ TEST(Farm, ExactPlanRunHereEqualsOneRender) {
     const auto missing = test::run_linework("farm status " + test::quote(dir / "farm"));
     EXPECT_EQ(missing.exit_code, 3) << missing.output;
     EXPECT_NE(missing.output.find("3 of 4 frames written, missing 5"), std::string::npos) << missing.output;
+}
+
+// SIGTERM to `farm task` (a scheduler's stop) goes on to its render, which finishes its frame
+// and exits 130; the task records 130 and exits with it. It used to die at once and leave the
+// render drawing on, orphaned, with no status recorded.
+TEST(Farm, ATaskStoppedBySigtermStopsItsRender) {
+    const fs::path dir = test::temp_dir();
+    ASSERT_EQ(test::run_linework("farm " + kShot + " --frames 0:4999 --chunk 5000 --warmup 0 -o " +
+                                 test::quote(dir / "farm"))
+                  .exit_code,
+              0);
+    const std::string exe = LW_LINEWORK_EXE;
+    const fs::path frames = dir / "farm/frames";
+    const auto stopped = test::run_command(
+        "LINEWORK_VALIDATION=1 '" + exe + "' farm task " + test::quote(dir / "farm") + " frames 0 > /dev/null 2>&1 & pid=$!; while [ ! -f " +
+        test::quote(frames / test::frame_png(2)) + " ]; do sleep 0.01; if ! kill -0 $pid 2>/dev/null; then break; fi; "
+        "done; kill -TERM $pid; wait $pid; echo $?");
+    EXPECT_EQ(stopped.output, "130\n");
+    std::ifstream rc(dir / "farm/logs/frames_0000.rc");
+    int recorded = -1;
+    EXPECT_TRUE(rc >> recorded);
+    EXPECT_EQ(recorded, 130);
+    // Nothing draws on once the task has exited.
+    size_t written = 0;
+    for ([[maybe_unused]] const auto& e : fs::directory_iterator(frames)) ++written;
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    size_t later = 0;
+    for ([[maybe_unused]] const auto& e : fs::directory_iterator(frames)) ++later;
+    EXPECT_EQ(later, written);
+    EXPECT_LT(written, 5000u);
 }
 
 TEST(Farm, BadRequestsAreOneClearError) {

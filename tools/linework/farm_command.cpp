@@ -3,6 +3,7 @@
 // finished, missing, or left by a failed task; `linework farm task DIR PHASE I`: one task.
 #include <algorithm>
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -86,6 +87,9 @@ int run_farm(const FarmOptions& o, const CLI::App& cmd) {
     }
     create_folder(plan.request.dir, "farm");
     create_folder(plan.logs(), "log");
+    // The folders the tasks write beside the frames, made (and so checked) now as `render`
+    // makes them before its first frame, rather than failing in every task.
+    create_folders(FrameFiles{.svg = o.render.svg, .dump_paths = o.render.dump_paths});
     write_text_atomically(plan_file, text);
     write_slurm_scripts(plan, o.throttle, o.cpus_per_task);
     if (o.exact && o.render.scene.device == "auto")
@@ -94,8 +98,9 @@ int run_farm(const FarmOptions& o, const CLI::App& cmd) {
     const int chunks = int(plan.phases.back().tasks.size());
     std::printf("shot: frames %d to %d in %d chunk(s) of %d, %s\n", request.frames.first, request.frames.last, chunks,
                 request.chunk,
-                o.exact ? "exact (a state phase first)"
-                        : ("each after " + std::to_string(request.warmup) + " warm-up frames").c_str());
+                !o.exact                  ? ("each after " + std::to_string(request.warmup) + " warm-up frames").c_str()
+                : plan.phases.size() == 1 ? "exact (one chunk: no state phase)"
+                                          : "exact (a state phase first)");
     for (const FarmPhase& phase : plan.phases)
         std::printf("phase %s: %zu task(s)\n", phase.name.c_str(), phase.tasks.size());
     std::printf("wrote %s\n", plan_file.string().c_str());
@@ -186,6 +191,38 @@ int run_status(const std::string& dir) {
     return failed ? 1 : missing.empty() ? 0 : 3;
 }
 
+volatile sig_atomic_t g_task_pid = 0;
+
+void forward_to_task(int signal) {
+    if (g_task_pid > 0) kill(pid_t(g_task_pid), signal);
+}
+
+// While the task runs, SIGINT and SIGTERM to `farm task` go on to it, so that it finishes
+// its frame and exits 130 (what README "Render farm" promises), and the task's status is
+// recorded; the task has a process group of its own, so that a Ctrl-C at a terminal reaches
+// it once, through here (twice would stop it at once, without the frame in hand).
+class ForwardStopSignals {
+public:
+    explicit ForwardStopSignals(pid_t task) {
+        g_task_pid = task;
+        struct sigaction forward {};
+        forward.sa_handler = forward_to_task;
+        sigemptyset(&forward.sa_mask);
+        sigaction(SIGINT, &forward, &int_);
+        sigaction(SIGTERM, &forward, &term_);
+    }
+    ~ForwardStopSignals() {
+        sigaction(SIGINT, &int_, nullptr);
+        sigaction(SIGTERM, &term_, nullptr);
+        g_task_pid = 0;
+    }
+    ForwardStopSignals(const ForwardStopSignals&) = delete;
+    ForwardStopSignals& operator=(const ForwardStopSignals&) = delete;
+
+private:
+    struct sigaction int_ {}, term_ {};
+};
+
 // Runs `command` with its output passed through to ours and appended to `log`; returns its
 // exit status (128 + the signal's number when a signal ended it, as a shell reports it).
 int run_logged(const std::vector<std::string>& command, const std::filesystem::path& log) {
@@ -195,6 +232,7 @@ int run_logged(const std::vector<std::string>& command, const std::filesystem::p
     const pid_t child = fork();
     if (child < 0) throw Error(std::string("farm task: cannot start the task (") + std::strerror(errno) + ")");
     if (child == 0) {
+        setpgid(0, 0);
         dup2(pipe_ends[1], STDOUT_FILENO);
         dup2(pipe_ends[1], STDERR_FILENO);
         close(pipe_ends[0]);
@@ -207,6 +245,7 @@ int run_logged(const std::vector<std::string>& command, const std::filesystem::p
         _exit(127);
     }
     close(pipe_ends[1]);
+    const ForwardStopSignals forward(child);
     std::ofstream out(log, std::ios::app | std::ios::binary);
     char buffer[4096];
     for (ssize_t n; (n = read(pipe_ends[0], buffer, sizeof buffer)) != 0;) {

@@ -56,7 +56,11 @@ std::string phase_script(const FarmPlan& plan, size_t index, int throttle, int c
     s += "for attempt in 1 2 3; do\n";
     s += "  \"${cmd[@]}\"; rc=$?\n";
     s += "  if [ \"$rc\" -le 128 ] || [ \"$rc\" -eq 130 ] || [ \"$rc\" -eq 143 ]; then break; fi\n";
-    s += "  echo \"linework farm: task $id ended by signal $((rc - 128)); running it again (attempt $((attempt + 1)))\"\n";
+    s += "  if [ \"$attempt\" -eq 3 ]; then\n";
+    s += "    echo \"linework farm: task $id ended by signal $((rc - 128)) in each of 3 attempts; giving up\"\n";
+    s += "  else\n";
+    s += "    echo \"linework farm: task $id ended by signal $((rc - 128)); running it again (attempt $((attempt + 1)))\"\n";
+    s += "  fi\n";
     s += "done\n";
     s += "echo \"$rc\" > \"$rc_file\"\n";
     s += "exit \"$rc\"\n";
