@@ -6,6 +6,7 @@
 #include <regex>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -144,6 +145,16 @@ void write_fixtures(const fs::path& tmp) {
     }
     fs::create_directories(tmp / "baddump");
     write(tmp / "baddump/frame_0000.json", R"({"width": 16, "height": 16, "paths": []})");
+    // Frames 0 and 2 (1 missing); frames 0-2 at another size; a file named for another frame.
+    for (const auto& [folder, f, size] : {std::tuple{"gapdumps", 0, 16}, std::tuple{"gapdumps", 2, 16},
+                                          std::tuple{"bigdumps", 0, 32}, std::tuple{"bigdumps", 1, 32},
+                                          std::tuple{"bigdumps", 2, 32}, std::tuple{"misnamed", 1, 16}}) {
+        fs::create_directories(tmp / folder);
+        const int frame = std::string(folder) == "misnamed" ? 0 : f;
+        write(tmp / folder / ("frame_000" + std::to_string(f) + ".json"),
+              R"({"frame": )" + std::to_string(frame) + R"(, "width": )" + std::to_string(size) + R"(, "height": )" +
+                  std::to_string(size) + R"(, "paths": []})");
+    }
     fs::create_directories(tmp / "resume");
     fs::copy_file(tmp / "small.png", tmp / "resume/frame_0000.png");
 }

@@ -66,6 +66,8 @@ PathDump parse_path_dump(const std::string& text, const std::string& name) {
     try {
         const nlohmann::json j = nlohmann::json::parse(text);
         dump.frame = j.at("frame").get<int>();
+        dump.width = j.value("width", 0);
+        dump.height = j.value("height", 0);
         for (const auto& p : j.at("paths")) {
             DumpPath path{p.at("type").get<std::string>(), p.value("line_set", std::string()), p.at("rho").get<float>(), {}};
             // Each layer is measured on its own, as a line set is (dumps before the index: one group).

@@ -54,6 +54,7 @@ struct DumpPath {
 };
 struct PathDump {
     int frame = 0;
+    int width = 0, height = 0;  // the image's (0: not given)
     std::vector<DumpPath> paths;
 };
 

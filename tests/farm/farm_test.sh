@@ -116,8 +116,10 @@ done
 slide() {
   local tmp
   tmp=$(mktemp -d "$work/slide.XXXX")
-  ln -s "$1/frame_$(printf %04d "$2").json" "$tmp/frame_0000.json"
-  ln -s "$1/frame_$(printf %04d $(($2 + 1))).json" "$tmp/frame_0001.json"
+  local f
+  for f in "$2" $(($2 + 1)); do
+    ln -s "$1/frame_$(printf %04d "$f").json" "$tmp/frame_$(printf %04d "$f").json"
+  done
   "$linework" coherence-report "$tmp" | sed -n 's/.*sliding: median |dt| \([0-9.]*\).*/\1/p' | head -n1
 }
 for c in 12 18; do

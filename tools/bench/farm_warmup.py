@@ -40,8 +40,8 @@ def sliding(linework, pairs):
     values = []
     for a_dir, a, b_dir, b in pairs:
         with tempfile.TemporaryDirectory() as tmp:
-            for d, f, name in ((a_dir, a, "frame_0000.json"), (b_dir, b, "frame_0001.json")):
-                os.symlink(os.path.join(d, f"frame_{f:04d}.json"), os.path.join(tmp, name))
+            for d, f in ((a_dir, a), (b_dir, b)):  # each under its own name: coherence-report checks them
+                os.symlink(os.path.join(d, f"frame_{f:04d}.json"), os.path.join(tmp, f"frame_{f:04d}.json"))
             out = subprocess.run([linework, "coherence-report", tmp], capture_output=True, text=True,
                                  check=True).stdout
             values.append(float(re.search(r"sliding: median \|dt\| ([\d.]+)", out).group(1)))

@@ -78,6 +78,14 @@ void print_measures(const std::string& what, const Measures& m, const Measures* 
     }
 }
 
+std::string frame_file_name(int frame) {
+    char name[48];
+    std::snprintf(name, sizeof name, "frame_%04d.json", frame);
+    return name;
+}
+
+std::string image_size(const PathDump& dump) { return std::to_string(dump.width) + "x" + std::to_string(dump.height); }
+
 struct ReportOptions {
     std::vector<std::string> folders;
     std::string against;
@@ -96,19 +104,51 @@ std::vector<PathDump> read_dumps(const std::string& folder) {
     if (files.empty()) throw Error(folder + ": no frame_NNNN.json dumps");
     std::sort(files.begin(), files.end());
     std::vector<PathDump> frames;
-    for (const auto& file : files) frames.push_back(read_path_dump(file));
+    for (const auto& file : files) {
+        PathDump dump = read_path_dump(file);
+        // Sliding compares each frame with the one before: a file renamed, a frame missing or
+        // a dump of another image size would compare what are not neighbouring frames.
+        if (file.filename() != frame_file_name(dump.frame))
+            throw Error(file.string() + ": holds frame " + std::to_string(dump.frame) + ", not the frame its name says");
+        if (!frames.empty() && dump.frame != frames.back().frame + 1)
+            throw Error(folder + ": frame " + std::to_string(dump.frame) + " follows frame " +
+                        std::to_string(frames.back().frame) +
+                        ": the frames between are missing (sliding compares each frame with the one before)");
+        if (!frames.empty() && (dump.width != frames.front().width || dump.height != frames.front().height))
+            throw Error(file.string() + ": " + image_size(dump) + ", but frame " + std::to_string(frames.front().frame) +
+                        " is " + image_size(frames.front()) + ": the dumps of one render have one size");
+        frames.push_back(std::move(dump));
+    }
     return frames;
 }
 
-// Per frame of `frames` that `reference` has: the phase error; 1 when a p90 passes the bound.
+// Two renders measured against each other: the same image size, or pixels do not compare.
+void require_same_size(const std::string& folder, const std::vector<PathDump>& frames, const std::string& other,
+                       const std::vector<PathDump>& other_frames, const char* what) {
+    if (frames.front().width != other_frames.front().width || frames.front().height != other_frames.front().height)
+        throw Error(folder + " (" + image_size(frames.front()) + ") and " + what + " " + other + " (" +
+                    image_size(other_frames.front()) + ") are dumps of different image sizes: render both at one --size");
+}
+
+// "24 frames, 0-23": a dump folder's frames, for messages.
+std::string frame_span(const std::vector<PathDump>& frames) {
+    return std::to_string(frames.size()) + " frames, " + std::to_string(frames.front().frame) + "-" +
+           std::to_string(frames.back().frame);
+}
+
+// Per frame of `frames` (each must be in `reference`): the phase error; 1 when a p90 passes the bound.
 int report_against(const std::string& folder, const std::vector<PathDump>& frames, const ReportOptions& o) {
     const std::vector<PathDump> reference = read_dumps(o.against);
+    require_same_size(folder, frames, o.against, reference, "the reference");
+    for (const PathDump& frame : frames)  // up front, not after the frames before it are printed
+        if (std::none_of(reference.begin(), reference.end(), [&](const PathDump& r) { return r.frame == frame.frame; }))
+            throw Error(o.against + ": no dump of frame " + std::to_string(frame.frame) + " (" + folder + " has " +
+                        frame_span(frames) + ", the reference " + frame_span(reference) + ")");
     std::printf("%s against %s: phase error |dt| per frame, periods\n", folder.c_str(), o.against.c_str());
     int over = 0;
     for (const PathDump& frame : frames) {
         const auto ref = std::find_if(reference.begin(), reference.end(),
                                       [&](const PathDump& r) { return r.frame == frame.frame; });
-        if (ref == reference.end()) throw Error(o.against + ": no dump of frame " + std::to_string(frame.frame));
         const PhaseError e = measure_phase_error(frame, *ref);
         // No sample near the reference's paths is no measure, not a zero one.
         const bool bad = o.max_p90 && (e.pairs == 0 || e.p90 > *o.max_p90);
@@ -122,10 +162,6 @@ int report_against(const std::string& folder, const std::vector<PathDump>& frame
 
 // A baseline is another render of the same shot: the same frames, or the ratios compare
 // different motions.
-std::string frame_span(const std::vector<PathDump>& frames) {
-    return std::to_string(frames.size()) + " frames, " + std::to_string(frames.front().frame) + "-" +
-           std::to_string(frames.back().frame);
-}
 void require_same_frames(const std::string& folder, const std::vector<PathDump>& frames, const std::string& baseline,
                          const std::vector<PathDump>& baseline_frames) {
     bool same = frames.size() == baseline_frames.size();
@@ -167,7 +203,10 @@ int run_report(const ReportOptions& o) {
     }
     for (const std::string& folder : o.folders) {
         const std::vector<PathDump> frames = read_dumps(folder);
-        if (!o.baseline.empty()) require_same_frames(folder, frames, o.baseline, baseline_frames);
+        if (!o.baseline.empty()) {
+            require_same_frames(folder, frames, o.baseline, baseline_frames);
+            require_same_size(folder, frames, o.baseline, baseline_frames, "the baseline");
+        }
         if (!o.against.empty()) {
             status = std::max(status, report_against(folder, frames, o));
             continue;
