@@ -60,7 +60,8 @@ void use_slam_strokes(LinesDesc& lines, const std::string& slam, float width);
 [[nodiscard]] CLI::Validator output_file_name(const std::string& extension = "");
 // A usage error when `output` names the same file as one of `inputs` (empty ones skipped):
 // `hatch tr.svg -o tr.svg` wrote over the hand-drawn training it had just read.
-void refuse_writing_over_input(const std::string& output, std::initializer_list<std::string> inputs);
+void refuse_writing_over_input(const std::string& output, std::initializer_list<std::string> inputs,
+                               const std::string& option = "-o");
 // 1 (after one line on stderr) when validation was on and reported anything, else 0.
 int exit_code_after_validation(const Context& ctx, bool validation);
 // The "bounds:" line render and view print: the model's box in scene units (what a camera

@@ -60,7 +60,8 @@ CLI::Validator output_file(const std::string& extension) {
         "", "output file");
 }
 
-void refuse_writing_over_input(const std::string& output, std::initializer_list<std::string> inputs) {
+void refuse_writing_over_input(const std::string& output, std::initializer_list<std::string> inputs,
+                               const std::string& option) {
     for (const std::string& input : inputs) {
         if (input.empty()) continue;
         std::error_code error;
@@ -68,7 +69,8 @@ void refuse_writing_over_input(const std::string& output, std::initializer_list<
                               ? std::filesystem::equivalent(output, input, error)
                               : std::filesystem::weakly_canonical(output, error) == std::filesystem::weakly_canonical(input, error);
         if (same && !error)
-            throw usage_error("-o: " + output + " is the input " + input + ", which it would be written over; name another file");
+            throw usage_error(option + ": " + output + " is the input " + input +
+                              ", which it would be written over; name another file");
     }
 }
 

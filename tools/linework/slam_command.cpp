@@ -93,6 +93,8 @@ void print_report(const synth::SlamSynthesis& s, const synth::SlamSynthesisDesc&
 int run_slam(const SlamOptions& o) {
     if (std::filesystem::path(o.output).extension() != ".exr")
         throw usage_error("-o: " + o.output + ": a SLAM file is OpenEXR (.exr)");
+    refuse_writing_over_input(o.output, {o.exemplar});
+    if (!o.preview.empty()) refuse_writing_over_input(o.preview, {o.exemplar}, "--preview");
     const synth::Plane ink = synth::exemplar_ink(read_image_rgba8(o.exemplar));
     synth::SlamSynthesisDesc desc{.levels = o.levels,
                                   .length = o.length,
