@@ -188,6 +188,17 @@ TEST(Farm, ExactPlanRunHereEqualsOneRender) {
     const auto missing = test::run_linework("farm status " + test::quote(dir / "farm"));
     EXPECT_EQ(missing.exit_code, 3) << missing.output;
     EXPECT_NE(missing.output.find("3 of 4 frames written, missing 5"), std::string::npos) << missing.output;
+    // A plan copied into another folder is refused: its tasks would write into the first.
+    fs::create_directories(dir / "copy");
+    fs::copy_file(dir / "farm/plan.json", dir / "copy/plan.json");
+    for (const std::string command : {"farm status ", "farm task "}) {
+        const auto copied = test::run_linework(command + test::quote(dir / "copy") +
+                                               (command == "farm task " ? " frames 0" : ""));
+        EXPECT_EQ(copied.exit_code, 1) << copied.output;
+        EXPECT_NE(copied.output.find("plan.json: a plan made for " + (dir / "farm").string() + " (its tasks write there)"),
+                  std::string::npos)
+            << copied.output;
+    }
 }
 
 // SIGTERM to `farm task` (a scheduler's stop) goes on to its render, which finishes its frame

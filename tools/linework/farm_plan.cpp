@@ -125,6 +125,14 @@ FarmPlan read_plan(const std::filesystem::path& dir) {
         r.linework = j.at("linework").get<std::string>();
         r.working_dir = j.at("working_directory").get<std::string>();
         r.arguments = j.at("arguments").get<std::vector<std::string>>();
+        // The tasks' command lines name the folder the plan was made for: a plan copied or moved
+        // elsewhere would run tasks that write there while `farm status` looked here.
+        const std::filesystem::path made_for = std::filesystem::path(j.at("output").get<std::string>()).parent_path();
+        std::error_code ec;
+        if (!std::filesystem::equivalent(made_for, dir, ec))
+            throw Error(file.string() + ": a plan made for " + made_for.string() +
+                        " (its tasks write there); plan the shot again in this folder with `linework farm … -o " +
+                        dir.string() + "`");
         for (const nlohmann::json& p : j.at("phases")) {
             FarmPhase phase{.name = p.at("name").get<std::string>()};
             for (const nlohmann::json& t : p.at("tasks"))
