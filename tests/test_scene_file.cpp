@@ -133,6 +133,16 @@ TEST(SceneFile, ErrorsNameTheKey) {
     EXPECT_EQ(error_of(R"({"model": "a.glb", "camera": {"eye": [0,0,1], "target": [0,0,0], "fov": 200}})"),
               "scenes/x.json: camera.fov: must be between 1 and 170, got 200");
     EXPECT_EQ(error_of(R"({"model": "a.glb", "camera": {"target": [0,0,0]}})"), "scenes/x.json: camera.eye: required");
+    // A key twice in one object (JSON keeps one) is refused; the same key in two objects is not.
+    EXPECT_EQ(error_of(R"({"model": "a.glb", "size": [64, 48], "model": "b.glb"})"),
+              "scenes/x.json: \"model\" is given twice in one object (JSON would keep only one of them): give it once");
+    EXPECT_NE(error_of(R"({"model": "a.glb", "lines": {"crease": {"width": 2, "width": 3}}})").find("\"width\" is given twice"),
+              std::string::npos);
+    EXPECT_EQ(error_of(R"({"model": "a.glb", "lines": {"crease": {"width": 2}, "border": {"width": 2}}})"), "(no error)");
+    // Neither eye nor target: the framing camera, with the fov given (as under an orbit).
+    EXPECT_EQ(error_of(R"({"model": "a.glb", "camera": {"fov": 35}})"), "(no error)");
+    EXPECT_EQ(error_of(R"({"model": "a.glb", "camera": {"fov": 35, "up": [0, 0, 1]}})"),
+              "scenes/x.json: camera.up: needs eye and target (without them the camera frames the model)");
     EXPECT_EQ(error_of(R"({"size": [10, 10]})").rfind("scenes/x.json: model: required", 0), 0u);
     EXPECT_EQ(error_of(R"({"model": "a.stl"})"), "scenes/x.json: model: \"a.stl\" is not a model file (.gltf, .glb, .obj or .ply)");
     EXPECT_EQ(error_of(R"([1, 2])"), "scenes/x.json: the scene must be a JSON object");

@@ -27,9 +27,9 @@ void check_view(const ObjectReader& r, const glm::vec3& eye, const glm::vec3& ta
     if (glm::length(glm::cross(target - eye, up)) < 1e-9f) r.fail_key("up", "is parallel to the view direction");
 }
 
-// "camera": a fixed camera (eye and target required), optionally turned by "orbit" degrees
-// over the frame range. With "orbit", eye and target may both be left out: the framing
-// camera turns, and only "fov" (the framing field of view) may accompany it.
+// "camera": a fixed camera (eye and target), optionally turned by "orbit" degrees over the
+// frame range. Eye and target may both be left out: the camera frames the bounding box (and
+// turns, with "orbit"), and only "fov" (the framing field of view) may accompany them.
 void read_camera(ObjectReader& parent, const std::filesystem::path& file, SceneDesc& scene) {
     ObjectReader r(parent.at("camera"), "camera", file);
     ViewCamera camera;
@@ -38,9 +38,11 @@ void read_camera(ObjectReader& parent, const std::filesystem::path& file, SceneD
         scene.camera_path.kind = CameraPath::Kind::Orbit;
         scene.camera_path.orbit.degrees = static_cast<float>(r.number("orbit", -36000.0, 36000.0));
     }
-    if (has_orbit && !has_eye && !has_target) {
+    if (!has_eye && !has_target) {
         for (const char* key : {"up", "near", "far"})
-            if (r.has(key)) r.fail_key(key, "needs eye and target (an orbit without them turns the framing camera)");
+            if (r.has(key))
+                r.fail_key(key, has_orbit ? "needs eye and target (an orbit without them turns the framing camera)"
+                                          : "needs eye and target (without them the camera frames the model)");
         if (r.has("fov")) scene.fov_deg = static_cast<float>(r.number("fov", 1.0, 170.0));
         r.reject_unknown();
         return;
@@ -360,8 +362,19 @@ std::vector<VectorLayerDesc> read_layers(ObjectReader& scene, const std::filesys
 
 SceneDesc parse_scene_json(const std::string& text, const std::filesystem::path& source, bool models_given) {
     json root;
+    // JSON parsers keep one of a key given twice in an object (nlohmann the last): a scene
+    // edited by hand with "model" twice drew one of them without a word.
+    std::vector<std::set<std::string>> keys;  // of the objects open at this point
+    const json::parser_callback_t once = [&](int, json::parse_event_t event, json& parsed) {
+        if (event == json::parse_event_t::object_start) keys.emplace_back();
+        if (event == json::parse_event_t::object_end && !keys.empty()) keys.pop_back();
+        if (event == json::parse_event_t::key && !keys.empty() && !keys.back().insert(parsed.get<std::string>()).second)
+            throw Error(source.string() + ": \"" + parsed.get<std::string>() +
+                        "\" is given twice in one object (JSON would keep only one of them): give it once");
+        return true;
+    };
     try {
-        root = json::parse(text);
+        root = json::parse(text, once);
     } catch (const json::exception& e) {  // syntax, and numbers past double's range (out_of_range)
         std::string what = e.what();
         const auto colon = what.find("parse error");
