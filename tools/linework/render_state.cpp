@@ -125,10 +125,19 @@ std::optional<CoherenceTracker::State> get_state(Reader& r) {
 
 void write_atomically(const std::filesystem::path& path, const std::function<void(const std::filesystem::path&)>& write) {
     const auto temporary = path.parent_path() / (path.stem().string() + ".partial" + path.extension().string());
-    write(temporary);
     std::error_code ec;
+    try {
+        write(temporary);
+    } catch (...) {  // a failed write leaves no half file behind
+        std::filesystem::remove(temporary, ec);
+        throw;
+    }
     std::filesystem::rename(temporary, path, ec);
-    if (ec) throw Error(path.string() + ": cannot write (" + ec.message() + ")");
+    if (ec) {
+        const std::string why = std::filesystem::is_directory(path) ? "a folder has its name" : ec.message();
+        std::filesystem::remove(temporary, ec);
+        throw Error(path.string() + ": cannot write (" + why + ")");
+    }
 }
 
 void create_folder(const std::filesystem::path& dir, const std::string& what) {
