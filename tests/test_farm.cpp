@@ -188,6 +188,11 @@ TEST(Farm, ExactPlanRunHereEqualsOneRender) {
     const auto missing = test::run_linework("farm status " + test::quote(dir / "farm"));
     EXPECT_EQ(missing.exit_code, 3) << missing.output;
     EXPECT_NE(missing.output.find("3 of 4 frames written, missing 5"), std::string::npos) << missing.output;
+    // A frame is finished when every file the tasks write for it is there, its dump too.
+    fs::remove(dir / "dumps/frame_0006.json");
+    const auto no_dump = test::run_linework("farm status " + test::quote(dir / "farm"));
+    EXPECT_EQ(no_dump.exit_code, 3) << no_dump.output;
+    EXPECT_NE(no_dump.output.find("2 of 4 frames written"), std::string::npos) << no_dump.output;
     // A plan copied into another folder is refused: its tasks would write into the first.
     fs::create_directories(dir / "copy");
     fs::copy_file(dir / "farm/plan.json", dir / "copy/plan.json");

@@ -137,6 +137,21 @@ int recorded_exit(const FarmPlan& plan, const FarmPhase& phase, size_t index) {
     return -1;
 }
 
+// What the frames tasks write per frame, read back from the options the plan hands them
+// (given_arguments: "--svg" and "--dump-paths" each followed by its value; relative to the
+// working folder), so that a frame is finished only when its EXR, SVG and dump are there too.
+FrameFiles plan_frame_files(const FarmPlan& plan) {
+    FrameFiles files{.out_dir = plan.output(), .sequence = true};
+    const std::vector<std::string>& a = plan.request.arguments;
+    for (size_t i = 0; i < a.size(); ++i) {
+        const auto value = [&] { return i + 1 < a.size() ? (plan.request.working_dir / a[i + 1]).string() : std::string(); };
+        if (a[i] == "--exr") files.exr = true;
+        if (a[i] == "--svg") files.svg = value();
+        if (a[i] == "--dump-paths") files.dump_paths = value();
+    }
+    return files;
+}
+
 // One line per task; returns whether it is finished (every frame, or every state, there).
 bool report_task(const FarmPlan& plan, const FarmPhase& phase, size_t index, std::vector<int>& missing_frames,
                  int& failed) {
@@ -148,8 +163,9 @@ bool report_task(const FarmPlan& plan, const FarmPhase& phase, size_t index, std
         for (int start = r.frames.first + r.chunk; start <= task.frames.last + 1; start += r.chunk, ++wanted)
             if (!std::filesystem::exists(saved_state_path(plan.states(), start))) missing.push_back(start);
     } else {
+        const FrameFiles files = plan_frame_files(plan);
         for (int f = task.frames.first; f <= task.frames.last; ++f, ++wanted)
-            if (!std::filesystem::exists(plan.output() / frame_name(f, "png"))) missing.push_back(f);
+            if (!frame_written(files, f)) missing.push_back(f);
         missing_frames.insert(missing_frames.end(), missing.begin(), missing.end());
     }
     const int rc = recorded_exit(plan, phase, index);
