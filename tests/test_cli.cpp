@@ -129,6 +129,24 @@ TEST(Cli, UnexpectedArgumentsAreNamedAsGiven) {
         << r.output;
 }
 
+// A value that is not a number, or not one of a set, says what was expected (CLI11 said
+// "Could not convert: --fov = abc", "--samples: abc", "Value abc not in range 0 to 6").
+TEST(Cli, AValueOfTheWrongKindSaysWhatWasExpected) {
+    const std::string model = quote(test::data_dir() / "models/spot/spot.glb");
+    const std::string out = quote(test::temp_dir());
+    for (const auto& [args, message] :
+         {std::pair{"render " + model + " -o " + out + " --fov abc", std::string("--fov: expected a number, got \"abc\"")},
+          std::pair{"render " + model + " -o " + out + " --samples abc", std::string("--samples: expected one of {1,4,8}, got \"abc\"")},
+          std::pair{"render " + model + " -o " + out + " --samples 3", std::string("--samples: expected one of {1,4,8}, got \"3\"")},
+          std::pair{"render " + model + " -o " + out + " --shading glossy",
+                    std::string("--shading: expected one of {flat,toon,unlit,none}, got \"glossy\"")},
+          std::pair{std::string("slam x.png -o y.exr --levels abc"), std::string("--levels: expected a number from 2 to 256, got \"abc\"")}}) {
+        const auto r = run_linework(args);
+        EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.output;
+        EXPECT_NE(r.output.find("linework: error: " + message), std::string::npos) << args << "\n" << r.output;
+    }
+}
+
 TEST(Cli, HelpExplainsRender) {
     const auto r = run_linework("render --help");
     EXPECT_EQ(r.exit_code, 0);
