@@ -216,11 +216,32 @@ TEST(Resume, ASecondInterruptStopsAtOnce) {
         << "the render did not start its frame";
     kill(pid, SIGINT);
     ASSERT_TRUE(wait_for([&] { return log_holds("stopping after the frame in hand"); }));
+    // (A repeat within 0.3 s is the same stop, delivered twice: the next test.)
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));
     kill(pid, SIGINT);
     ASSERT_TRUE(wait_for(exited)) << "the render went on after a second Ctrl-C";
     EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGINT);
     EXPECT_FALSE(fs::exists(out + "/frame_0000.png"));
     EXPECT_TRUE(log_holds("stopped at once; the frames written are whole; run the same command with --resume"));
+}
+
+// One stop delivered twice at once (a kill of a whole process tree or cgroup reaches a farm
+// task's render directly and through the task) is one stop: the frame in hand is finished
+// and written, and the render exits 130 rather than dying of the signal.
+TEST(Resume, TheSameStopTwiceAtOnceFinishesTheFrame) {
+    const fs::path dir = test::temp_dir();
+    const std::string exe = LW_LINEWORK_EXE;
+    const fs::path out = dir / "out";
+    const auto r = test::run_command(
+        "LINEWORK_VALIDATION=1 '" + exe + "' render " + test::quote(test::data_dir() / "models/spot/spot.glb") +
+        " --device cpu --size 64x48 --frames 0:999 -o " + test::quote(out) +
+        " > /dev/null 2>&1 & pid=$!; i=0; while [ ! -f " + test::quote(out / test::frame_png(2)) +
+        " ] && [ $i -lt 6000 ]; do sleep 0.01; i=$((i + 1)); done; kill -TERM $pid; kill -TERM $pid; wait $pid; echo $?");
+    EXPECT_EQ(r.output, "130\n");
+    int written = 0;
+    while (fs::exists(out / test::frame_png(written))) ++written;
+    EXPECT_GE(written, 3);
+    EXPECT_LT(written, 1000);
 }
 
 // A still camera on a dense model: the paths kept from frame to frame (still_paths.h) travel

@@ -136,7 +136,11 @@ TEST(SceneFile, ErrorsNameTheKey) {
     // A key twice in one object (JSON keeps one) is refused; the same key in two objects is not.
     EXPECT_EQ(error_of(R"({"model": "a.glb", "size": [64, 48], "model": "b.glb"})"),
               "scenes/x.json: \"model\" is given twice in one object (JSON would keep only one of them): give it once");
-    EXPECT_NE(error_of(R"({"model": "a.glb", "lines": {"crease": {"width": 2, "width": 3}}})").find("\"width\" is given twice"),
+    EXPECT_EQ(error_of(R"({"model": "a.glb", "lines": {"crease": {"width": 2, "width": 3}}})"),
+              "scenes/x.json: lines.crease: \"width\" is given twice in one object (JSON would keep only one of them): "
+              "give it once");
+    EXPECT_NE(error_of(R"({"model": "a.glb", "line_sets": [{"name": "a"}, {"name": "b", "style": {"width": 1, "width": 2}}]})")
+                  .find("scenes/x.json: line_sets[1].style: \"width\" is given twice"),
               std::string::npos);
     EXPECT_EQ(error_of(R"({"model": "a.glb", "lines": {"crease": {"width": 2}, "border": {"width": 2}}})"), "(no error)");
     // Neither eye nor target: the framing camera, with the fov given (as under an orbit).

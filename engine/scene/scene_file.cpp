@@ -364,13 +364,32 @@ SceneDesc parse_scene_json(const std::string& text, const std::filesystem::path&
     json root;
     // JSON parsers keep one of a key given twice in an object (nlohmann the last): a scene
     // edited by hand with "model" twice drew one of them without a word.
-    std::vector<std::set<std::string>> keys;  // of the objects open at this point
+    struct Open {  // an object or array being read: where it is, and an object's keys so far
+        bool array = false;
+        int index = -1;   // an array's element being read
+        std::string key;  // an object's key being read
+        std::set<std::string> keys;
+    };
+    std::vector<Open> open;
+    const auto where = [&] {  // "lines.crease", "line_sets[0].style": the object being read
+        std::string path;
+        for (size_t i = 0; i + 1 < open.size(); ++i)
+            path += open[i].array ? "[" + std::to_string(open[i].index) + "]" : (path.empty() ? "" : ".") + open[i].key;
+        return path;
+    };
     const json::parser_callback_t once = [&](int, json::parse_event_t event, json& parsed) {
-        if (event == json::parse_event_t::object_start) keys.emplace_back();
-        if (event == json::parse_event_t::object_end && !keys.empty()) keys.pop_back();
-        if (event == json::parse_event_t::key && !keys.empty() && !keys.back().insert(parsed.get<std::string>()).second)
-            throw Error(source.string() + ": \"" + parsed.get<std::string>() +
-                        "\" is given twice in one object (JSON would keep only one of them): give it once");
+        using E = json::parse_event_t;
+        if ((event == E::object_start || event == E::array_start || event == E::value) && !open.empty() &&
+            open.back().array)
+            ++open.back().index;
+        if (event == E::object_start || event == E::array_start) open.push_back({.array = event == E::array_start});
+        if ((event == E::object_end || event == E::array_end) && !open.empty()) open.pop_back();
+        if (event == E::key && !open.empty()) {
+            open.back().key = parsed.get<std::string>();
+            if (!open.back().keys.insert(open.back().key).second)
+                throw Error(source.string() + ": " + (open.size() > 1 ? where() + ": " : "") + "\"" + open.back().key +
+                            "\" is given twice in one object (JSON would keep only one of them): give it once");
+        }
         return true;
     };
     try {

@@ -27,7 +27,7 @@ SceneLayers load_scene_layers(const SceneDesc& desc) {
         for (const Stroke& stroke : drawing.strokes)
             if (stroke.closed) loops.push_back(stroke.points);
         if (layer.fill && loops.empty())  // the file decides, so said rather than refused
-            log_warning(desc.source.string() + ": " + key + "fill: " + layer.strokes +
+            log_warning(key_file_prefix(desc, key + "fill") + layer.strokes +
                         " has no closed stroke (an SVG path ending in Z, a polygon, a closed JSON stroke): nothing is "
                         "filled");
         layers.fills.push_back(layer.fill ? triangulate_even_odd(loops) : std::vector<glm::vec2>{});

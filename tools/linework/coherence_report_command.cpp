@@ -78,12 +78,6 @@ void print_measures(const std::string& what, const Measures& m, const Measures* 
     }
 }
 
-std::string frame_file_name(int frame) {
-    char name[48];
-    std::snprintf(name, sizeof name, "frame_%04d.json", frame);
-    return name;
-}
-
 std::string image_size(const PathDump& dump) { return std::to_string(dump.width) + "x" + std::to_string(dump.height); }
 
 struct ReportOptions {
@@ -102,14 +96,19 @@ std::vector<PathDump> read_dumps(const std::string& folder) {
         if (entry.path().extension() == ".json" && entry.path().filename().string().rfind("frame_", 0) == 0)
             files.push_back(entry.path());
     if (files.empty()) throw Error(folder + ": no frame_NNNN.json dumps");
-    std::sort(files.begin(), files.end());
-    std::vector<PathDump> frames;
+    std::vector<std::pair<PathDump, std::filesystem::path>> read;
     for (const auto& file : files) {
         PathDump dump = read_path_dump(file);
-        // Sliding compares each frame with the one before: a file renamed, a frame missing or
-        // a dump of another image size would compare what are not neighbouring frames.
-        if (file.filename() != frame_file_name(dump.frame))
+        if (file.filename() != frame_name(dump.frame, "json"))
             throw Error(file.string() + ": holds frame " + std::to_string(dump.frame) + ", not the frame its name says");
+        read.emplace_back(std::move(dump), file);
+    }
+    // In frame order (by name, frame_10000 would sort before frame_1001).
+    std::ranges::sort(read, {}, [](const auto& r) { return r.first.frame; });
+    std::vector<PathDump> frames;
+    for (auto& [dump, file] : read) {
+        // Sliding compares each frame with the one before: a frame missing or a dump of another
+        // image size would compare what are not neighbouring frames.
         if (!frames.empty() && dump.frame != frames.back().frame + 1)
             throw Error(folder + ": frame " + std::to_string(dump.frame) + " follows frame " +
                         std::to_string(frames.back().frame) +

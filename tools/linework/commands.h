@@ -58,6 +58,10 @@ void use_slam_strokes(LinesDesc& lines, const std::string& slam, float width);
 // `extension` ending in it (render's --svg, whose folder render makes: an SVG named
 // frame_0000.png replaced the frame it was named after).
 [[nodiscard]] CLI::Validator output_file_name(const std::string& extension = "");
+
+// frame_0007.png: a frame's file in a sequence (render's frames, EXRs and path dumps).
+[[nodiscard]] std::string frame_name(int frame, const char* extension);
+
 // A usage error when `output` names the same file as one of `inputs` (empty ones skipped):
 // `hatch tr.svg -o tr.svg` wrote over the hand-drawn training it had just read.
 void refuse_writing_over_input(const std::string& output, std::initializer_list<std::string> inputs,

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <memory>
 
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -245,10 +246,26 @@ int run_logged(const std::vector<std::string>& command, const std::filesystem::p
     int pipe_ends[2];
     if (pipe(pipe_ends) != 0) throw Error(std::string("farm task: cannot make a pipe (") + std::strerror(errno) + ")");
     std::fflush(stdout);
+    // A stop signal that comes before the forwarding is in place waits for it (blocked, then
+    // delivered and passed on), rather than ending this process and leaving the task running.
+    sigset_t stops, before;
+    sigemptyset(&stops);
+    sigaddset(&stops, SIGINT);
+    sigaddset(&stops, SIGTERM);
+    sigprocmask(SIG_BLOCK, &stops, &before);
+    const pid_t parent = getpid();
     const pid_t child = fork();
-    if (child < 0) throw Error(std::string("farm task: cannot start the task (") + std::strerror(errno) + ")");
+    if (child < 0) {
+        sigprocmask(SIG_SETMASK, &before, nullptr);
+        throw Error(std::string("farm task: cannot start the task (") + std::strerror(errno) + ")");
+    }
     if (child == 0) {
         setpgid(0, 0);
+        // Killed outright (SIGKILL, a group kill that now misses the task's own group), this
+        // process can pass nothing on: the task is stopped as by SIGTERM instead.
+        prctl(PR_SET_PDEATHSIG, SIGTERM);
+        if (getppid() != parent) _exit(143);  // it died before the line above
+        sigprocmask(SIG_SETMASK, &before, nullptr);
         dup2(pipe_ends[1], STDOUT_FILENO);
         dup2(pipe_ends[1], STDERR_FILENO);
         close(pipe_ends[0]);
@@ -262,6 +279,7 @@ int run_logged(const std::vector<std::string>& command, const std::filesystem::p
     }
     close(pipe_ends[1]);
     const ForwardStopSignals forward(child);
+    sigprocmask(SIG_SETMASK, &before, nullptr);
     std::ofstream out(log, std::ios::app | std::ios::binary);
     char buffer[4096];
     for (ssize_t n; (n = read(pipe_ends[0], buffer, sizeof buffer)) != 0;) {

@@ -60,6 +60,12 @@ CLI::Validator output_file(const std::string& extension) {
         "", "output file");
 }
 
+std::string frame_name(int frame, const char* extension) {
+    char name[64];
+    std::snprintf(name, sizeof name, "frame_%04d.%s", frame, extension);
+    return name;
+}
+
 void refuse_writing_over_input(const std::string& output, std::initializer_list<std::string> inputs,
                                const std::string& option) {
     for (const std::string& input : inputs) {

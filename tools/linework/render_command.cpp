@@ -4,7 +4,9 @@
 // writing files (render_output.h). --resume goes on from OUT/.linework-state.
 #include <algorithm>
 #include <cmath>
+#include <atomic>
 #include <csignal>
+#include <ctime>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -36,7 +38,22 @@ const char* volatile g_stopped_message = "";
 // once, as the signal's default would: a frame can take minutes (a ribbon style). Every file
 // is written under a temporary name and renamed, so the frames and states there are whole;
 // a temporary file may be left (*.partial.*).
+// One stop signal can arrive twice within a moment: a kill of a whole cgroup or process tree
+// reaches a `farm task`'s render directly and again through the task, which passes its
+// signals on. A second one within kRepeatNs of the first is that same stop.
+constexpr long long kRepeatNs = 300'000'000;
+std::atomic<long long> g_first_stop_ns{0};  // CLOCK_MONOTONIC (lock-free: safe in a handler)
+static_assert(std::atomic<long long>::is_always_lock_free);
+
+long long monotonic_ns() {
+    timespec now{};
+    clock_gettime(CLOCK_MONOTONIC, &now);  // async-signal-safe
+    return (long long)now.tv_sec * 1'000'000'000LL + now.tv_nsec;
+}
+
 void on_stop_signal(int signal) {
+    const long long now = monotonic_ns();
+    if (g_interrupted && now - g_first_stop_ns.load() < kRepeatNs) return;
     if (g_interrupted) {
         const char* stopped = g_stopped_message;
         [[maybe_unused]] const ssize_t said = ::write(STDERR_FILENO, stopped, std::strlen(stopped));
@@ -45,6 +62,7 @@ void on_stop_signal(int signal) {
         return;
     }
     g_interrupted = 1;
+    g_first_stop_ns.store(now);
     static const char message[] = "\nlinework: stopping after the frame in hand (again to stop at once)\n";
     [[maybe_unused]] const ssize_t written = ::write(STDERR_FILENO, message, sizeof message - 1);  // async-signal-safe
 }
@@ -208,6 +226,15 @@ int render_frames(const RenderOptions& o, const Shot& shot, const FrameFiles& fi
         total_ms += frame.timings.total_ms;
         progress.update(f - shot.start + 1, f, frame.timings.total_ms);
         if (write) {
+            // A still frame written over a sequence's frame: the sequence's state no longer
+            // speaks for every frame there (a sequence rewrites it before its first frame).
+            if (!files.sequence && std::filesystem::exists(files.out_dir / frame_name(f, "png"))) {
+                std::error_code ec;
+                if (std::filesystem::remove(files.progress_state, ec))
+                    log_warning(files.progress_state.string() + ": removed: frame " + std::to_string(f) +
+                                " of the sequence there is replaced by this still, so --resume can no longer go on "
+                                "from it");
+            }
             write_frame_files(files, session, frame, f);
             if (files.sequence)
                 write_render_state(files.progress_state, {o.signature, f, session.snapshot().coherence});
@@ -302,12 +329,6 @@ int run_render(RenderOptions o) {
                                                       : std::string(".linework-state"));
     // Made once the scene has loaded, so that a scene that fails to load leaves no empty folders.
     if (!o.state_only) create_folders(files);
-    // A still frame written into a sequence's folder: the sequence's state no longer speaks
-    // for every frame there (a sequence rewrites it before its first frame).
-    if (!files.sequence && !o.state_only && !o.resume) {
-        std::error_code ec;
-        std::filesystem::remove(files.progress_state, ec);
-    }
     if (!o.save_states.empty()) create_folder(o.save_states, "the --save-states");
     // From the header on, a signal stops after the frame in hand (render_frames reads it).
     const StopOnSignal stop(o.state_only);

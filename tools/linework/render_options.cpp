@@ -1,6 +1,7 @@
 #include "render_options.h"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cstdio>
 #include <cstring>
@@ -132,15 +133,20 @@ CameraOverride camera_override(const RenderOptions& o) {
 
 namespace {
 
+// The first line of input_files_signature: "file" lines, options in one spelling.
+constexpr const char* kSignatureFormat = "signature format=2";
+
 bool left_out(const CLI::Option& option, const std::vector<std::string>& except) {
     return option.count() == 0 || std::find(except.begin(), except.end(), option.get_name()) != except.end();
 }
 
 // A file or folder named by an option, as one spelling: `-o out/`, `-o ./out` and `-o
 // /abs/out` are one folder, and a resume that spells it another way is the same render.
+// (Absolute first: weakly_canonical leaves a relative path as it is while none of it exists,
+// as an output folder the first render has yet to make.)
 std::string one_spelling(const std::string& path) {
     std::error_code ec;
-    const std::filesystem::path canonical = std::filesystem::weakly_canonical(path, ec);
+    const std::filesystem::path canonical = std::filesystem::weakly_canonical(std::filesystem::absolute(path, ec), ec);
     if (ec) return path;
     std::string text = canonical.lexically_normal().string();
     while (text.size() > 1 && text.back() == '/') text.pop_back();
@@ -196,6 +202,21 @@ std::string file_hash(const std::filesystem::path& path) {
     return text;
 }
 
+// A glTF URI as a file name: "%20" is a space (glTF 2.0 §3.3, as tinygltf reads it).
+std::string percent_decoded(const std::string& uri) {
+    std::string name;
+    for (size_t i = 0; i < uri.size(); ++i) {
+        if (uri[i] == '%' && i + 2 < uri.size() && std::isxdigit(static_cast<unsigned char>(uri[i + 1])) &&
+            std::isxdigit(static_cast<unsigned char>(uri[i + 2]))) {
+            name += char(std::stoi(uri.substr(i + 1, 2), nullptr, 16));
+            i += 2;
+        } else {
+            name += uri[i];
+        }
+    }
+    return name;
+}
+
 // A .gltf's external buffers and images (a .glb holds its own; a missing one failed the load).
 std::vector<std::filesystem::path> gltf_companions(const std::filesystem::path& model) {
     std::vector<std::filesystem::path> files;
@@ -208,7 +229,7 @@ std::vector<std::filesystem::path> gltf_companions(const std::filesystem::path& 
             for (const nlohmann::json& entry : *it)
                 if (entry.is_object() && entry.contains("uri") && entry["uri"].is_string()) {
                     const std::string uri = entry["uri"].get<std::string>();
-                    if (!uri.starts_with("data:")) files.push_back(model.parent_path() / uri);
+                    if (!uri.starts_with("data:")) files.push_back(model.parent_path() / percent_decoded(uri));
                 }
     return files;
 }
@@ -239,11 +260,15 @@ std::string input_files_signature(const SceneDesc& desc, const std::string& slam
         add(layer.slam);
         add(layer.ribbon);
     }
-    std::ranges::sort(files);
-    files.erase(std::unique(files.begin(), files.end()), files.end());
-    std::string signature;
-    for (const std::filesystem::path& file : files)
-        signature += "file " + one_spelling(file.string()) + "=" + file_hash(file) + "\n";
+    // Each file once, in one order, however the scene and the options spelled it.
+    std::vector<std::pair<std::string, std::filesystem::path>> spelled;
+    for (const std::filesystem::path& file : files) spelled.emplace_back(one_spelling(file.string()), file);
+    std::ranges::sort(spelled);
+    spelled.erase(std::unique(spelled.begin(), spelled.end(), [](const auto& a, const auto& b) { return a.first == b.first; }),
+                  spelled.end());
+    // The first line tells a state of this format from one saved before it recorded files.
+    std::string signature = std::string(kSignatureFormat) + "\n";
+    for (const auto& [name, file] : spelled) signature += "file " + name + "=" + file_hash(file) + "\n";
     return signature;
 }
 
@@ -260,6 +285,10 @@ std::string signature_difference(const std::string& saved, const std::string& no
         return by_name;
     };
     const std::map<std::string, std::string> then = lines(saved), here = lines(now);
+    const std::string format = std::string(kSignatureFormat).substr(0, std::string(kSignatureFormat).find('='));
+    if (here.contains(format) && !then.contains(format))
+        return "it was saved by an older linework, which did not record its input files: render the range again "
+               "without --resume";
     const auto value = [](std::string v) {
         while (!v.empty() && v.back() == ';') v.pop_back();
         return v == "given" ? std::string() : v;  // an option counted by its presence

@@ -36,12 +36,6 @@ FrameRange parse_frames(const std::string& text, const std::string& option) {
     return range;
 }
 
-std::string frame_name(int frame, const char* extension) {
-    char name[64];
-    std::snprintf(name, sizeof name, "frame_%04d.%s", frame, extension);
-    return name;
-}
-
 std::filesystem::path svg_path(const FrameFiles& files, int f) {
     std::filesystem::path svg(files.svg);
     if (files.sequence) svg = svg.parent_path() / (svg.stem().string() + "_" + frame_name(f, "svg").substr(6));

@@ -17,8 +17,6 @@ namespace lw::cli {
 // "A:B" (inclusive) or "N" (one frame); a usage error otherwise.
 // `option` names the flag in the message.
 [[nodiscard]] FrameRange parse_frames(const std::string& text, const std::string& option = "--frames");
-// frame_0007.png
-[[nodiscard]] std::string frame_name(int frame, const char* extension);
 
 struct FrameFiles {
     std::filesystem::path out_dir;

@@ -127,7 +127,7 @@ SceneDesc scene_from_options(const SceneOptions& o) {
     if (!o.curvature.empty()) desc.lines.params.curvature = curvature_fit(o.curvature);
     // Read here as well as when the first frame is drawn: a farm plans its tasks from these
     // options, and the session names a file it cannot read by the scene key it sets.
-    if (!o.slam.empty() && !std::filesystem::exists(o.slam)) throw Error(o.slam + ": no such SLAM file");
+    if (!o.slam.empty() && !std::filesystem::exists(o.slam)) throw Error("--slam: " + o.slam + ": no such SLAM file");
     if (!o.slam.empty()) {
         try {
             (void)read_slam(o.slam);
