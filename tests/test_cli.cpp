@@ -4,6 +4,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include <OpenImageIO/imageio.h>
+
 #include "io/image_io.h"
 #include "test_support.h"
 
@@ -61,6 +63,32 @@ TEST(Cli, RendersTheDefaultScene) {
     EXPECT_GT(fs::file_size(out / "frame_0000.png"), 500u);
     EXPECT_GT(fs::file_size(out / "frame_0000.exr"), 200u * 150u);  // 5 float channels, compressed
     EXPECT_TRUE(fs::exists(out / "frame_0023.png")) << "the default scene turns over 24 frames";
+}
+
+// --exr writes what compositing tools read: colour in linear light (premultiplied) and Z as
+// eye depth. It wrote the PNG's sRGB-encoded bytes as floats (a grey #808080 read 0.502, not
+// 0.216) and the depth buffer's [0, 1] values as Z.
+TEST(Cli, TheExrIsLinearWithEyeDepth) {
+    const fs::path out = test::temp_dir();
+    const auto r = run_linework("render " + quote(test::source_dir() / "scenes/spot.json") + " -o " + quote(out) +
+                                " --device cpu --size 96x72 --background '#808080' --exr");
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    auto in = OIIO::ImageInput::open((out / "frame_0000.exr").string());
+    ASSERT_TRUE(in);
+    const OIIO::ImageSpec spec = in->spec();
+    ASSERT_EQ(spec.nchannels, 5);
+    EXPECT_EQ(spec.channelnames, (std::vector<std::string>{"R", "G", "B", "A", "Z"}));
+    std::vector<float> pixels(size_t(spec.width) * spec.height * 5);
+    ASSERT_TRUE(in->read_image(0, 0, 0, 5, OIIO::TypeDesc::FLOAT, pixels.data()));
+    const auto at = [&](int x, int y, int c) { return pixels[(size_t(y) * spec.width + x) * 5 + c]; };
+    // The corner is background: sRGB 128/255 in linear light, opaque, nothing there.
+    EXPECT_NEAR(at(0, 0, 0), 0.2158f, 1e-3f);
+    EXPECT_EQ(at(0, 0, 3), 1.0f);
+    EXPECT_TRUE(std::isinf(at(0, 0, 4)));
+    // The centre is the cow, seen from spot.json's eye about 3.5 units from its middle.
+    const float z = at(48, 36, 4);
+    EXPECT_GT(z, 2.5f);
+    EXPECT_LT(z, 4.0f);
 }
 
 // The scene key coherence.policy draws what --param draws, and the flag overrides the key.

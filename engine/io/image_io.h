@@ -16,7 +16,12 @@ void write_png(const std::filesystem::path& path, const ImageRGBA8& image);
 // Reads any 8-bit image OpenImageIO knows as RGBA (grey and RGB are expanded, alpha = 255).
 [[nodiscard]] ImageRGBA8 read_image_rgba8(const std::filesystem::path& path);
 
-// Writes RGBA (converted from 8-bit, linear floats 0..1) plus a "Z" channel of depth.
-void write_exr(const std::filesystem::path& path, const ImageRGBA8& color, const std::vector<float>& depth);
+// Writes a frame as compositing tools read an EXR: RGBA in linear light, premultiplied (from
+// the 8-bit frame, whose colours are sRGB-encoded and premultiplied in that encoding), and a
+// "Z" channel of eye depth (distance along the view axis, scene units) from the depth
+// buffer's [0, 1] values under a perspective of planes `znear`, `zfar`; +inf where nothing
+// was drawn.
+void write_exr(const std::filesystem::path& path, const ImageRGBA8& color, const std::vector<float>& depth, float znear,
+               float zfar);
 
 }  // namespace lw

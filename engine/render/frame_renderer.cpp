@@ -332,7 +332,11 @@ Frame FrameRenderer::finish() {
     slot.depth_readback.invalidate(*ctx_);
     const std::span<const float> depth_pixels(static_cast<const float*>(slot.depth_readback.mapped()),
                                               size_t(target.width) * target.height);
-    if (in.outputs.depth) frame.image.depth.assign(depth_pixels.begin(), depth_pixels.end());
+    if (in.outputs.depth) {
+        frame.image.depth.assign(depth_pixels.begin(), depth_pixels.end());
+        frame.image.znear = in.camera.znear;
+        frame.image.zfar = in.camera.zfar;
+    }
 
     // Chaining and visibility on the CPU; then each line set's selection and parameterization.
     std::vector<std::vector<StrokeVertex>> strokes(slot.sets.size());

@@ -58,6 +58,7 @@ struct FrameTimings {
 struct FrameReadback {
     ImageRGBA8 color;
     std::vector<float> depth;  // window-space depth in [0, 1], row-major, 1 = background
+    float znear = 0.0f, zfar = 0.0f;  // the planes `depth` was drawn with (eye depth from it)
 };
 
 // What to read back besides what the line stages need.

@@ -64,7 +64,7 @@ void write_frame_files(const FrameFiles& files, const SceneSession& session, con
     const SceneDesc& desc = session.desc();
     if (files.exr)
         write_atomically(files.out_dir / frame_name(f, "exr"), [&](const std::filesystem::path& file) {
-            write_exr(file, frame.image.color, frame.image.depth);
+            write_exr(file, frame.image.color, frame.image.depth, frame.image.znear, frame.image.zfar);
         });
     if (!files.svg.empty())
         write_atomically(svg_path(files, f), [&](const std::filesystem::path& file) {
