@@ -213,6 +213,24 @@ TEST(LineSets, BadKeysNameThemselves) {
         {R"([{"name": "a", "style": {"geometry": [{"kind": "wobble"}]}}])", "line_sets[0].style.geometry[0].kind:"},
         {R"([{"name": "a", "coherence": {"policy": "x"}}])", "line_sets[0].coherence.policy: must be one of"},
         {R"([{"name": "a", "colour": 1}])", "line_sets[0].colour: unknown key"},
+        // Settings that drew nothing, or changed nothing, in silence.
+        {R"([{"name": "a", "style": {"width_modifiers": [{"input": "distance", "ramp": [[0, 1], [1, 0]]}]}}])",
+         "line_sets[0].style.width_modifiers[0].range: required for distance: [near, far]"},
+        {R"([{"name": "a", "style": {"color_modifiers": [{"input": "curvature", "ramp": [[0, [1, 0, 0]]]}]}}])",
+         "line_sets[0].style.color_modifiers[0].range: required for curvature"},
+        {R"([{"name": "a", "style": {"alpha_modifiers": [{"input": "along", "range": [0, 2], "ramp": [[0, 1]]}]}}])",
+         "line_sets[0].style.alpha_modifiers[0].range: along runs from 0"},
+        {R"([{"name": "a", "style": {"width_modifiers": [{"input": "along", "ramp": [[0, -1], [1, -1]]}]}}])",
+         "line_sets[0].style.width_modifiers[0].ramp: widths are 0 or more, got -1"},
+        {R"([{"name": "a", "style": {"alpha_modifiers": [{"input": "along", "ramp": [[0, 2]]}]}}])",
+         "line_sets[0].style.alpha_modifiers[0].ramp: alphas are in [0, 1], got 2"},
+        {R"([{"name": "a", "style": {"alpha": 0}}])", "line_sets[0].style.alpha: 0: the set would draw nothing"},
+        {R"([{"name": "a", "style": {"color_modifiers": [{"input": "along", "influence": 0, "ramp": [[0, [1, 0, 0]]]}]}}])",
+         "line_sets[0].style.color_modifiers[0].influence: 0: the modifier would change nothing"},
+        {R"([{"name": "a", "style": {"geometry": [{"kind": "tip_remove", "length": 3, "wavelength": 40}]}}])",
+         "line_sets[0].style.geometry[0].wavelength: is not a key of tip_remove (its keys: length)"},
+        {R"([{"name": "a", "style": {"geometry": [{"kind": "simplify", "seed": 3}]}}])",
+         "line_sets[0].style.geometry[0].seed: is not a key of simplify (its keys: tolerance)"},
     };
     for (const auto& [json, message] : cases) {
         try {

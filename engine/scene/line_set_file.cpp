@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <numeric>
 
 #include "core/text.h"
 #include "scene/object_reader.h"
@@ -26,8 +27,18 @@ std::vector<std::string> strings(ObjectReader& r, const std::string& key) {
     return out;
 }
 
-std::pair<float, float> range(ObjectReader& r) {
-    if (!r.has("range")) return {0.0f, 1.0f};
+// "range": required for distance (scene units) and curvature (1/px), whose values have no
+// scale a default could fit (a [0, 1] in scene units put every depth of a scene past it);
+// refused for along, which is 0 to 1 along each path already.
+std::pair<float, float> range(ObjectReader& r, ModifierInput input) {
+    if (input == ModifierInput::Along) {
+        if (r.has("range")) r.fail_key("range", "along runs from 0 at a path's start to 1 at its end: no range applies");
+        return {0.0f, 1.0f};
+    }
+    if (!r.has("range"))
+        r.fail_key("range", input == ModifierInput::Distance
+                                ? "required for distance: [near, far], the eye depths (scene units) mapped to 0 and 1"
+                                : "required for curvature: [min, max], the curvatures (1/px) mapped to 0 and 1");
     const json& v = r.at("range");
     if (!v.is_array() || v.size() != 2 || !v[0].is_number() || !v[1].is_number() ||
         !(v[1].get<double>() > v[0].get<double>()))
@@ -71,13 +82,21 @@ std::vector<ScalarModifier> scalar_modifiers(ObjectReader& style, const std::str
     for (size_t i = 0; i < list.size(); ++i) {
         ObjectReader r(list[i], style.path(key) + "[" + std::to_string(i) + "]", file);
         ScalarModifier m{.input = input(r)};
-        std::tie(m.range_min, m.range_max) = range(r);
+        std::tie(m.range_min, m.range_max) = range(r, m.input);
         if (!r.has("ramp")) r.fail_key("ramp", "required: [[x, value], ...]");
         m.ramp = scalar_ramp(r);
         if (r.has("blend")) {
             const std::string b = r.string_of("blend", {"multiply", "replace", "add"});
             m.blend = b == "multiply" ? ModifierBlend::Multiply : b == "replace" ? ModifierBlend::Replace : ModifierBlend::Add;
         }
+        // A width or alpha below 0 (or an alpha above 1) drew nothing, or clamped, in silence;
+        // `add` may take some away.
+        const bool alpha = key == "alpha_modifiers";
+        if (m.blend != ModifierBlend::Add)
+            for (const glm::vec2& point : m.ramp.points)
+                if (point.y < 0.0f || (alpha && point.y > 1.0f))
+                    r.fail_key("ramp", std::string(alpha ? "alphas are in [0, 1]" : "widths are 0 or more") + ", got " +
+                                           number_text(point.y) + " (blend add takes values below 0)");
         r.reject_unknown();
         out.push_back(std::move(m));
     }
@@ -91,7 +110,7 @@ std::vector<ColorModifier> color_modifiers(ObjectReader& style, const std::files
     for (size_t i = 0; i < list.size(); ++i) {
         ObjectReader r(list[i], style.path("color_modifiers") + "[" + std::to_string(i) + "]", file);
         ColorModifier m{.input = input(r)};
-        std::tie(m.range_min, m.range_max) = range(r);
+        std::tie(m.range_min, m.range_max) = range(r, m.input);
         if (!r.has("ramp")) r.fail_key("ramp", "required: [[x, [r, g, b]], ...]");
         if (!r.at("ramp").is_array()) r.fail_key("ramp", "expected [[x, [r, g, b]], ...]");
         for (const json& p : r.at("ramp")) {
@@ -108,6 +127,8 @@ std::vector<ColorModifier> color_modifiers(ObjectReader& style, const std::files
         }
         if (m.ramp.points.empty()) r.fail_key("ramp", "expected at least one point");
         if (r.has("influence")) m.influence = float(r.number("influence", 0.0, 1.0));
+        // (Not a no-op even so: a set with modifiers is drawn as strokes, not as plain lines.)
+        if (!(m.influence > 0.0f)) r.fail_key("influence", "0: the modifier would change nothing (leave it out)");
         r.reject_unknown();
         out.push_back(std::move(m));
     }
@@ -128,6 +149,17 @@ std::vector<GeometryModifier> geometry_modifiers(ObjectReader& style, const std:
                                    : k == "backbone_stretch"             ? Kind::BackboneStretch
                                    : k == "tip_remove"                   ? Kind::TipRemove
                                                                          : Kind::Simplify};
+        // Each kind's own keys (another kind's were taken and changed nothing).
+        const std::vector<std::string> own = m.kind == Kind::Sinus   ? std::vector<std::string>{"wavelength", "amplitude", "phase"}
+                                             : m.kind == Kind::Noise ? std::vector<std::string>{"wavelength", "amplitude", "seed"}
+                                             : m.kind == Kind::Simplify ? std::vector<std::string>{"tolerance"}
+                                                                        : std::vector<std::string>{"length"};
+        for (const char* key : {"wavelength", "amplitude", "phase", "seed", "length", "tolerance"})
+            if (r.has(key) && std::find(own.begin(), own.end(), key) == own.end())
+                r.fail_key(key, "is not a key of " + k + " (its keys: " +
+                                    std::accumulate(std::next(own.begin()), own.end(), own.front(),
+                                                    [](const std::string& a, const std::string& b) { return a + ", " + b; }) +
+                                    ")");
         if (r.has("wavelength")) m.wavelength_px = float(r.number("wavelength", 0.5, 1e5));
         if (r.has("amplitude")) m.amplitude_px = float(r.number("amplitude", 0.0, 1e4));
         if (r.has("phase")) m.phase = float(r.number("phase", -1e4, 1e4));
@@ -228,6 +260,7 @@ LineSetStyle read_style(ObjectReader& set, const std::filesystem::path& file) {
     ObjectReader r(set.at("style"), set.path("style"), file);
     if (r.has("color")) style.color = r.color("color");
     if (r.has("alpha")) style.alpha = float(r.number("alpha", 0.0, 1.0));
+    if (!(style.alpha > 0.0f)) r.fail_key("alpha", "0: the set would draw nothing");
     if (r.has("width")) style.width = float(r.number("width", 0.1, 256.0));
     if (r.has("fade")) style.fade = r.boolean("fade");
     if (r.has("slam")) style.slam = r.file_path("slam", "a SLAM file (.exr)");

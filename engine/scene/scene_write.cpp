@@ -39,11 +39,13 @@ json scalar_modifiers(const std::vector<ScalarModifier>& modifiers) {
     for (const ScalarModifier& m : modifiers) {
         json ramp = json::array();
         for (const glm::vec2& p : m.ramp.points) ramp.push_back({round6(p.x), round6(p.y)});
-        out.push_back({{"input", input_name(m.input)}, {"range", {round6(m.range_min), round6(m.range_max)}},
-                       {"ramp", ramp},
-                       {"blend", m.blend == ModifierBlend::Multiply ? "multiply"
-                                 : m.blend == ModifierBlend::Replace ? "replace"
-                                                                     : "add"}});
+        json entry{{"input", input_name(m.input)},
+                   {"ramp", ramp},
+                   {"blend", m.blend == ModifierBlend::Multiply ? "multiply"
+                             : m.blend == ModifierBlend::Replace ? "replace"
+                                                                 : "add"}};
+        if (m.input != ModifierInput::Along) entry["range"] = {round6(m.range_min), round6(m.range_max)};
+        out.push_back(std::move(entry));
     }
     return out;
 }
@@ -53,8 +55,9 @@ json color_modifiers(const std::vector<ColorModifier>& modifiers) {
     for (const ColorModifier& m : modifiers) {
         json ramp = json::array();
         for (const auto& [x, c] : m.ramp.points) ramp.push_back({round6(x), vec3(c)});
-        out.push_back({{"input", input_name(m.input)}, {"range", {round6(m.range_min), round6(m.range_max)}},
-                       {"ramp", ramp}, {"influence", round6(m.influence)}});
+        json entry{{"input", input_name(m.input)}, {"ramp", ramp}, {"influence", round6(m.influence)}};
+        if (m.input != ModifierInput::Along) entry["range"] = {round6(m.range_min), round6(m.range_max)};
+        out.push_back(std::move(entry));
     }
     return out;
 }
@@ -62,15 +65,22 @@ json color_modifiers(const std::vector<ColorModifier>& modifiers) {
 json geometry_modifiers(const std::vector<GeometryModifier>& modifiers) {
     using Kind = GeometryModifier::Kind;
     json out = json::array();
-    for (const GeometryModifier& m : modifiers)
-        out.push_back({{"kind", m.kind == Kind::Sinus             ? "sinus"
-                                : m.kind == Kind::Noise           ? "noise"
-                                : m.kind == Kind::BackboneStretch ? "backbone_stretch"
-                                : m.kind == Kind::TipRemove       ? "tip_remove"
-                                                                  : "simplify"},
-                       {"wavelength", round6(m.wavelength_px)}, {"amplitude", round6(m.amplitude_px)},
-                       {"phase", round6(m.phase)}, {"seed", m.seed}, {"length", round6(m.length_px)},
-                       {"tolerance", round6(m.tolerance_px)}});
+    for (const GeometryModifier& m : modifiers) {
+        // Each kind's own keys (the reader refuses another kind's).
+        switch (m.kind) {
+        case Kind::Sinus:
+            out.push_back({{"kind", "sinus"}, {"wavelength", round6(m.wavelength_px)},
+                           {"amplitude", round6(m.amplitude_px)}, {"phase", round6(m.phase)}});
+            break;
+        case Kind::Noise:
+            out.push_back({{"kind", "noise"}, {"wavelength", round6(m.wavelength_px)},
+                           {"amplitude", round6(m.amplitude_px)}, {"seed", m.seed}});
+            break;
+        case Kind::BackboneStretch: out.push_back({{"kind", "backbone_stretch"}, {"length", round6(m.length_px)}}); break;
+        case Kind::TipRemove: out.push_back({{"kind", "tip_remove"}, {"length", round6(m.length_px)}}); break;
+        case Kind::Simplify: out.push_back({{"kind", "simplify"}, {"tolerance", round6(m.tolerance_px)}}); break;
+        }
+    }
     return out;
 }
 
