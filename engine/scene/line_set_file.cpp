@@ -335,6 +335,10 @@ std::vector<LineSetDesc> read_line_sets(scene_detail::ObjectReader& scene, const
         if (r.has("enabled")) set.enabled = r.boolean("enabled");
         set.select = read_selection(r, file);
         set.style = read_style(r, file);
+        // Ribbons are synthesized along the visible runs only (the hidden ones were dropped).
+        if (!set.style.ribbon.empty() && set.select.selects_hidden())
+            r.fail_key("select", "a ribbon set draws visible lines only; select the hidden lines in a set of their "
+                                 "own, with a stroke style");
         set.coherence = read_coherence(r, file);
         r.reject_unknown();
         sets.push_back(std::move(set));
