@@ -115,6 +115,8 @@ void write_fixtures(const fs::path& tmp) {
     write(tmp / "slamtext.json", R"({"model": ")" + spot + R"(", "lines": {"silhouette": {"slam": "text.exr"}}})");
     write(tmp / "onepoint.json", R"({"points": [[1, 2]]})");
     write(tmp / "square.json", R"({"points": [[0, 0], [100, 0], [100, 100], [0, 100]], "closed": true})");
+    write(tmp / "offpage.json", R"({"points": [[-500, -500], [-300, -500]]})");
+    write(tmp / "doubled.json", R"({"points": [[50, 50], [300, 50]], "closed": true})");
     write(tmp / "afterz.svg", R"(<svg><path d="M0 0 L5 5 Z 3 4" stroke="black"/></svg>)");
     write(tmp / "unclosed.svg", "<svg><path d=\"M0 0 L5 5\">\n</svg>");
     write(tmp / "text.svg", "<svg><text x=\"1\" y=\"1\">words</text></svg>");

@@ -89,6 +89,14 @@ int run_ribbon(const RibbonOptions& o) {
     // one that cuts it a part.
     if (!o.size.empty()) flags_named({{"ribbon size", "--size"}}, [&] { check_ribbon_in_image(ribbon, size->x, size->y); });
     const glm::vec2 lo = ribbon.min_corner(), hi = ribbon.max_corner();
+    // Without --size the image is the curve's page (or the ribbon's extent from (0, 0)): a
+    // curve wholly at negative coordinates gave a 1x1 blank image.
+    if (o.size.empty() && !(hi.x > 0.0f && hi.y > 0.0f))
+        throw Error(o.curve + ": the ribbon (x " + std::to_string(int(std::floor(lo.x))) + " to " +
+                    std::to_string(int(std::ceil(hi.x))) + ", y " + std::to_string(int(std::floor(lo.y))) + " to " +
+                    std::to_string(int(std::ceil(hi.y))) +
+                    ") lies wholly left of or above the image, whose (0, 0) is the top-left corner: curves are in "
+                    "output pixels");
     if (lo.x < 0.0f || lo.y < 0.0f || hi.x > float(size->x) || hi.y > float(size->y))
         std::fprintf(stderr, "ribbon: warning: the ribbon (x %d to %d, y %d to %d) reaches past the %dx%d image and is cut there\n",
                      int(std::floor(lo.x)), int(std::ceil(hi.x)), int(std::floor(lo.y)), int(std::ceil(hi.y)), size->x,
@@ -146,6 +154,11 @@ int run_ribbon(const RibbonOptions& o) {
         std::printf("avoidance: %zu pieces (%s%s) lie where no ink can avoid the overlap and are left empty\n",
                     empty_count, empty.c_str(), empty_count > 8 ? ", …" : "");
     std::fflush(stdout);
+    if (empty_count == s.solution.rules.size())  // a blank image is no result
+        throw Error(o.curve + ": the ribbon drew nothing: every piece lies where the ribbon overlaps itself" +
+                    (o.avoid.empty() ? std::string(" (a curve that doubles back within the ribbon's width)")
+                                     : " or where " + o.avoid + " forbids ink") +
+                    "; nothing was written");
     if (cut_count > 0)
         std::fprintf(stderr,
                      "ribbon: warning: %zu of %zu pieces (%s%s) cannot hold the whole pattern where the curve bends "
