@@ -268,7 +268,11 @@ pyb::object ribbon(const pyb::object& exemplar_value, const pyb::object& curve_v
         cut += rule > ValidityRule::Empty ? 1 : 0;
         empty += rule == ValidityRule::Empty ? 1 : 0;
     }
-    if (empty > 0) {  // as the command prints it: with every piece empty the image is blank
+    if (empty == s.solution.rules.size())  // a blank image is no result, as for the command
+        throw pyb::value_error("curve: the ribbon drew nothing: every piece lies where the ribbon overlaps itself" +
+                               std::string(user.pixels.empty() ? " (a curve that doubles back within the ribbon's width)"
+                                                               : " or where `avoid` forbids ink"));
+    if (empty > 0) {  // as the command prints it
         const std::string warning = std::to_string(empty) + " of " + std::to_string(s.solution.rules.size()) +
                                     " pieces lie where no ink can avoid the overlap and are left empty "
                                     "(info['empty_pieces'])";

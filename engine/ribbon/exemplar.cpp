@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/error.h"
+#include "core/log.h"
 
 namespace lw {
 
@@ -21,6 +22,11 @@ Exemplar make_exemplar(const ImageRGBA8& image, const std::string& where) {
     }
     if (std::none_of(e.texels.begin(), e.texels.end(), texel_opaque))
         throw Error(where + ": no opaque pixel (alpha >= 128): the exemplar's alpha must outline the pattern");
+    // Allowed (a band of texture is a pattern too), but an image saved without alpha reads so,
+    // and its background then draws as part of the pattern.
+    if (std::all_of(e.texels.begin(), e.texels.end(), texel_opaque))
+        log_warning(where + ": opaque everywhere (an image without alpha reads so): the whole image, background "
+                            "and all, is the pattern; give the background alpha 0 to outline the pattern in it");
     return e;
 }
 

@@ -6,6 +6,7 @@ Run by CTest with PYTHONPATH=build/python, LW_SOURCE_DIR (the repository) and LW
 (the `linework` binary); small inputs so that the file takes a few seconds on lavapipe.
 """
 import json
+import math
 import os
 import struct
 import subprocess
@@ -265,6 +266,10 @@ def ribbon_inputs(tmp_path_factory):
     folder = tmp_path_factory.mktemp("ribbon")
     cli("ribbon-exemplar", "chain", "--size", "64x20", "-o", folder / "chain.png")
     (folder / "curve.json").write_text(json.dumps({"points": RIBBON_CURVE}))
+    # A loop for the closed options (RIBBON_CURVE closed doubles back on itself: no ink).
+    loop = [[60.0 + 40.0 * math.cos(2 * math.pi * k / 24), 30.0 + 18.0 * math.sin(2 * math.pi * k / 24)]
+            for k in range(24)]
+    (folder / "loop.json").write_text(json.dumps({"points": loop}))
     return folder
 
 
@@ -296,15 +301,23 @@ def test_ribbon_equals_the_command_lines_png(ribbon_inputs):
 def test_ribbon_options_equal_the_command_line(ribbon_inputs):
     # The C++ reference DP, stitching, a transparent background, a given size, the curve
     # and exemplar as files, closed.
-    cli("ribbon", ribbon_inputs / "chain.png", "--curve", ribbon_inputs / "curve.json", "-o",
+    cli("ribbon", ribbon_inputs / "chain.png", "--curve", ribbon_inputs / "loop.json", "-o",
         ribbon_inputs / "ref.png", "--reference", "--stitch", "--transparent", "--closed", "--size", "120x60",
         "--piece", 8, "--width", 16)
-    image, info = linework.ribbon(str(ribbon_inputs / "chain.png"), ribbon_inputs / "curve.json", reference=True,
+    image, info = linework.ribbon(str(ribbon_inputs / "chain.png"), ribbon_inputs / "loop.json", reference=True,
                                   stitch=True, transparent=True, closed=True, size=(120, 60), piece=8, width=16,
                                   return_info=True)
     np.testing.assert_array_equal(image, read_png(ribbon_inputs / "ref.png"))
-    assert image.shape == (60, 120, 4) and (image[..., 3] == 0).any()
+    assert image.shape == (60, 120, 4) and (image[..., 3] == 0).any() and (image[..., 3] > 0).any()
     assert info["closed"] and info["stitch_after"] <= info["stitch_before"]
+
+
+def test_ribbon_that_draws_nothing_is_an_error(ribbon_inputs):
+    # RIBBON_CURVE closed doubles back within the ribbon's width: every piece is empty, and a
+    # blank image is no result (the command refuses it too).
+    with pytest.raises(ValueError, match="^curve: the ribbon drew nothing"):
+        linework.ribbon(read_png(ribbon_inputs / "chain.png"), RIBBON_CURVE, closed=True, size=(120, 60), piece=8,
+                        width=16, reference=True)
 
 
 def test_ribbon_is_deterministic_per_seed(ribbon_inputs):
@@ -345,9 +358,14 @@ def test_ribbon_bad_input_gives_the_command_lines_message(ribbon_inputs):
     with pytest.raises(ValueError) as e:
         linework.ribbon(exemplar, RIBBON_CURVE, size=(5, 5))
     assert str(e.value) == message[2:]
-    # An avoidance map that forbids everything empties every piece: said, not only in info.
-    with pytest.warns(RuntimeWarning, match="pieces lie where no ink can avoid the overlap"):
+    # An avoidance map that forbids everything empties every piece: refused (a blank image);
+    # one that forbids half of the image empties some: said, not only in info.
+    with pytest.raises(ValueError, match="^curve: the ribbon drew nothing: .* or where `avoid` forbids ink$"):
         linework.ribbon(exemplar, RIBBON_CURVE, avoid=np.full((46, 104, 4), 255, np.uint8), reference=True)
+    half = np.zeros((46, 104, 4), np.uint8)
+    half[:, :52] = 255
+    with pytest.warns(RuntimeWarning, match="pieces lie where no ink can avoid the overlap"):
+        linework.ribbon(exemplar, RIBBON_CURVE, avoid=half, reference=True)
 
 
 # ---- Stroke patterns --------------------------------------------------------------------
