@@ -66,6 +66,7 @@ void write_fixtures(const fs::path& tmp) {
     write(tmp / "overflow.json", R"({"model": "x.glb", "fov": 1e400})");
     const std::string spot = (data / "models/spot/spot.glb").string();
     write(tmp / "unknownkey.json", R"({"model": ")" + spot + R"(", "wobble": 1})");
+    write(tmp / "samples8.json", R"({"model": ")" + spot + R"(", "samples": 8})");
     write(tmp / "badsize.json", R"({"model": ")" + spot + R"(", "size": [0, 10]})");
     write(tmp / "badsamples.json", R"({"model": ")" + spot + R"(", "samples": 2})");
     write(tmp / "setslam.json", R"({"model": ")" + spot + R"(", "line_sets": [{"name": "a", "style": {"slam": "nope.exr"}}]})");

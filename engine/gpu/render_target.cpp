@@ -24,10 +24,11 @@ VkSampleCountFlagBits sample_count_bit(const Context& ctx, uint32_t samples) {
     std::string list;
     for (const uint32_t n : {1u, 4u, 8u})
         if (supported & sample_count_bit_of(n)) list += (list.empty() ? "" : " or ") + std::to_string(n);
-    throw Error("samples " + std::to_string(samples) + ": " +
-                (bit == 0 ? std::string("expected 1, 4 or 8")
-                          : "the device " + std::string(ctx.properties().deviceName) + " renders " + list +
-                                " samples per pixel (scene key \"samples\", --samples)"));
+    // Named by the caller that knows where the count came from (a scene key, a flag).
+    throw ParameterError("samples", " " + std::to_string(samples) + ": " +
+                                        (bit == 0 ? std::string("expected 1, 4 or 8")
+                                                  : "the device " + std::string(ctx.properties().deviceName) +
+                                                        " renders " + list + " samples per pixel"));
 }
 
 RenderTarget::RenderTarget(const Context& ctx, uint32_t w, uint32_t h, VkFormat color_format, uint32_t sample_count)

@@ -291,6 +291,7 @@ int run_render(RenderOptions o) {
     const bool validation = validation_on(o.scene);
     Context ctx({.device = parse_device_choice(o.scene.device), .validation = validation,
                  .compute_site = parse_compute_site(o.scene.compute)});
+    check_samples_on_device(ctx, o.scene, desc);
     Timer load_timer;
     SessionOptions options = session_options(o.scene, desc);
     options.coherent = options.coherent || !o.dump_paths.empty();

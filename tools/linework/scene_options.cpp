@@ -7,6 +7,7 @@
 #include "commands.h"
 #include "cli_numbers.h"
 #include "core/color.h"
+#include "gpu/render_target.h"
 #include "io/slam_io.h"
 #include "render/line_sets.h"
 
@@ -175,5 +176,15 @@ SessionOptions session_options(const SceneOptions& o, const SceneDesc& desc) {
 }
 
 bool validation_on(const SceneOptions& o) { return o.validation || validation_from_environment(); }
+
+void check_samples_on_device(const Context& ctx, const SceneOptions& o, const SceneDesc& desc) {
+    try {
+        (void)sample_count_bit(ctx, surface_samples(desc.style));
+    } catch (const ParameterError& e) {
+        if (o.samples > 0) throw Error("--samples" + e.rest());  // a count the flag takes, but not this device
+        if (desc.style.samples > 0 && !desc.source.empty()) throw Error(desc.source.string() + ": samples:" + e.rest());
+        throw Error("samples per pixel (the default)" + e.rest());
+    }
+}
 
 }  // namespace lw::cli

@@ -47,6 +47,10 @@ void add_scene_options(CLI::App* cmd, SceneOptions& o, bool offline);
 // refused as the flags that style lines on a render without lines are. (The viewer takes
 // them: its panel can turn the types on.)
 void check_flags_shape_drawn_lines(const SceneOptions& o, const LinesDesc& lines);
+
+// The surface's samples per pixel against the device, before the first frame, named where
+// the count came from: --samples, the scene's "samples" key, or the default.
+void check_samples_on_device(const Context& ctx, const SceneOptions& o, const SceneDesc& desc);
 // Policy, splat radius, RANSAC inlier distance, fragment length and κ.
 [[nodiscard]] SessionOptions session_options(const SceneOptions& o, const SceneDesc& desc);
 [[nodiscard]] bool validation_on(const SceneOptions& o);

@@ -72,7 +72,8 @@ namespace {
 // The surface's samples per pixel: the scene's or --samples, else 4, but 1 on a CPU device,
 // where 4 cost about 2.2× a frame (docs/BENCHMARKS.md "Antialiasing") and the viewer is for
 // moving the camera. A view saved then says "samples": 1, so that it renders as shown.
-uint32_t viewer_samples(const SurfaceStyle& style, const Context& ctx) {
+uint32_t viewer_samples(const SceneDesc& desc, const SceneOptions& o, const Context& ctx) {
+    const SurfaceStyle& style = desc.style;
     if (style.samples == 0 && ctx.info().type == VK_PHYSICAL_DEVICE_TYPE_CPU) {
         std::printf("surface: 1 sample per pixel on a CPU device (4 would cost about 2.2x a frame; --samples 4, "
                     "the scene's \"samples\" or the panel)\n");
@@ -80,7 +81,7 @@ uint32_t viewer_samples(const SurfaceStyle& style, const Context& ctx) {
     }
     // Checked now, as render does before its first frame: a count the device cannot draw
     // was refused only when the first frame was made (a script that quit before it, never).
-    (void)sample_count_bit(ctx, surface_samples(style));
+    check_samples_on_device(ctx, o, desc);
     std::printf("surface: %u samples per pixel\n", surface_samples(style));
     return style.samples;
 }
@@ -104,7 +105,7 @@ int run_view(const ViewOptions& o) {
                  .compute_site = parse_compute_site(o.scene.compute)});
     std::printf("device: %s\n", ctx.info().describe().c_str());
     SceneDesc styled = desc;
-    styled.style.samples = viewer_samples(desc.style, ctx);
+    styled.style.samples = viewer_samples(desc, o.scene, ctx);
     const bool fixed_step = player || o.benchmark > 0;  // scripted runs see the same frames every time
     // Everything that records or owns GPU work lives in this scope, so that the validation
     // layer has spoken about its destruction before the exit status is decided.
