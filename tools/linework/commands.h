@@ -41,7 +41,8 @@ Runner add_view_command(CLI::App& app);
 // "1,2.5,-3" -> vec3; throws a usage error naming `option`.
 glm::vec3 parse_vec3(const std::string& text, const std::string& option);
 // "1920x1080" -> (1920, 1080); throws a usage error naming `option`.
-glm::ivec2 parse_size(const std::string& text, const std::string& option);
+glm::ivec2 parse_size(const std::string& text, const std::string& option, glm::ivec2 smallest = {1, 1},
+                      glm::ivec2 largest = {16384, 16384});
 // --slam FILE --stroke-width W: silhouettes and suggestive contours (the shorthand's types,
 // or every line set selecting either) as SLAM strokes of width W, tapered over 2W
 // (replacing any ribbon style).

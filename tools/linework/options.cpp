@@ -95,10 +95,16 @@ glm::vec3 parse_vec3(const std::string& text, const std::string& option) {
         ++i;
     }
     if (i != 3) throw usage_error(option + ": expected three numbers x,y,z, got \"" + text + "\"");
+    // Past this a squared length overflows a float, and the camera's directions come out NaN
+    // ("up is parallel to the view direction", said of an eye at 1e30).
+    constexpr float kLargest = 1e18f;
+    for (int k = 0; k < 3; ++k)
+        if (!(std::fabs(v[k]) <= kLargest))
+            throw usage_error(option + ": " + text + ": each coordinate must be within ±1e18");
     return v;
 }
 
-glm::ivec2 parse_size(const std::string& text, const std::string& option) {
+glm::ivec2 parse_size(const std::string& text, const std::string& option, glm::ivec2 smallest, glm::ivec2 largest) {
     const auto x = text.find('x');
     int w = 0, h = 0;
     try {
@@ -110,8 +116,10 @@ glm::ivec2 parse_size(const std::string& text, const std::string& option) {
     } catch (...) {
         throw usage_error(option + ": expected WIDTHxHEIGHT such as 1920x1080, got \"" + text + "\"");
     }
-    if (w < 1 || h < 1 || w > 16384 || h > 16384)
-        throw usage_error(option + ": width and height must be between 1 and 16384, got \"" + text + "\"");
+    if (w < smallest.x || h < smallest.y || w > largest.x || h > largest.y)
+        throw usage_error(option + ": must be between " + std::to_string(smallest.x) + "x" + std::to_string(smallest.y) +
+                          " and " + std::to_string(largest.x) + "x" + std::to_string(largest.y) + ", got \"" + text +
+                          "\"");
     return {w, h};
 }
 

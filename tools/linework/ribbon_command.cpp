@@ -81,6 +81,10 @@ int run_ribbon(const RibbonOptions& o) {
     desc.seed = o.seed;
     desc.stitch = o.stitch;
     desc.site = site;
+    // Named by its flag, not through the curve whose ribbon it makes too wide for any image.
+    if (desc.params.width > 16384.0f)
+        throw usage_error(std::string(o.width ? "--width" : "--scale") + ": " + number_text(desc.params.width) +
+                          " px: a ribbon wider than the largest image (16384 px)");
     const Ribbon ribbon = build_ribbon(curve, desc.params);
     if (!size) size = default_ribbon_size(ribbon, curve_points.page, o.curve);
     desc.width = size->x;
@@ -182,7 +186,7 @@ struct ExemplarOptions {
 };
 
 int run_exemplar(const ExemplarOptions& o) {
-    const glm::ivec2 size = parse_size(o.size, "--size");
+    const glm::ivec2 size = parse_size(o.size, "--size", {16, 16}, {4096, 4096});  // generate_exemplar's bounds
     const ImageRGBA8 image =
         flags_named({{"exemplar size", "--size"}}, [&] { return generate_exemplar(o.name, size.x, size.y, o.seed); });
     write_png(o.output, image);
