@@ -14,7 +14,9 @@
 
 #include "commands.h"
 #include "cli_numbers.h"
+#include "core/log.h"
 #include "core/random.h"
+#include "render/line_sets.h"
 
 namespace lw::cli {
 
@@ -120,6 +122,16 @@ void apply_frame_overrides(const RenderOptions& o, SceneDesc& desc) {
     if (!o.svg.empty() && desc.models.empty())
         throw usage_error("--svg writes a model's lines, and " + o.scene.input +
                           " has layers only (layers are not written as SVG; their stroke files are SVG already)");
+    if (!o.svg.empty()) {
+        // A ribbon is an image: its set is in the SVG as hidden centre lines only, and a scene
+        // of ribbons alone gave a page that draws nothing, in silence.
+        std::string ribbons;
+        for (const LineSetDesc& set : effective_line_sets(desc.lines))
+            if (set.enabled && !set.style.ribbon.empty()) ribbons += (ribbons.empty() ? "" : ", ") + set.name;
+        if (!ribbons.empty())
+            log_warning("--svg: the ribbon sets (" + ribbons + ") are written as centre lines only, in hidden groups "
+                        "NAME-centerlines: a ribbon is an image, not strokes");
+    }
     if (o.orbit) desc.camera_path = CameraPath{.kind = CameraPath::Kind::Orbit, .orbit = {.degrees = *o.orbit}};
 }
 
