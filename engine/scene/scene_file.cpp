@@ -176,6 +176,8 @@ LineStyle read_line_type(ObjectReader& lines, LineType type, const std::filesyst
         r.fail_key("ribbon_scale", "sizes a ribbon's exemplar, and this type has no \"ribbon\"");
     if (!style.ribbon.empty() && !style.slam.empty())
         r.fail_key("ribbon", "a line type is drawn with a SLAM or a ribbon, not both");
+    if (!style.ribbon.empty() && r.has("taper"))  // as a ribbon set's stroke keys are said
+        r.warn("taper: a ribbon is drawn along the paths at its width, and a taper changes nothing there");
     if (float* threshold = line_type_threshold(p, type); threshold && r.has("threshold")) {
         const float value = static_cast<float>(r.number("threshold", 0.0, 10.0));
         // Ridges and valleys share rtsc's one rv_thresh.
