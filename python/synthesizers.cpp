@@ -218,7 +218,8 @@ pyb::object ribbon(const pyb::object& exemplar_value, const pyb::object& curve_v
 
     std::string exemplar_where, curve_where;
     const ImageRGBA8 image = exemplar_argument(exemplar_value, &exemplar_where);
-    const Exemplar exemplar = reading_input([&] { return make_exemplar(image, exemplar_where); });
+    const Exemplar exemplar =
+        with_python_warnings([&] { return reading_input([&] { return make_exemplar(image, exemplar_where); }); });
     Curve2D points = curve_argument(curve_value, "curve", &curve_where);
     points.closed = points.closed || closed;
     const ArclengthCurve curve = naming_input(curve_where, [&] { return ArclengthCurve(points); });

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 
 #include <OpenImageIO/imageio.h>
 
@@ -66,8 +67,8 @@ TEST(Cli, RendersTheDefaultScene) {
 }
 
 // --exr writes what compositing tools read: colour in linear light (premultiplied) and Z as
-// eye depth. It wrote the PNG's sRGB-encoded bytes as floats (a grey #808080 read 0.502, not
-// 0.216) and the depth buffer's [0, 1] values as Z.
+// eye depth (the largest float where nothing was drawn). It wrote the PNG's sRGB-encoded
+// bytes as floats (a grey #808080 read 0.502, not 0.216) and the depth buffer's [0, 1] as Z.
 TEST(Cli, TheExrIsLinearWithEyeDepth) {
     const fs::path out = test::temp_dir();
     const auto r = run_linework("render " + quote(test::source_dir() / "scenes/spot.json") + " -o " + quote(out) +
@@ -84,7 +85,7 @@ TEST(Cli, TheExrIsLinearWithEyeDepth) {
     // The corner is background: sRGB 128/255 in linear light, opaque, nothing there.
     EXPECT_NEAR(at(0, 0, 0), 0.2158f, 1e-3f);
     EXPECT_EQ(at(0, 0, 3), 1.0f);
-    EXPECT_TRUE(std::isinf(at(0, 0, 4)));
+    EXPECT_EQ(at(0, 0, 4), std::numeric_limits<float>::max());
     // The centre is the cow, seen from spot.json's eye about 3.5 units from its middle.
     const float z = at(48, 36, 4);
     EXPECT_GT(z, 2.5f);

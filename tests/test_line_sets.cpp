@@ -222,9 +222,10 @@ TEST(LineSets, BadKeysNameThemselves) {
          "line_sets[0].style.alpha_modifiers[0].range: along runs from 0"},
         {R"([{"name": "a", "style": {"width_modifiers": [{"input": "along", "ramp": [[0, -1], [1, -1]]}]}}])",
          "line_sets[0].style.width_modifiers[0].ramp: widths are 0 or more, got -1"},
-        {R"([{"name": "a", "style": {"alpha_modifiers": [{"input": "along", "ramp": [[0, 2]]}]}}])",
-         "line_sets[0].style.alpha_modifiers[0].ramp: alphas are in [0, 1], got 2"},
-        {R"([{"name": "a", "style": {"alpha": 0}}])", "line_sets[0].style.alpha: 0: the set would draw nothing"},
+        {R"([{"name": "a", "style": {"alpha_modifiers": [{"input": "along", "blend": "replace", "ramp": [[0, 2]]}]}}])",
+         "line_sets[0].style.alpha_modifiers[0].ramp: an alpha that replaces is in [0, 1], got 2"},
+        {R"([{"name": "a", "style": {"alpha": 0}}])",
+         "line_sets[0].style.alpha: 0 and no alpha_modifiers: the set would draw nothing"},
         {R"([{"name": "a", "select": {"visibility": "any"}, "style": {"ribbon": "chain.png"}}])",
          "line_sets[0].select: a ribbon set draws visible lines only"},
         {R"([{"name": "a", "select": {"qi": [1, 3]}, "style": {"ribbon": "chain.png"}}])",
@@ -236,6 +237,17 @@ TEST(LineSets, BadKeysNameThemselves) {
         {R"([{"name": "a", "style": {"geometry": [{"kind": "simplify", "seed": 3}]}}])",
          "line_sets[0].style.geometry[0].seed: is not a key of simplify (its keys: tolerance)"},
     };
+    // What is still taken: a fade-in from alpha 0, an alpha scaled up by multiply, and what
+    // views saved before these rules wrote (a [0, 1] range on along, another geometry kind's
+    // keys at their defaults).
+    for (const char* json :
+         {R"([{"name": "a", "style": {"alpha": 0, "alpha_modifiers": [{"input": "along", "blend": "add", "ramp": [[0, 0], [1, 1]]}]}}])",
+          R"([{"name": "a", "style": {"alpha": 0.4, "alpha_modifiers": [{"input": "along", "ramp": [[0, 2.5]]}]}}])",
+          R"([{"name": "a", "style": {"width_modifiers": [{"input": "along", "range": [0, 1], "ramp": [[0, 1]]}]}}])",
+          R"([{"name": "a", "style": {"geometry": [{"kind": "tip_remove", "length": 3, "wavelength": 32, "amplitude": 2,
+                                                    "phase": 0, "seed": 1, "tolerance": 1}]}}])"})
+        EXPECT_NO_THROW((void)parse_scene_json(std::string("{\"model\": \"m.glb\", \"line_sets\": ") + json + "}", "s.json"))
+            << json;
     for (const auto& [json, message] : cases) {
         try {
             (void)parse_scene_json(std::string("{\"model\": \"m.glb\", \"line_sets\": ") + json + "}", "s.json");

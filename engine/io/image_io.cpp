@@ -1,7 +1,6 @@
 #include "io/image_io.h"
 
 #include <algorithm>
-#include <limits>
 
 #include <OpenImageIO/imageio.h>
 
@@ -77,10 +76,9 @@ ImageRGBA8 read_image_rgba8(const std::filesystem::path& path) {
     return image;
 }
 
-void write_exr(const std::filesystem::path& path, const ImageRGBA8& color, const std::vector<float>& depth, float znear,
-               float zfar) {
+void write_exr(const std::filesystem::path& path, const ImageRGBA8& color, const std::vector<float>& z) {
     const size_t pixels = size_t(color.width) * color.height;
-    if (depth.size() != pixels) throw Error(path.string() + ": depth size does not match the image");
+    if (z.size() != pixels) throw Error(path.string() + ": depth size does not match the image");
     std::vector<float> data(pixels * 5);
     for (size_t p = 0; p < pixels; ++p) {
         const float alpha = color.pixels[p * 4 + 3] / 255.0f;
@@ -90,9 +88,7 @@ void write_exr(const std::filesystem::path& path, const ImageRGBA8& color, const
             data[p * 5 + c] = srgb_to_linear(straight) * alpha;
         }
         data[p * 5 + 3] = alpha;
-        // glm::perspective (depth zero to one): d = f (z − n) / ((f − n) z), so z = f n / (f − d (f − n)).
-        const float d = depth[p];
-        data[p * 5 + 4] = d >= 1.0f ? std::numeric_limits<float>::infinity() : zfar * znear / (zfar - d * (zfar - znear));
+        data[p * 5 + 4] = z[p];
     }
     OIIO::ImageSpec spec(color.width, color.height, 5, OIIO::TypeDesc::FLOAT);
     spec.channelnames = {"R", "G", "B", "A", "Z"};

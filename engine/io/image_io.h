@@ -18,10 +18,7 @@ void write_png(const std::filesystem::path& path, const ImageRGBA8& image);
 
 // Writes a frame as compositing tools read an EXR: RGBA in linear light, premultiplied (from
 // the 8-bit frame, whose colours are sRGB-encoded and premultiplied in that encoding), and a
-// "Z" channel of eye depth (distance along the view axis, scene units) from the depth
-// buffer's [0, 1] values under a perspective of planes `znear`, `zfar`; +inf where nothing
-// was drawn.
-void write_exr(const std::filesystem::path& path, const ImageRGBA8& color, const std::vector<float>& depth, float znear,
-               float zfar);
+// "Z" channel as given (render writes eye depth).
+void write_exr(const std::filesystem::path& path, const ImageRGBA8& color, const std::vector<float>& z);
 
 }  // namespace lw

@@ -33,7 +33,14 @@ glm::vec2 Ribbon::max_corner() const {
 }
 
 glm::ivec2 default_ribbon_size(const Ribbon& ribbon, glm::vec2 page, const std::string& curve_file) {
-    const glm::vec2 hi = ribbon.max_corner();
+    const glm::vec2 lo = ribbon.min_corner(), hi = ribbon.max_corner();
+    // The image starts at (0, 0): a ribbon wholly at negative coordinates gave a 1x1 blank one.
+    if (!(hi.x > 0.0f && hi.y > 0.0f))
+        throw Error(curve_file + ": the ribbon (x " + std::to_string(int(std::floor(lo.x))) + " to " +
+                    std::to_string(int(std::ceil(hi.x))) + ", y " + std::to_string(int(std::floor(lo.y))) + " to " +
+                    std::to_string(int(std::ceil(hi.y))) +
+                    ") lies wholly left of or above the image, whose (0, 0) is the top-left corner: curves are in "
+                    "output pixels");
     const glm::ivec2 size = glm::max(glm::ivec2(std::max(1, int(std::ceil(hi.x)) + 2), std::max(1, int(std::ceil(hi.y)) + 2)),
                                      glm::ivec2(int(std::ceil(page.x)), int(std::ceil(page.y))));
     if (size.x > 16384 || size.y > 16384)
@@ -60,6 +67,9 @@ void check_ribbon_in_image(const Ribbon& ribbon, int width, int height) {
 Ribbon build_ribbon(const ArclengthCurve& curve, const RibbonParams& params) {
     if (!(params.width > 0.0f) || !std::isfinite(params.width))
         throw ParameterError("ribbon width", ": the ribbon width b must be a positive number of pixels");
+    if (params.width > 16384.0f)
+        throw ParameterError("ribbon width", " " + std::to_string(int(params.width)) +
+                                                 ": a ribbon wider than the largest image (16384 px)");
     if (!(params.piece > 0.0f) || !std::isfinite(params.piece))
         throw ParameterError("ribbon piece", ": the piece length δ must be a positive number of pixels");
     if (!(params.scale > 0.0f) || !std::isfinite(params.scale))

@@ -32,7 +32,12 @@ std::vector<std::string> strings(ObjectReader& r, const std::string& key) {
 // refused for along, which is 0 to 1 along each path already.
 std::pair<float, float> range(ObjectReader& r, ModifierInput input) {
     if (input == ModifierInput::Along) {
-        if (r.has("range")) r.fail_key("range", "along runs from 0 at a path's start to 1 at its end: no range applies");
+        // [0, 1] is what views saved before this rule wrote for every along modifier.
+        if (r.has("range")) {
+            const json& v = r.at("range");
+            if (!(v.is_array() && v.size() == 2 && v[0] == 0 && v[1] == 1))
+                r.fail_key("range", "along runs from 0 at a path's start to 1 at its end: no range applies");
+        }
         return {0.0f, 1.0f};
     }
     if (!r.has("range"))
@@ -89,14 +94,17 @@ std::vector<ScalarModifier> scalar_modifiers(ObjectReader& style, const std::str
             const std::string b = r.string_of("blend", {"multiply", "replace", "add"});
             m.blend = b == "multiply" ? ModifierBlend::Multiply : b == "replace" ? ModifierBlend::Replace : ModifierBlend::Add;
         }
-        // A width or alpha below 0 (or an alpha above 1) drew nothing, or clamped, in silence;
-        // `add` may take some away.
+        // A factor or value below 0 drew nothing, and an alpha replaced by more than 1 was
+        // clamped, in silence. `add` may take some away; `multiply` may scale an alpha up (the
+        // result is clamped once, after every modifier).
         const bool alpha = key == "alpha_modifiers";
-        if (m.blend != ModifierBlend::Add)
-            for (const glm::vec2& point : m.ramp.points)
-                if (point.y < 0.0f || (alpha && point.y > 1.0f))
-                    r.fail_key("ramp", std::string(alpha ? "alphas are in [0, 1]" : "widths are 0 or more") + ", got " +
-                                           number_text(point.y) + " (blend add takes values below 0)");
+        for (const glm::vec2& point : m.ramp.points) {
+            if (m.blend != ModifierBlend::Add && point.y < 0.0f)
+                r.fail_key("ramp", std::string(alpha ? "alphas" : "widths") + " are 0 or more, got " +
+                                       number_text(point.y) + " (blend add takes values below 0)");
+            if (alpha && m.blend == ModifierBlend::Replace && point.y > 1.0f)
+                r.fail_key("ramp", "an alpha that replaces is in [0, 1], got " + number_text(point.y));
+        }
         r.reject_unknown();
         out.push_back(std::move(m));
     }
@@ -154,8 +162,14 @@ std::vector<GeometryModifier> geometry_modifiers(ObjectReader& style, const std:
                                              : m.kind == Kind::Noise ? std::vector<std::string>{"wavelength", "amplitude", "seed"}
                                              : m.kind == Kind::Simplify ? std::vector<std::string>{"tolerance"}
                                                                         : std::vector<std::string>{"length"};
-        for (const char* key : {"wavelength", "amplitude", "phase", "seed", "length", "tolerance"})
-            if (r.has(key) && std::find(own.begin(), own.end(), key) == own.end())
+        // (Another kind's key at its default is what views saved before this rule wrote.)
+        const GeometryModifier defaults;
+        const std::pair<const char*, double> others[] = {
+            {"wavelength", defaults.wavelength_px}, {"amplitude", defaults.amplitude_px}, {"phase", defaults.phase},
+            {"seed", double(defaults.seed)},        {"length", defaults.length_px},       {"tolerance", defaults.tolerance_px}};
+        for (const auto& [key, fallback] : others)
+            if (r.has(key) && std::find(own.begin(), own.end(), key) == own.end() &&
+                !(r.at(key).is_number() && r.at(key).get<double>() == fallback))
                 r.fail_key(key, "is not a key of " + k + " (its keys: " +
                                     std::accumulate(std::next(own.begin()), own.end(), own.front(),
                                                     [](const std::string& a, const std::string& b) { return a + ", " + b; }) +
@@ -260,7 +274,6 @@ LineSetStyle read_style(ObjectReader& set, const std::filesystem::path& file) {
     ObjectReader r(set.at("style"), set.path("style"), file);
     if (r.has("color")) style.color = r.color("color");
     if (r.has("alpha")) style.alpha = float(r.number("alpha", 0.0, 1.0));
-    if (!(style.alpha > 0.0f)) r.fail_key("alpha", "0: the set would draw nothing");
     if (r.has("width")) style.width = float(r.number("width", 0.1, 256.0));
     if (r.has("fade")) style.fade = r.boolean("fade");
     if (r.has("slam")) style.slam = r.file_path("slam", "a SLAM file (.exr)");
@@ -275,6 +288,10 @@ LineSetStyle read_style(ObjectReader& set, const std::filesystem::path& file) {
     if (r.has("alpha_modifiers")) style.alpha_modifiers = scalar_modifiers(r, "alpha_modifiers", file);
     if (r.has("color_modifiers")) style.color_modifiers = color_modifiers(r, file);
     if (r.has("geometry")) style.geometry = geometry_modifiers(r, file);
+    // As the renderer decides (it skips such a set): alpha 0 with no alpha modifier draws
+    // nothing; with one (a fade-in) it may, and a ribbon does not read it.
+    if (!(style.alpha > 0.0f) && style.alpha_modifiers.empty() && style.ribbon.empty())
+        r.fail_key("alpha", "0 and no alpha_modifiers: the set would draw nothing");
     if (r.has("chaining")) {
         ObjectReader c(r.at("chaining"), r.path("chaining"), file);
         if (c.has("split_angle")) style.chaining.split_angle_deg = float(c.number("split_angle", 0.0, 180.0));

@@ -369,6 +369,11 @@ int main(int argc, char** argv) {
         if (pattern_cmd->parsed()) return lw::bench::run_pattern_bench(pattern);
         if (hatch_cmd->parsed()) return lw::bench::run_hatch_bench(hatch);
         if (slam_cmd->parsed()) return lw::bench::run_slam_bench(slam);
+    } catch (const lw::ParameterError& e) {
+        // The engine names what it knows ("samples 8: …"); here that is a flag.
+        const std::string name = e.name() == "samples" ? "--samples" : e.name();
+        std::fprintf(stderr, "linework-bench: error: %s%s\n", name.c_str(), e.rest().c_str());
+        return 1;
     } catch (const lw::Error& e) {
         std::fprintf(stderr, "linework-bench: error: %s\n", e.what());
         return e.exit_code();

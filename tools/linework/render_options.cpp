@@ -28,7 +28,7 @@ void add_frame_options(CLI::App* cmd, RenderOptions& o) {
     cmd->add_option("--fov", o.fov, "Vertical field of view in degrees (default 40)");
     cmd->add_option("--shading", o.shading, "Surface shading")->check(CLI::IsMember({"flat", "toon", "unlit", "none"}));
     cmd->add_flag("--exr", o.exr, "Also write OUT/frame_0000.exr: RGBA in linear light, premultiplied, and Z, the eye "
-                                  "depth in scene units (inf where nothing was drawn)");
+                                  "depth in scene units (the largest float where nothing was drawn)");
     cmd->add_flag("--lines-only", o.lines_only, "Draw the lines over the background, without shading");
     cmd->add_flag("--no-lines", o.no_lines, "Shading only, no feature lines");
     cmd->add_flag("--no-materials", o.no_materials,

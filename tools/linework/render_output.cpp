@@ -1,14 +1,15 @@
 #include "render_output.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
+#include <limits>
 
 #include "commands.h"
 #include "io/image_io.h"
+#include "lines/visibility.h"
 #include "render_options.h"
 #include "render_state.h"
-
-#include <cstdio>
 
 namespace lw::cli {
 
@@ -64,7 +65,13 @@ void write_frame_files(const FrameFiles& files, const SceneSession& session, con
     const SceneDesc& desc = session.desc();
     if (files.exr)
         write_atomically(files.out_dir / frame_name(f, "exr"), [&](const std::filesystem::path& file) {
-            write_exr(file, frame.image.color, frame.image.depth, frame.image.znear, frame.image.zfar);
+            // Z as compositing reads it: eye depth (scene units), the largest float where nothing
+            // was drawn (an infinity upsets some compositors' depth filters).
+            std::vector<float> z(frame.image.depth.size());
+            for (size_t p = 0; p < z.size(); ++p)
+                z[p] = std::min(linear_depth(frame.image.depth[p], frame.image.znear, frame.image.zfar),
+                                std::numeric_limits<float>::max());
+            write_exr(file, frame.image.color, z);
         });
     if (!files.svg.empty())
         write_atomically(svg_path(files, f), [&](const std::filesystem::path& file) {

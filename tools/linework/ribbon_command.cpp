@@ -93,14 +93,6 @@ int run_ribbon(const RibbonOptions& o) {
     // one that cuts it a part.
     if (!o.size.empty()) flags_named({{"ribbon size", "--size"}}, [&] { check_ribbon_in_image(ribbon, size->x, size->y); });
     const glm::vec2 lo = ribbon.min_corner(), hi = ribbon.max_corner();
-    // Without --size the image is the curve's page (or the ribbon's extent from (0, 0)): a
-    // curve wholly at negative coordinates gave a 1x1 blank image.
-    if (o.size.empty() && !(hi.x > 0.0f && hi.y > 0.0f))
-        throw Error(o.curve + ": the ribbon (x " + std::to_string(int(std::floor(lo.x))) + " to " +
-                    std::to_string(int(std::ceil(hi.x))) + ", y " + std::to_string(int(std::floor(lo.y))) + " to " +
-                    std::to_string(int(std::ceil(hi.y))) +
-                    ") lies wholly left of or above the image, whose (0, 0) is the top-left corner: curves are in "
-                    "output pixels");
     if (lo.x < 0.0f || lo.y < 0.0f || hi.x > float(size->x) || hi.y > float(size->y))
         std::fprintf(stderr, "ribbon: warning: the ribbon (x %d to %d, y %d to %d) reaches past the %dx%d image and is cut there\n",
                      int(std::floor(lo.x)), int(std::ceil(hi.x)), int(std::floor(lo.y)), int(std::ceil(hi.y)), size->x,
