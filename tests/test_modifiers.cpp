@@ -427,6 +427,27 @@ TEST(Attributes, CurvatureAndDistanceInputs) {
     EXPECT_EQ(a.alpha.back(), 1.0f);                       // depth 6 > 5
 }
 
+// A dense mesh's screen path wiggles at the sample scale: a straight run of samples 2 px apart,
+// each 0.3 px off the line to alternate sides, turned by about 0.58 rad between neighbouring
+// segments, read as a curvature of 0.28 / px (a width modifier drew it as barbed wire). The
+// turn is measured over ±4 px, where the wiggle averages out; a circle still reads 1/r.
+TEST(Attributes, CurvatureIsNotTheSampleScaleWiggle) {
+    std::vector<glm::vec2> line;
+    for (int k = 0; k <= 40; ++k) line.push_back({float(2 * k), 20.0f + (k % 2 ? 0.3f : -0.3f)});
+    LineSetStyle style = plain_style(1.0f, Cap::Butt);
+    style.width_modifiers = {{.input = ModifierInput::Curvature, .range_min = 0.0f, .range_max = 0.1f,
+                              .ramp = {{{0.0f, 0.0f}, {1.0f, 10.0f}}}, .blend = ModifierBlend::Replace}};
+    const StrokeAttributes a = evaluate_attributes(polyline(line), style);
+    for (size_t i = 2; i + 2 < a.width.size(); ++i) EXPECT_LT(a.width[i], 1.0f) << i;  // κ < 0.01 / px (was 0.28)
+    // A dense circle of radius 40 (samples 2 px apart) reads κ = 1/40 within 2 %.
+    std::vector<glm::vec2> circle;
+    const int count = int(std::round(2.0 * kPi * 40.0 / 2.0));
+    for (int k = 0; k < count; ++k)
+        circle.push_back(glm::vec2(100, 100) + 40.0f * glm::vec2(std::cos(2.0f * kPi * float(k) / float(count)),
+                                                                 std::sin(2.0f * kPi * float(k) / float(count))));
+    for (float w : evaluate_attributes(polyline(circle, 0.0f, true), style).width) EXPECT_NEAR(w, 2.5f, 0.05f);
+}
+
 // ---- Caps and joins ----
 
 TEST(Caps, RoundCapsMakeAOnePixelStrokeADisc) {

@@ -244,15 +244,51 @@ double lattice_gradient(uint64_t seed, int64_t i) {
 
 // ---- Attributes ----
 
-// |turn angle| / mean adjacent segment length at each sample, 1/px.
+// The turn is measured over at least this much of the path each way. A dense mesh's screen
+// path wiggles at the sample scale (its samples are 2 px apart), and the turn between
+// adjacent segments read that wiggle as curvature: a curvature width modifier drew a smooth
+// back as barbed wire. Over ±4 px the wiggle averages out, and a curve's turn over the window
+// divided by its length is still its curvature.
+constexpr float kCurvatureWindowPx = 4.0f;
+
+// The point `distance` px along the polyline `p` (cumulative lengths `at`, `total` with a
+// loop's closing segment) from its start; a loop wraps, an open path stops at its ends.
+glm::vec2 point_along(const std::vector<glm::vec2>& p, const std::vector<float>& at, float total, bool closed,
+                      float distance) {
+    if (closed) distance -= total * std::floor(distance / total);
+    distance = std::clamp(distance, 0.0f, total);
+    const size_t n = p.size();
+    const size_t j = size_t(std::upper_bound(at.begin(), at.end(), distance) - at.begin());  // 1 … n
+    const size_t a = j - 1, b = j % n;
+    const float length = (j < n ? at[j] : total) - at[a];
+    return length > 0.0f ? glm::mix(p[a], p[b], (distance - at[a]) / length) : p[a];
+}
+
+// |turn angle| / window length at each sample, 1/px: the turn between the chords from the
+// point a window back to the sample and from it to the point a window on (the window at
+// least the neighbouring samples' distance, so that a coarse polyline reads its corners).
 std::vector<float> screen_curvature(const ScreenPath& path) {
     const auto& s = path.samples;
     const size_t n = s.size();
     std::vector<float> k(n, 0.0f);
+    if (n < 2) return k;
+    std::vector<glm::vec2> p(n);
+    std::vector<float> at(n, 0.0f);
+    for (size_t i = 0; i < n; ++i) {
+        p[i] = s[i].pixel;
+        if (i > 0) at[i] = at[i - 1] + glm::length(p[i] - p[i - 1]);
+    }
+    const float total = at.back() + (path.closed ? glm::length(p.front() - p.back()) : 0.0f);
+    if (!(total > kCoincidentPx)) return k;
     for (size_t i = 0; i < n; ++i) {
         const size_t a = distinct_neighbour(path, i, -1), b = distinct_neighbour(path, i, 1);
         if (a == n || b == n) continue;
-        const glm::vec2 e1 = s[i].pixel - s[a].pixel, e2 = s[b].pixel - s[i].pixel;
+        float back = std::max(kCurvatureWindowPx, glm::length(p[i] - p[a]));
+        float on = std::max(kCurvatureWindowPx, glm::length(p[b] - p[i]));
+        if (!path.closed) back = std::min(back, at[i]), on = std::min(on, total - at[i]);
+        const glm::vec2 e1 = p[i] - point_along(p, at, total, path.closed, at[i] - back),
+                        e2 = point_along(p, at, total, path.closed, at[i] + on) - p[i];
+        if (!(glm::length(e1) > kCoincidentPx && glm::length(e2) > kCoincidentPx)) continue;
         const float turn = std::atan2(std::abs(e1.x * e2.y - e1.y * e2.x), glm::dot(e1, e2));
         k[i] = turn / (0.5f * (glm::length(e1) + glm::length(e2)));
     }
