@@ -336,7 +336,8 @@ TEST(LineSets, KeysThatChangeNothingAreSaid) {
         "lines": {"silhouette": {"width": 5}, "suggestive": {"threshold": 0.05}, "crease": {"enabled": false}},
         "line_sets": [{"name": "r", "style": {"ribbon": "chain.png", "alpha": 0.5, "dashes": [4, 2], "taper_in": 3,
                                               "cap": "square"}},
-                      {"name": "s", "style": {"width": 3}}]})",
+                      {"name": "s", "style": {"width": 3}},
+                      {"name": "f", "select": {"types": ["silhouette", "crease"]}, "style": {"fade": false}}]})",
                                             dir / "in.json");
     const std::string said = testing::internal::GetCapturedStderr();
     EXPECT_NE(said.find("in.json: lines.silhouette: width; lines.crease: enabled: beside \"line_sets\" a type's "
@@ -348,13 +349,15 @@ TEST(LineSets, KeysThatChangeNothingAreSaid) {
     EXPECT_NE(said.find("in.json: line_sets[0].style: alpha, taper_in, dashes: a ribbon set draws its exemplar"),
               std::string::npos)
         << said;
-    EXPECT_EQ(std::count(said.begin(), said.end(), '\n'), 2) << said;
+    EXPECT_NE(said.find("in.json: line_sets[2]: style.fade: none of the set's types fades"), std::string::npos) << said;
+    EXPECT_EQ(std::count(said.begin(), said.end(), '\n'), 3) << said;
 
     SceneDesc plain = desc;
     plain.lines.styles = LinesDesc{}.styles;
     plain.lines.sets[0].style.alpha = 1.0f;
     plain.lines.sets[0].style.dashes.clear();
     plain.lines.sets[0].style.taper_in_px = 0.0f;
+    plain.lines.sets[2].style.fade = true;
     plain.lines.params = LinesDesc{}.params;
     testing::internal::CaptureStderr();
     (void)parse_scene_json(scene_json(plain, ViewCamera{}, dir), dir / "out.json");
@@ -366,7 +369,7 @@ TEST(LineSets, KeysThatChangeNothingAreSaid) {
 TEST(LineSets, SavedSceneReadsBackEveryKey) {
     const fs::path dir = test::temp_dir();
     const std::string sets = R"([{"name": "a", "enabled": false,
-        "select": {"types": ["silhouette", "crease"], "visibility": "any", "models": ["m.glb"], "materials": ["Body"]},
+        "select": {"types": ["silhouette", "suggestive", "crease"], "visibility": "any", "models": ["m.glb"], "materials": ["Body"]},
         "style": {"color": [0.1, 0.2, 0.3], "alpha": 0.5, "width": 3, "cap": "round", "join": "round",
                   "taper_in": 4, "taper_out": 2, "fade": false, "dashes": [5, 2, 1],
                   "width_modifiers": [{"input": "along", "ramp": [[0, 0.5], [1, 2]], "blend": "replace"}],

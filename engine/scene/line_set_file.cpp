@@ -352,6 +352,14 @@ std::vector<LineSetDesc> read_line_sets(scene_detail::ObjectReader& scene, const
         if (r.has("enabled")) set.enabled = r.boolean("enabled");
         set.select = read_selection(r, file);
         set.style = read_style(r, file);
+        // "fade" scales by the alpha extraction gives a line (rtsc's fades); the types without
+        // one have alpha 1 throughout, and the key changed nothing for them, in silence.
+        constexpr LineType kFaded[] = {LineType::Suggestive, LineType::SuggestiveHighlight, LineType::Ridge,
+                                       LineType::Valley, LineType::ApparentRidge, LineType::PrincipalHighlight};
+        if (r.has("style") && r.at("style").is_object() && r.at("style").contains("fade") &&
+            std::none_of(std::begin(kFaded), std::end(kFaded), [&](LineType t) { return set.select.has_type(t); }))
+            r.warn("style.fade: none of the set's types fades (suggestive contours and highlights, ridges, valleys "
+                   "and apparent ridges do): it changes nothing");
         // Ribbons are synthesized along the visible runs only (the hidden ones were dropped).
         if (!set.style.ribbon.empty() && set.select.selects_hidden())
             r.fail_key("select", "a ribbon set draws visible lines only; select the hidden lines in a set of their "

@@ -88,7 +88,9 @@ json line_set_style(const LineSetStyle& s, const std::filesystem::path& dest_dir
     json style{{"color", vec3(s.color)}, {"alpha", round6(s.alpha)}, {"width", round6(s.width)},
                {"cap", s.cap == Cap::Butt ? "butt" : s.cap == Cap::Round ? "round" : "square"},
                {"join", s.join == Join::Round ? "round" : "mitre"},
-               {"taper_in", round6(s.taper_in_px)}, {"taper_out", round6(s.taper_out_px)}, {"fade", s.fade}};
+               {"taper_in", round6(s.taper_in_px)}, {"taper_out", round6(s.taper_out_px)}};
+    if (!s.fade) style["fade"] = false;  // (the default is true; a set of types that do not fade is told it
+                                         // changes nothing when the key is there)
     if (!s.slam.empty()) style["slam"] = relative_to(s.slam, dest_dir);
     if (!s.ribbon.empty()) style["ribbon"] = relative_to(s.ribbon, dest_dir);
     if (s.ribbon_scale > 0.0f) style["ribbon_scale"] = round6(s.ribbon_scale);
