@@ -211,7 +211,7 @@ pyb::object ribbon(const pyb::object& exemplar_value, const pyb::object& curve_v
     if (size_value) {
         size = glm::ivec2(std::get<0>(*size_value), std::get<1>(*size_value));
         if (size->x < 1 || size->y < 1 || size->x > 16384 || size->y > 16384)
-            throw pyb::value_error("size: width and height must be between 1 and 16384, got (" + std::to_string(size->x) +
+            throw pyb::value_error("size: must be between 1x1 and 16384x16384, got (" + std::to_string(size->x) +
                                    ", " + std::to_string(size->y) + ")");
     }
     (void)arguments_named(kRibbonNames, [&] { return parse_device_choice(device); });

@@ -358,6 +358,9 @@ def test_ribbon_bad_input_gives_the_command_lines_message(ribbon_inputs):
     with pytest.raises(ValueError) as e:
         linework.ribbon(exemplar, RIBBON_CURVE, size=(5, 5))
     assert str(e.value) == message[2:]
+    # A size no image has: worded as the command line's --size.
+    with pytest.raises(ValueError, match=r"^size: must be between 1x1 and 16384x16384, got \(0, 5\)$"):
+        linework.ribbon(exemplar, RIBBON_CURVE, size=(0, 5))
     # An avoidance map that forbids everything empties every piece: refused (a blank image);
     # one that forbids half of the image empties some: said, not only in info.
     with pytest.raises(ValueError, match="^curve: the ribbon drew nothing: .* or where `avoid` forbids ink$"):
