@@ -139,6 +139,16 @@ TEST(Resume, OnlyWholeFramesOfThisRenderAreSkipped) {
     const auto spelled = test::run_linework("render " + shot + "/ -o " + test::quote(dir / "x/../o/") + " --resume");
     EXPECT_EQ(spelled.exit_code, 0) << spelled.output;
     EXPECT_NE(spelled.output.find("all frames 0 to 3 are already in"), std::string::npos) << spelled.output;
+    // A relative folder the first render made is the same folder to its resume (before the
+    // folder existed its name could not be made absolute the same way, and every resume of a
+    // new relative -o was refused).
+    const std::string in_dir = "cd " + test::quote(dir) + " && LINEWORK_VALIDATION=1 '" + std::string(LW_LINEWORK_EXE) +
+                               "' render " + test::quote(test::data_dir() / "models/spot/spot.glb") +
+                               " --device cpu --size 96x72 --frames 0:1 -o rel --dump-paths reld";
+    ASSERT_EQ(test::run_command(in_dir + " > /dev/null 2>&1").exit_code, 0);
+    const auto relative = test::run_command(in_dir + " --resume 2>&1");
+    EXPECT_EQ(relative.exit_code, 0) << relative.output;
+    EXPECT_NE(relative.output.find("all frames 0 to 1 are already in rel"), std::string::npos) << relative.output;
     // A frame whose dump is gone is not written: here the state has gone past it.
     fs::remove(dir / "d/frame_0001.json");
     const auto dump_gone = test::run_linework("render " + shot + " -o " + test::quote(dir / "o") + " --resume");
