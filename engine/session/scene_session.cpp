@@ -164,10 +164,11 @@ void SceneSession::load_line_styles() {
     sets_ = effective_line_sets(desc_.lines);
     // A ribbon draws visible runs only: a set of its own that selects hidden ones is refused
     // when read; the shorthand's types under hidden lines ("hidden", --hidden) are said here.
-    for (const LineSetDesc& set : sets_)
-        if (set.enabled && !set.style.ribbon.empty() && set.select.selects_hidden() && desc_.lines.sets.empty())
-            log_warning((desc_.source.empty() ? std::string("scene") : desc_.source.string()) + ": lines." + set.name +
-                        ".ribbon: a ribbon draws visible lines only; its hidden lines are not drawn");
+    if (desc_.lines.sets.empty())
+        for (const LineSetDesc& set : sets_)
+            if (set.enabled && !set.style.ribbon.empty() && set.select.selects_hidden())
+                log_warning(key_file_prefix(desc_, "lines." + set.name + ".ribbon") +
+                            "a ribbon draws visible lines only; its hidden lines are not drawn");
     // Else the scene's "coherence.length_scale" for the sets (and the shorthand's) that give
     // none of their own: filled in the sets drawn, not in the description, which a saved view
     // writes back with the key as it was.
