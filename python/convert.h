@@ -67,8 +67,7 @@ void check_validation(Context& ctx);
 std::string printable(const std::string& message);
 
 // ValueError "path: P: the folder F does not exist" for a file to write whose folder is missing,
-// as the command line's -o says it (the writers' own messages differed: OpenEXR's came twice
-// over, OpenImageIO's as a RuntimeError).
+// as the command line's -o says it (the writers' own messages differ: libpng's and OpenEXR's).
 void check_output_folder(const std::filesystem::path& path);
 
 // Runs f; an engine ParameterError about one of `names` (engine name → Python argument,

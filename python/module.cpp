@@ -32,7 +32,7 @@ PYBIND11_MODULE(linework, m) {
             PyErr_SetString(PyExc_RuntimeError, lw::py::printable(e.what()).c_str());
         }
     });
-    // Images as the command line reads and writes them (OpenImageIO), so that a script needs
+    // Images as the command line reads and writes them (io/image_io.h), so that a script needs
     // no imaging library to compare with or feed the command line.
     m.def(
         "read_image",

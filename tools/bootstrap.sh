@@ -13,7 +13,8 @@ packages=(
   libglm-dev libtinygltf-dev nlohmann-json3-dev libcli11-dev
   libassimp-dev                             # OBJ and PLY models (research scans)
   libpugixml-dev                            # SVG input: an XML parser, not a tag tokenizer
-  libopenimageio-dev
+  libpng-dev libopenexr-dev                 # PNG and EXR files (engine/io)
+  libopenimageio-dev                        # other image formats, in a module loaded on first use
   libglfw3-dev libimgui-dev                 # the viewer: window, input and its Dear ImGui panel
   xvfb xauth                                # viewer tests: xvfb-run, a display without a screen
   libcgal-dev                               # Delaunay triangulations, fills, intersection lines

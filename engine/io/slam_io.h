@@ -1,4 +1,4 @@
-// engine/io/slam_io.h — SLAM files: one multi-part OpenEXR, a part per level.
+// engine/io/slam_io.h — SLAM files: one multi-part OpenEXR, a part per level (through OpenEXR).
 //
 // Contract (DESIGN.md "SLAM file"): the levels as one multi-image file readable by
 // OpenImageIO; each part is `length` × `height`, one float channel "Y" holding ink in

@@ -1,4 +1,4 @@
-// Exemplar images (PNG through OpenImageIO): the ribbon exemplar and the SLAM exemplar's ink.
+// Exemplar images (PNG through libpng; other formats through OpenImageIO): the ribbon exemplar and the SLAM exemplar's ink.
 #include "core/error.h"
 #include "fuzz_support.h"
 #include "io/image_io.h"

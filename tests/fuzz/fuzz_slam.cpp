@@ -1,4 +1,4 @@
-// SLAM files (multi-part OpenEXR through OpenImageIO).
+// SLAM files (multi-part OpenEXR).
 #include "core/error.h"
 #include "fuzz_support.h"
 #include "io/slam_io.h"

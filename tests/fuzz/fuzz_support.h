@@ -17,7 +17,7 @@
 
 namespace lw::fuzz {
 
-// Readers that take a path (OpenImageIO, tinygltf's file loader): the bytes go to a
+// Readers that take a path (image files, tinygltf's file loader): the bytes go to a
 // per-process file whose extension picks the format.
 inline std::filesystem::path write_input(const uint8_t* data, size_t size, const std::string& extension) {
     const auto path = std::filesystem::temp_directory_path() /

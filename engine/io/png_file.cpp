@@ -1,0 +1,115 @@
+#include "io/png_file.h"
+
+#include <csetjmp>
+#include <cstdio>
+#include <string>
+
+#include <png.h>
+
+#include "core/error.h"
+#include "core/text.h"
+#include "io/image_io.h"
+
+namespace lw {
+
+namespace {
+
+constexpr int kLargestSide = 16384;  // 16384² RGBA is 1 GiB
+
+// libpng reports errors through a callback that must not return: it records the message and
+// jumps back to the setjmp of the phase that called libpng. The functions holding a setjmp
+// create no object with a destructor after it (C++ forbids jumping over one), so all state
+// lives in PngReader, constructed by the caller before any jump.
+struct PngReader {
+    std::FILE* file = nullptr;
+    png_structp png = nullptr;
+    png_infop info = nullptr;
+    std::string error;
+
+    ~PngReader() {
+        if (png) png_destroy_read_struct(&png, info ? &info : nullptr, nullptr);
+        if (file) std::fclose(file);
+    }
+};
+
+[[noreturn]] void on_png_error(png_structp png, png_const_charp message) {
+    auto* reader = static_cast<PngReader*>(png_get_error_ptr(png));
+    reader->error = message ? message : "unknown error";
+    png_longjmp(png, 1);
+}
+
+void on_png_warning(png_structp, png_const_charp) {}
+
+// libpng's own reader says only "Read Error" at the end of a file cut short.
+void read_bytes(png_structp png, png_bytep data, size_t length) {
+    auto* reader = static_cast<PngReader*>(png_get_io_ptr(png));
+    if (std::fread(data, 1, length, reader->file) != length)
+        png_error(png, std::ferror(reader->file) ? "the file could not be read" : "the file ends before its image does");
+}  // e.g. an iCCP profile libpng dislikes: the pixels are fine
+
+// Reads the header and sets the transforms to 8-bit RGBA. False with reader.error set on failure.
+bool read_header(PngReader& reader, png_uint_32& width, png_uint_32& height) {
+    if (setjmp(png_jmpbuf(reader.png))) return false;
+    png_set_read_fn(reader.png, &reader, read_bytes);
+    png_read_info(reader.png, reader.info);
+    width = png_get_image_width(reader.png, reader.info);
+    height = png_get_image_height(reader.png, reader.info);
+    png_set_expand(reader.png);    // palette → RGB, grey under 8 bits → 8, tRNS → alpha
+    png_set_scale_16(reader.png);  // 16-bit → 8, rounded (not the high byte alone)
+    png_set_gray_to_rgb(reader.png);
+    png_set_add_alpha(reader.png, 0xff, PNG_FILLER_AFTER);  // only where there is no alpha
+    png_set_interlace_handling(reader.png);
+    png_read_update_info(reader.png, reader.info);
+    if (png_get_rowbytes(reader.png, reader.info) != size_t(width) * 4) {
+        reader.error = "unexpected row layout after conversion to RGBA";
+        return false;
+    }
+    return true;
+}
+
+bool read_rows(PngReader& reader, png_bytepp rows) {
+    if (setjmp(png_jmpbuf(reader.png))) return false;
+    png_read_image(reader.png, rows);
+    png_read_end(reader.png, nullptr);
+    return true;
+}
+
+}  // namespace
+
+ImageRGBA8 read_png(const std::filesystem::path& path) {
+    const std::string name = path.string();
+    PngReader reader;
+    reader.file = std::fopen(name.c_str(), "rb");
+    if (!reader.file) throw Error(name + ": cannot read image: cannot open the file");
+    reader.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &reader, on_png_error, on_png_warning);
+    if (reader.png) reader.info = png_create_info_struct(reader.png);
+    if (!reader.png || !reader.info) throw Error(name + ": cannot read image: out of memory");
+    png_uint_32 width = 0, height = 0;
+    if (!read_header(reader, width, height)) throw Error(name + ": cannot read image: " + one_line(reader.error));
+    // Before allocating: a header may claim any size (found by tests/fuzz/fuzz_image).
+    if (width > kLargestSide || height > kLargestSide)
+        throw Error(name + ": image of " + std::to_string(width) + "x" + std::to_string(height) +
+                    " is too large (at most 16384x16384)");
+    ImageRGBA8 image{int(width), int(height), std::vector<uint8_t>(size_t(width) * height * 4)};
+    std::vector<png_bytep> rows(height);
+    for (png_uint_32 y = 0; y < height; ++y) rows[y] = image.pixels.data() + size_t(y) * width * 4;
+    if (!read_rows(reader, rows.data())) throw Error(name + ": cannot read image: " + one_line(reader.error));
+    return image;
+}
+
+void write_png(const std::filesystem::path& path, const ImageRGBA8& image) {
+    // libpng's simplified writer: 8-bit RGBA as given (it premultiplies only linear formats),
+    // tagged sRGB, which the bytes are.
+    png_image out{};
+    out.version = PNG_IMAGE_VERSION;
+    out.width = png_uint_32(image.width);
+    out.height = png_uint_32(image.height);
+    out.format = PNG_FORMAT_RGBA;
+    if (!png_image_write_to_file(&out, path.string().c_str(), 0, image.pixels.data(), 0, nullptr)) {
+        const std::string message = out.message;
+        png_image_free(&out);
+        throw Error(path.string() + ": cannot write: " + one_line(message));
+    }
+}
+
+}  // namespace lw
