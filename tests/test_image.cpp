@@ -68,6 +68,18 @@ TEST(ImageFiles, MissingOrBadFileNamesIt) {
     }
 }
 
+// The last bytes of a PNG reach the disk when the file is closed: a full disk is an error
+// there, not a short file in silence.
+TEST(ImageFiles, AFullDiskIsAnError) {
+    if (!fs::exists("/dev/full")) GTEST_SKIP() << "no /dev/full here";
+    try {
+        write_png("/dev/full", solid(64, 64, 7));
+        FAIL() << "wrote to a full disk";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("/dev/full: cannot write: No space left on device"), std::string::npos) << e.what();
+    }
+}
+
 // One PNG of the given kind: rows of packed samples as PNG stores them (big-endian 16-bit).
 struct PngKind {
     const char* name;

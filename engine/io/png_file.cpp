@@ -1,8 +1,11 @@
 #include "io/png_file.h"
 
+#include <cerrno>
 #include <csetjmp>
 #include <cstdio>
+#include <cstring>
 #include <string>
+#include <utility>
 
 #include <png.h>
 
@@ -19,12 +22,12 @@ constexpr int kLargestSide = 16384;  // 16384² RGBA is 1 GiB
 // libpng reports errors through a callback that must not return: it records the message and
 // jumps back to the setjmp of the phase that called libpng. The functions holding a setjmp
 // create no object with a destructor after it (C++ forbids jumping over one), so all state
-// lives in PngReader, constructed by the caller before any jump.
+// lives in PngReader or PngWriter, constructed by the caller before any jump.
 struct PngReader {
     std::FILE* file = nullptr;
     png_structp png = nullptr;
     png_infop info = nullptr;
-    std::string error;
+    std::string error;  // libpng's error pointer
 
     ~PngReader() {
         if (png) png_destroy_read_struct(&png, info ? &info : nullptr, nullptr);
@@ -32,9 +35,20 @@ struct PngReader {
     }
 };
 
+struct PngWriter {
+    std::FILE* file = nullptr;
+    png_structp png = nullptr;
+    png_infop info = nullptr;
+    std::string error;  // libpng's error pointer
+
+    ~PngWriter() {
+        if (png) png_destroy_write_struct(&png, info ? &info : nullptr);
+        if (file) std::fclose(file);
+    }
+};
+
 [[noreturn]] void on_png_error(png_structp png, png_const_charp message) {
-    auto* reader = static_cast<PngReader*>(png_get_error_ptr(png));
-    reader->error = message ? message : "unknown error";
+    *static_cast<std::string*>(png_get_error_ptr(png)) = message ? message : "unknown error";
     png_longjmp(png, 1);
 }
 
@@ -74,6 +88,25 @@ bool read_rows(PngReader& reader, png_bytepp rows) {
     return true;
 }
 
+// 8-bit RGBA as given, tagged sRGB (which the bytes are), zlib level 6 and no row filter: a
+// line drawing's flat runs compress best unfiltered (the default scene's frame 0 at 960×720:
+// 82 kB in 44 ms, against 108 kB in 95 ms with libpng's adaptive filters; OpenImageIO wrote
+// 98 kB).
+bool write_rows(PngWriter& writer, const ImageRGBA8& image) {
+    if (setjmp(png_jmpbuf(writer.png))) return false;
+    png_init_io(writer.png, writer.file);
+    png_set_compression_level(writer.png, 6);
+    png_set_filter(writer.png, PNG_FILTER_TYPE_BASE, PNG_FILTER_NONE);
+    png_set_IHDR(writer.png, writer.info, png_uint_32(image.width), png_uint_32(image.height), 8,
+                 PNG_COLOR_TYPE_RGB_ALPHA, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    png_set_sRGB(writer.png, writer.info, PNG_sRGB_INTENT_PERCEPTUAL);
+    png_write_info(writer.png, writer.info);
+    for (int y = 0; y < image.height; ++y)  // libpng only reads the row
+        png_write_row(writer.png, const_cast<png_bytep>(image.pixels.data() + size_t(y) * image.width * 4));
+    png_write_end(writer.png, nullptr);
+    return true;
+}
+
 }  // namespace
 
 ImageRGBA8 read_png(const std::filesystem::path& path) {
@@ -81,7 +114,7 @@ ImageRGBA8 read_png(const std::filesystem::path& path) {
     PngReader reader;
     reader.file = std::fopen(name.c_str(), "rb");
     if (!reader.file) throw Error(name + ": cannot read image: cannot open the file");
-    reader.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &reader, on_png_error, on_png_warning);
+    reader.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &reader.error, on_png_error, on_png_warning);
     if (reader.png) reader.info = png_create_info_struct(reader.png);
     if (!reader.png || !reader.info) throw Error(name + ": cannot read image: out of memory");
     png_uint_32 width = 0, height = 0;
@@ -98,18 +131,19 @@ ImageRGBA8 read_png(const std::filesystem::path& path) {
 }
 
 void write_png(const std::filesystem::path& path, const ImageRGBA8& image) {
-    // libpng's simplified writer: 8-bit RGBA as given (it premultiplies only linear formats),
-    // tagged sRGB, which the bytes are.
-    png_image out{};
-    out.version = PNG_IMAGE_VERSION;
-    out.width = png_uint_32(image.width);
-    out.height = png_uint_32(image.height);
-    out.format = PNG_FORMAT_RGBA;
-    if (!png_image_write_to_file(&out, path.string().c_str(), 0, image.pixels.data(), 0, nullptr)) {
-        const std::string message = out.message;
-        png_image_free(&out);
-        throw Error(path.string() + ": cannot write: " + one_line(message));
-    }
+    const std::string name = path.string();
+    PngWriter writer;
+    writer.file = std::fopen(name.c_str(), "wb");
+    if (!writer.file) throw Error(name + ": cannot write: " + std::strerror(errno));
+    writer.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &writer.error, on_png_error, on_png_warning);
+    if (writer.png) writer.info = png_create_info_struct(writer.png);
+    if (!writer.png || !writer.info) throw Error(name + ": cannot write: out of memory");
+    if (!write_rows(writer, image)) throw Error(name + ": cannot write: " + one_line(writer.error));
+    // The last bytes reach the disk at fclose: a full disk is said here.
+    const bool flushed = std::fflush(writer.file) == 0 && !std::ferror(writer.file);
+    const int error = errno;
+    std::fclose(std::exchange(writer.file, nullptr));
+    if (!flushed) throw Error(name + ": cannot write: " + std::strerror(error));
 }
 
 }  // namespace lw
