@@ -1,13 +1,21 @@
-// Image comparison and image files.
+// Image comparison, image files and SLAM files.
 #include <cmath>
 #include <csetjmp>
 #include <fstream>
 
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfIntAttribute.h>
+#include <OpenEXR/ImfMultiPartOutputFile.h>
+#include <OpenEXR/ImfOutputPart.h>
+#include <OpenEXR/ImfPartType.h>
 #include <png.h>
 
 #include "core/error.h"
 #include "core/image.h"
 #include "io/image_io.h"
+#include "io/slam_io.h"
 #include "test_support.h"
 
 namespace lw {
@@ -72,11 +80,17 @@ TEST(ImageFiles, MissingOrBadFileNamesIt) {
 // there, not a short file in silence.
 TEST(ImageFiles, AFullDiskIsAnError) {
     if (!fs::exists("/dev/full")) GTEST_SKIP() << "no /dev/full here";
-    try {
-        write_png("/dev/full", solid(64, 64, 7));
-        FAIL() << "wrote to a full disk";
-    } catch (const Error& e) {
-        EXPECT_NE(std::string(e.what()).find("/dev/full: cannot write: No space left on device"), std::string::npos) << e.what();
+    // Small enough to sit in the stdio buffer until the end, and large enough to fail inside libpng.
+    ImageRGBA8 noise = solid(512, 512, 0);
+    for (size_t i = 0; i < noise.pixels.size(); ++i) noise.pixels[i] = static_cast<uint8_t>(i * 2654435761u >> 13);
+    for (const ImageRGBA8& image : {solid(64, 64, 7), noise}) {
+        try {
+            write_png("/dev/full", image);
+            FAIL() << "wrote to a full disk";
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find("/dev/full: cannot write: No space left on device"), std::string::npos)
+                << e.what();
+        }
     }
 }
 
@@ -220,6 +234,76 @@ TEST(ImageFiles, OtherFormatsReadThroughOpenImageIO) {
             EXPECT_EQ(p[2], 10 * x + 1);
             EXPECT_EQ(p[3], 255);
         }
+}
+
+// The chunks after the pixels change nothing read: a PNG whose IEND is missing reads (as it
+// did through OpenImageIO).
+TEST(ImageFiles, APngWithoutItsEndChunkReads) {
+    ImageRGBA8 image = solid(9, 4, 0);
+    for (size_t i = 0; i < image.pixels.size(); ++i) image.pixels[i] = static_cast<uint8_t>(i * 29 % 256);
+    const fs::path path = test::temp_dir() / "noend.png";
+    write_png(path, image);
+    fs::resize_file(path, fs::file_size(path) - 12);  // IEND: length, type, CRC
+    EXPECT_EQ(read_image_rgba8(path).pixels, image.pixels);
+}
+
+// A SLAM written by another tool: parts whose data window starts far from the origin (the
+// pointer arithmetic to its corner overflowed: UBSan stopped there) and whose one channel is
+// not named "Y" (read by position, as OpenImageIO read it).
+TEST(SlamFiles, AnotherToolsLayoutReads) {
+    const int levels = 2, length = 64, height = 4;
+    std::vector<float> ink(size_t(levels) * length * height);
+    for (size_t i = 0; i < ink.size(); ++i) ink[i] = float(i % 97) / 96.0f;
+    const Imath::Box2i window({5, 1000000000}, {5 + length - 1, 1000000000 + height - 1});
+    std::vector<Imf::Header> headers;
+    for (int i = 0; i < levels; ++i) {
+        Imf::Header header(window, window);
+        header.channels().insert("ink", Imf::Channel(Imf::FLOAT));
+        header.setName("level" + std::to_string(i));
+        header.setType(Imf::SCANLINEIMAGE);
+        header.insert("linework:levels", Imf::IntAttribute(levels));
+        headers.push_back(header);
+    }
+    const fs::path path = test::temp_dir() / "other.exr";
+    {
+        Imf::MultiPartOutputFile file(path.c_str(), headers.data(), levels);
+        for (int i = 0; i < levels; ++i) {
+            Imf::OutputPart part(file, i);
+            Imf::FrameBuffer frame;
+            frame.insert("ink", Imf::Slice::Make(Imf::FLOAT, ink.data() + size_t(i) * length * height, window,
+                                                 sizeof(float), sizeof(float) * length));
+            part.setFrameBuffer(frame);
+            part.writePixels(height);
+        }
+    }
+    const Slam slam = read_slam(path);
+    EXPECT_EQ(slam.levels, levels);
+    EXPECT_EQ(slam.length, length);
+    EXPECT_EQ(slam.height, height);
+    EXPECT_EQ(slam.ink, ink);
+}
+
+// Each size bound alone allowed 256 GiB of texels: a file of a few headers claiming 64 levels
+// of 65536 × 1024 is refused before anything is allocated.
+TEST(SlamFiles, AHeaderClaimingTooManyTexelsIsRefused) {
+    const int levels = 64;
+    std::vector<Imf::Header> headers;
+    for (int i = 0; i < levels; ++i) {
+        Imf::Header header(65536, 1024);
+        header.channels().insert("Y", Imf::Channel(Imf::FLOAT));
+        header.setName("level" + std::to_string(i));
+        header.setType(Imf::SCANLINEIMAGE);
+        header.insert("linework:levels", Imf::IntAttribute(levels));
+        headers.push_back(header);
+    }
+    const fs::path path = test::temp_dir() / "huge.exr";
+    { Imf::MultiPartOutputFile file(path.c_str(), headers.data(), levels); }  // headers only: no pixels written
+    try {
+        (void)read_slam(path);
+        FAIL() << "read a SLAM claiming 2^32 texels";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("64 levels of 65536x1024 is out of range"), std::string::npos) << e.what();
+    }
 }
 
 }  // namespace

@@ -43,27 +43,44 @@ void refuse_slam(const std::filesystem::path& path) {
                     "x" + std::to_string(height) + "), not an image: a SLAM goes in a style's \"slam\" or --slam");
 }
 
-// Formats other than PNG (JPEG, TIFF, a plain EXR, …) go through OpenImageIO, loaded on first
-// use from a module beside the program: linked in, its 260 shared libraries cost every process
-// 0.3 s of CPU at start, whether it read an image or not (README "Dependencies").
+// Formats other than PNG (JPEG, TIFF, an EXR that is no SLAM, …) go through OpenImageIO, loaded
+// on first use from a module beside the program: linked in, its 260 shared libraries cost
+// every process 0.3 s of CPU at start, whether it read an image or not (README "Dependencies").
 using ReadThroughOpenImageIO = bool (*)(const char* path, ImageRGBA8* image, std::string* error);
+
+// Where the module may be, absolute paths only (dlopen searches the library path for a bare
+// name): beside the executable (/proc/self/exe: argv[0] may be a bare name or a link), beside
+// the shared object holding this code (the Python module), and where the build put it.
+std::vector<std::filesystem::path> openimageio_module_candidates() {
+    std::vector<std::filesystem::path> candidates;
+    std::error_code ec;
+    if (const auto exe = std::filesystem::read_symlink("/proc/self/exe", ec); !ec)
+        candidates.push_back(exe.parent_path() / kOpenImageIOModuleName);
+    Dl_info self{};
+    if (dladdr(reinterpret_cast<void*>(&openimageio_module_candidates), &self) && self.dli_fname &&
+        std::filesystem::path(self.dli_fname).is_absolute())
+        candidates.push_back(std::filesystem::path(self.dli_fname).parent_path() / kOpenImageIOModuleName);
+    candidates.emplace_back(LW_OPENIMAGEIO_MODULE);
+    return candidates;
+}
 
 ReadThroughOpenImageIO openimageio_reader(std::string& why_not) {
     static std::string load_error;
     static const ReadThroughOpenImageIO reader = [] {
-        std::vector<std::string> candidates;
-        Dl_info self{};
-        if (dladdr(reinterpret_cast<void*>(&openimageio_reader), &self) && self.dli_fname)
-            candidates.push_back((std::filesystem::path(self.dli_fname).parent_path() / kOpenImageIOModuleName).string());
-        candidates.push_back(LW_OPENIMAGEIO_MODULE);  // where the build put it
-        for (const std::string& candidate : candidates) {
+        std::string failures;  // of candidates that exist: why each did not load
+        std::string looked;
+        const auto add = [](std::string& list, const std::string& item) { list += (list.empty() ? "" : "; ") + item; };
+        for (const std::filesystem::path& candidate : openimageio_module_candidates()) {
+            add(looked, candidate.parent_path().string());
+            if (!std::filesystem::exists(candidate)) continue;
             if (void* module = dlopen(candidate.c_str(), RTLD_NOW | RTLD_LOCAL)) {
                 if (void* entry = dlsym(module, kOpenImageIOEntry)) return reinterpret_cast<ReadThroughOpenImageIO>(entry);
-                load_error = candidate + " has no " + kOpenImageIOEntry;
-                return ReadThroughOpenImageIO{};
+                add(failures, candidate.string() + " has no " + kOpenImageIOEntry);
+            } else {
+                add(failures, one_line(dlerror()));
             }
-            load_error = one_line(dlerror());
         }
+        load_error = failures.empty() ? "not found in " + looked : failures;
         return ReadThroughOpenImageIO{};
     }();
     why_not = load_error;

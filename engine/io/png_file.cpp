@@ -52,14 +52,25 @@ struct PngWriter {
     png_longjmp(png, 1);
 }
 
-void on_png_warning(png_structp, png_const_charp) {}
+void on_png_warning(png_structp, png_const_charp) {}  // e.g. an iCCP profile libpng dislikes: the pixels are fine
 
 // libpng's own reader says only "Read Error" at the end of a file cut short.
 void read_bytes(png_structp png, png_bytep data, size_t length) {
     auto* reader = static_cast<PngReader*>(png_get_io_ptr(png));
     if (std::fread(data, 1, length, reader->file) != length)
         png_error(png, std::ferror(reader->file) ? "the file could not be read" : "the file ends before its image does");
-}  // e.g. an iCCP profile libpng dislikes: the pixels are fine
+}
+
+// libpng's own writer says only "Write Error"; the system's reason (a full disk) is kept.
+void write_bytes(png_structp png, png_bytep data, size_t length) {
+    auto* writer = static_cast<PngWriter*>(png_get_io_ptr(png));
+    if (std::fwrite(data, 1, length, writer->file) != length) png_error(png, std::strerror(errno));
+}
+
+void flush_bytes(png_structp png) {
+    auto* writer = static_cast<PngWriter*>(png_get_io_ptr(png));
+    if (std::fflush(writer->file) != 0) png_error(png, std::strerror(errno));
+}
 
 // Reads the header and sets the transforms to 8-bit RGBA. False with reader.error set on failure.
 bool read_header(PngReader& reader, png_uint_32& width, png_uint_32& height) {
@@ -83,8 +94,9 @@ bool read_header(PngReader& reader, png_uint_32& width, png_uint_32& height) {
 
 bool read_rows(PngReader& reader, png_bytepp rows) {
     if (setjmp(png_jmpbuf(reader.png))) return false;
+    // Not png_read_end: the chunks after the pixels (IEND, text) change nothing read, and
+    // OpenImageIO read a file whose IEND was missing.
     png_read_image(reader.png, rows);
-    png_read_end(reader.png, nullptr);
     return true;
 }
 
@@ -94,7 +106,7 @@ bool read_rows(PngReader& reader, png_bytepp rows) {
 // 98 kB).
 bool write_rows(PngWriter& writer, const ImageRGBA8& image) {
     if (setjmp(png_jmpbuf(writer.png))) return false;
-    png_init_io(writer.png, writer.file);
+    png_set_write_fn(writer.png, &writer, write_bytes, flush_bytes);
     png_set_compression_level(writer.png, 6);
     png_set_filter(writer.png, PNG_FILTER_TYPE_BASE, PNG_FILTER_NONE);
     png_set_IHDR(writer.png, writer.info, png_uint_32(image.width), png_uint_32(image.height), 8,
@@ -139,11 +151,11 @@ void write_png(const std::filesystem::path& path, const ImageRGBA8& image) {
     if (writer.png) writer.info = png_create_info_struct(writer.png);
     if (!writer.png || !writer.info) throw Error(name + ": cannot write: out of memory");
     if (!write_rows(writer, image)) throw Error(name + ": cannot write: " + one_line(writer.error));
-    // The last bytes reach the disk at fclose: a full disk is said here.
-    const bool flushed = std::fflush(writer.file) == 0 && !std::ferror(writer.file);
-    const int error = errno;
-    std::fclose(std::exchange(writer.file, nullptr));
-    if (!flushed) throw Error(name + ": cannot write: " + std::strerror(error));
+    // The last bytes reach the disk at fflush or fclose: a full disk is said here too.
+    const bool flushed = std::fflush(writer.file) == 0;
+    const int flush_error = errno;
+    const bool closed = std::fclose(std::exchange(writer.file, nullptr)) == 0;
+    if (!flushed || !closed) throw Error(name + ": cannot write: " + std::strerror(flushed ? errno : flush_error));
 }
 
 }  // namespace lw

@@ -1,5 +1,6 @@
 #include "io/slam_io.h"
 
+#include <cstdint>
 #include <vector>
 
 #include <OpenEXR/ImfChannelList.h>
@@ -23,12 +24,12 @@ namespace lw {
 
 namespace {
 
-// One level's float channel "Y" as OpenEXR addresses it: rows of `length` floats starting at
-// the data window's corner (0, 0 for files we write; read_slam checks others by size only).
-Imf::FrameBuffer level_frame(float* ink, const Imath::Box2i& window, int length) {
+// One level's float channel as OpenEXR addresses it: rows of `length` floats from the data
+// window's corner (0, 0 for files we write; read_slam checks others by size only). Slice::Make
+// offsets the pointer in integers: a corner far from the origin overflowed pointer arithmetic.
+Imf::FrameBuffer level_frame(const char* channel, float* ink, const Imath::Box2i& window, int length) {
     Imf::FrameBuffer frame;
-    char* origin = reinterpret_cast<char*>(ink - (ptrdiff_t(window.min.y) * length + window.min.x));
-    frame.insert("Y", Imf::Slice(Imf::FLOAT, origin, sizeof(float), sizeof(float) * size_t(length)));
+    frame.insert(channel, Imf::Slice::Make(Imf::FLOAT, ink, window, sizeof(float), sizeof(float) * size_t(length)));
     return frame;
 }
 
@@ -63,7 +64,7 @@ void write_slam(const std::filesystem::path& path, const Slam& slam) {
             Imf::OutputPart level(file, i);
             // OpenEXR only reads through the frame buffer's pointer when writing.
             float* ink = const_cast<float*>(slam.ink.data() + part * size_t(i));
-            level.setFrameBuffer(level_frame(ink, headers[size_t(i)].dataWindow(), slam.length));
+            level.setFrameBuffer(level_frame("Y", ink, headers[size_t(i)].dataWindow(), slam.length));
             level.writePixels(slam.height);
         }
     } catch (const std::exception& e) {
@@ -89,9 +90,13 @@ Slam read_slam(const std::filesystem::path& path) {
         slam.seed = uint32_t(attribute_or<Imf::IntAttribute>(first, "linework:seed", 0));
         if (slam.levels < 2) throw Error(name + ": not a SLAM file (no linework:levels ≥ 2 in its metadata)");
         // Before allocating: metadata and headers may claim anything.
-        if (slam.levels > 1024 || slam.length < 1 || slam.length > 65536 || slam.height < 1 || slam.height > 1024)
+        // Each bound alone still allowed 256 GiB; the texels in all are capped at 1 GiB of floats.
+        constexpr int64_t kMostTexels = int64_t(1) << 28;
+        if (slam.levels > 1024 || slam.length < 1 || slam.length > 65536 || slam.height < 1 || slam.height > 1024 ||
+            int64_t(slam.levels) * slam.length * slam.height > kMostTexels)
             throw Error(name + ": a SLAM of " + std::to_string(slam.levels) + " levels of " + std::to_string(slam.length) +
-                        "x" + std::to_string(slam.height) + " is out of range (at most 1024 levels of 65536x1024)");
+                        "x" + std::to_string(slam.height) +
+                        " is out of range (at most 1024 levels of 65536x1024, 2^28 texels in all)");
         if (file.parts() < slam.levels)
             throw Error(name + ": has fewer parts than its " + std::to_string(slam.levels) + " levels");
         const size_t part = size_t(slam.length) * slam.height;
@@ -105,10 +110,19 @@ Slam read_slam(const std::filesystem::path& path) {
                 throw Error(name + ": level " + std::to_string(i) + " is " + std::to_string(width) + "x" +
                             std::to_string(height) + ", level 0 is " + std::to_string(slam.length) + "x" +
                             std::to_string(slam.height));
-            if (!header.channels().findChannel("Y"))
-                throw Error(name + ": level " + std::to_string(i) + " has no channel \"Y\" (the ink)");
+            // The ink is channel "Y" as written here; a part of one channel named otherwise (another
+            // tool's file) is read as OpenImageIO read it, by position.
+            const Imf::ChannelList& channels = header.channels();
+            const char* channel = "Y";
+            if (!channels.findChannel("Y")) {
+                auto second = channels.begin();
+                if (second != channels.end()) ++second;
+                if (channels.begin() == channels.end() || second != channels.end())
+                    throw Error(name + ": level " + std::to_string(i) + " has no channel \"Y\" (the ink)");
+                channel = channels.begin().name();
+            }
             Imf::InputPart level(file, i);
-            level.setFrameBuffer(level_frame(slam.ink.data() + part * size_t(i), level_window, slam.length));
+            level.setFrameBuffer(level_frame(channel, slam.ink.data() + part * size_t(i), level_window, slam.length));
             level.readPixels(level_window.min.y, level_window.max.y);
         }
     } catch (const Error&) {
