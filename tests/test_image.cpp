@@ -247,6 +247,21 @@ TEST(ImageFiles, APngWithoutItsEndChunkReads) {
     EXPECT_EQ(read_image_rgba8(path).pixels, image.pixels);
 }
 
+// The parts of a SLAM file as another tool might write them: one float channel named `channel`,
+// over `window`, with only linework:levels among our attributes.
+std::vector<Imf::Header> slam_part_headers(int levels, const Imath::Box2i& window, const char* channel) {
+    std::vector<Imf::Header> headers;
+    for (int i = 0; i < levels; ++i) {
+        Imf::Header header(window, window);
+        header.channels().insert(channel, Imf::Channel(Imf::FLOAT));
+        header.setName("level" + std::to_string(i));
+        header.setType(Imf::SCANLINEIMAGE);
+        header.insert("linework:levels", Imf::IntAttribute(levels));
+        headers.push_back(header);
+    }
+    return headers;
+}
+
 // A SLAM written by another tool: parts whose data window starts far from the origin (the
 // pointer arithmetic to its corner overflowed: UBSan stopped there) and whose one channel is
 // not named "Y" (read by position, as OpenImageIO read it).
@@ -255,15 +270,7 @@ TEST(SlamFiles, AnotherToolsLayoutReads) {
     std::vector<float> ink(size_t(levels) * length * height);
     for (size_t i = 0; i < ink.size(); ++i) ink[i] = float(i % 97) / 96.0f;
     const Imath::Box2i window({5, 1000000000}, {5 + length - 1, 1000000000 + height - 1});
-    std::vector<Imf::Header> headers;
-    for (int i = 0; i < levels; ++i) {
-        Imf::Header header(window, window);
-        header.channels().insert("ink", Imf::Channel(Imf::FLOAT));
-        header.setName("level" + std::to_string(i));
-        header.setType(Imf::SCANLINEIMAGE);
-        header.insert("linework:levels", Imf::IntAttribute(levels));
-        headers.push_back(header);
-    }
+    const std::vector<Imf::Header> headers = slam_part_headers(levels, window, "ink");
     const fs::path path = test::temp_dir() / "other.exr";
     {
         Imf::MultiPartOutputFile file(path.c_str(), headers.data(), levels);
@@ -287,15 +294,7 @@ TEST(SlamFiles, AnotherToolsLayoutReads) {
 // of 65536 × 1024 is refused before anything is allocated.
 TEST(SlamFiles, AHeaderClaimingTooManyTexelsIsRefused) {
     const int levels = 64;
-    std::vector<Imf::Header> headers;
-    for (int i = 0; i < levels; ++i) {
-        Imf::Header header(65536, 1024);
-        header.channels().insert("Y", Imf::Channel(Imf::FLOAT));
-        header.setName("level" + std::to_string(i));
-        header.setType(Imf::SCANLINEIMAGE);
-        header.insert("linework:levels", Imf::IntAttribute(levels));
-        headers.push_back(header);
-    }
+    const std::vector<Imf::Header> headers = slam_part_headers(levels, Imath::Box2i({0, 0}, {65535, 1023}), "Y");
     const fs::path path = test::temp_dir() / "huge.exr";
     { Imf::MultiPartOutputFile file(path.c_str(), headers.data(), levels); }  // headers only: no pixels written
     try {

@@ -22,27 +22,17 @@ constexpr int kLargestSide = 16384;  // 16384² RGBA is 1 GiB
 // libpng reports errors through a callback that must not return: it records the message and
 // jumps back to the setjmp of the phase that called libpng. The functions holding a setjmp
 // create no object with a destructor after it (C++ forbids jumping over one), so all state
-// lives in PngReader or PngWriter, constructed by the caller before any jump.
-struct PngReader {
+// lives in a PngStream, constructed by the caller before any jump.
+struct PngStream {
+    bool writing = false;
     std::FILE* file = nullptr;
     png_structp png = nullptr;
     png_infop info = nullptr;
     std::string error;  // libpng's error pointer
 
-    ~PngReader() {
-        if (png) png_destroy_read_struct(&png, info ? &info : nullptr, nullptr);
-        if (file) std::fclose(file);
-    }
-};
-
-struct PngWriter {
-    std::FILE* file = nullptr;
-    png_structp png = nullptr;
-    png_infop info = nullptr;
-    std::string error;  // libpng's error pointer
-
-    ~PngWriter() {
-        if (png) png_destroy_write_struct(&png, info ? &info : nullptr);
+    ~PngStream() {
+        if (png && writing) png_destroy_write_struct(&png, info ? &info : nullptr);
+        if (png && !writing) png_destroy_read_struct(&png, info ? &info : nullptr, nullptr);
         if (file) std::fclose(file);
     }
 };
@@ -56,24 +46,24 @@ void on_png_warning(png_structp, png_const_charp) {}  // e.g. an iCCP profile li
 
 // libpng's own reader says only "Read Error" at the end of a file cut short.
 void read_bytes(png_structp png, png_bytep data, size_t length) {
-    auto* reader = static_cast<PngReader*>(png_get_io_ptr(png));
+    auto* reader = static_cast<PngStream*>(png_get_io_ptr(png));
     if (std::fread(data, 1, length, reader->file) != length)
         png_error(png, std::ferror(reader->file) ? "the file could not be read" : "the file ends before its image does");
 }
 
 // libpng's own writer says only "Write Error"; the system's reason (a full disk) is kept.
 void write_bytes(png_structp png, png_bytep data, size_t length) {
-    auto* writer = static_cast<PngWriter*>(png_get_io_ptr(png));
+    auto* writer = static_cast<PngStream*>(png_get_io_ptr(png));
     if (std::fwrite(data, 1, length, writer->file) != length) png_error(png, std::strerror(errno));
 }
 
 void flush_bytes(png_structp png) {
-    auto* writer = static_cast<PngWriter*>(png_get_io_ptr(png));
+    auto* writer = static_cast<PngStream*>(png_get_io_ptr(png));
     if (std::fflush(writer->file) != 0) png_error(png, std::strerror(errno));
 }
 
 // Reads the header and sets the transforms to 8-bit RGBA. False with reader.error set on failure.
-bool read_header(PngReader& reader, png_uint_32& width, png_uint_32& height) {
+bool read_header(PngStream& reader, png_uint_32& width, png_uint_32& height) {
     if (setjmp(png_jmpbuf(reader.png))) return false;
     png_set_read_fn(reader.png, &reader, read_bytes);
     png_read_info(reader.png, reader.info);
@@ -92,7 +82,7 @@ bool read_header(PngReader& reader, png_uint_32& width, png_uint_32& height) {
     return true;
 }
 
-bool read_rows(PngReader& reader, png_bytepp rows) {
+bool read_rows(PngStream& reader, png_bytepp rows) {
     if (setjmp(png_jmpbuf(reader.png))) return false;
     // Not png_read_end: the chunks after the pixels (IEND, text) change nothing read, and
     // OpenImageIO read a file whose IEND was missing.
@@ -104,7 +94,7 @@ bool read_rows(PngReader& reader, png_bytepp rows) {
 // line drawing's flat runs compress best unfiltered (the default scene's frame 0 at 960×720:
 // 82 kB in 44 ms, against 108 kB in 95 ms with libpng's adaptive filters; OpenImageIO wrote
 // 98 kB).
-bool write_rows(PngWriter& writer, const ImageRGBA8& image) {
+bool write_rows(PngStream& writer, const ImageRGBA8& image) {
     if (setjmp(png_jmpbuf(writer.png))) return false;
     png_set_write_fn(writer.png, &writer, write_bytes, flush_bytes);
     png_set_compression_level(writer.png, 6);
@@ -123,7 +113,7 @@ bool write_rows(PngWriter& writer, const ImageRGBA8& image) {
 
 ImageRGBA8 read_png(const std::filesystem::path& path) {
     const std::string name = path.string();
-    PngReader reader;
+    PngStream reader;
     reader.file = std::fopen(name.c_str(), "rb");
     if (!reader.file) throw Error(name + ": cannot read image: cannot open the file");
     reader.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &reader.error, on_png_error, on_png_warning);
@@ -144,7 +134,7 @@ ImageRGBA8 read_png(const std::filesystem::path& path) {
 
 void write_png(const std::filesystem::path& path, const ImageRGBA8& image) {
     const std::string name = path.string();
-    PngWriter writer;
+    PngStream writer{.writing = true};
     writer.file = std::fopen(name.c_str(), "wb");
     if (!writer.file) throw Error(name + ": cannot write: " + std::strerror(errno));
     writer.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &writer.error, on_png_error, on_png_warning);
