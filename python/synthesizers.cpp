@@ -17,6 +17,7 @@
 #include "io/image_io.h"
 #include "io/slam_io.h"
 #include "ribbon/avoidance.h"
+#include "ribbon/dp.h"
 #include "ribbon/exemplar.h"
 #include "ribbon/exemplar_gen.h"
 #include "ribbon/problem.h"
@@ -172,11 +173,8 @@ pyb::array_t<T> vector_array(const std::vector<T>& v) {
 pyb::dict ribbon_info(const RibbonSynthesis& s, const RibbonSynthesisDesc& desc, const Context& ctx) {
     std::vector<int32_t> positions;
     for (const glm::ivec2& u : s.solution.positions) positions.insert(positions.end(), {u.x, u.y});
-    pyb::list empty, cut;
-    for (size_t r = 0; r < s.solution.rules.size(); ++r) {
-        if (s.solution.rules[r] == ValidityRule::Empty) empty.append(r);
-        if (s.solution.rules[r] > ValidityRule::Empty) cut.append(r);
-    }
+    const LooserRows looser = looser_rows(s.solution);
+    pyb::list empty = pyb::cast(looser.empty), cut = pyb::cast(looser.cut);
     pyb::dict info("device"_a = ctx.info().describe(), "width"_a = desc.params.width, "piece"_a = desc.params.piece,
                    "scale"_a = desc.params.scale, "size"_a = pyb::make_tuple(desc.width, desc.height),
                    "pieces"_a = s.solution.positions.size(),
@@ -264,11 +262,8 @@ pyb::object ribbon(const pyb::object& exemplar_value, const pyb::object& curve_v
     });
     check_validation(*ctx);
 
-    size_t cut = 0, empty = 0;
-    for (ValidityRule rule : s.solution.rules) {
-        cut += rule > ValidityRule::Empty ? 1 : 0;
-        empty += rule == ValidityRule::Empty ? 1 : 0;
-    }
+    const LooserRows looser = looser_rows(s.solution);
+    const size_t cut = looser.cut.size(), empty = looser.empty.size();
     if (empty == s.solution.rules.size())  // a blank image is no result, as for the command
         throw pyb::value_error("curve: the ribbon drew nothing: every piece lies where the ribbon overlaps itself" +
                                std::string(user.pixels.empty() ? " (a curve that doubles back within the ribbon's width)"

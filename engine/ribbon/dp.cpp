@@ -139,4 +139,13 @@ std::vector<glm::ivec2> random_positions(const DpProblem& problem, const std::ve
     return out;
 }
 
+LooserRows looser_rows(const RibbonSolution& solution) {
+    LooserRows rows;
+    for (size_t r = 0; r < solution.rules.size(); ++r) {
+        if (solution.rules[r] == ValidityRule::Empty) rows.empty.push_back(r);
+        if (solution.rules[r] > ValidityRule::Empty) rows.cut.push_back(r);
+    }
+    return rows;
+}
+
 }  // namespace lw

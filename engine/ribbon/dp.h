@@ -61,6 +61,14 @@ struct RibbonSolution {
 [[nodiscard]] RibbonSolution solve_ribbon(const DpProblem& problem, const DpRunner& runner, uint64_t seed,
                                           const DpRunOptions& options = {});
 
+// The rows of a solution that needed a looser rule than Band, in row order: pieces left
+// empty (Empty: no ink avoids the overlap there) and pieces that may cut the pattern (Edges,
+// Any). What the command line prints and Python warns of and returns.
+struct LooserRows {
+    std::vector<size_t> empty, cut;
+};
+[[nodiscard]] LooserRows looser_rows(const RibbonSolution& solution);
+
 // D(prev + R_row−1, cur + L_row): the seam cost between rows row−1 and row.
 [[nodiscard]] float seam_cost(const DpProblem& problem, size_t row, glm::ivec2 prev, glm::ivec2 cur);
 // Σ of seam costs along `positions` (one per row), summed in row order as the DP does.

@@ -67,9 +67,9 @@ void check_ribbon_in_image(const Ribbon& ribbon, int width, int height) {
 Ribbon build_ribbon(const ArclengthCurve& curve, const RibbonParams& params) {
     if (!(params.width > 0.0f) || !std::isfinite(params.width))
         throw ParameterError("ribbon width", ": the ribbon width b must be a positive number of pixels");
-    if (params.width > 16384.0f)
-        throw ParameterError("ribbon width", " " + std::to_string(int(params.width)) +
-                                                 ": a ribbon wider than the largest image (16384 px)");
+    if (params.width > 16384.0f)  // (number_text: int() of a width past 2^31 was undefined)
+        throw ParameterError("ribbon width",
+                             ": " + number_text(params.width) + " px: a ribbon wider than the largest image (16384 px)");
     if (!(params.piece > 0.0f) || !std::isfinite(params.piece))
         throw ParameterError("ribbon piece", ": the piece length δ must be a positive number of pixels");
     if (!(params.scale > 0.0f) || !std::isfinite(params.scale))

@@ -17,6 +17,7 @@
 #include "gpu/context.h"
 #include "io/image_io.h"
 #include "ribbon/avoidance.h"
+#include "ribbon/dp.h"
 #include "vector/curve.h"
 #include "ribbon/exemplar_gen.h"
 #include "ribbon/problem.h"
@@ -81,11 +82,9 @@ int run_ribbon(const RibbonOptions& o) {
     desc.seed = o.seed;
     desc.stitch = o.stitch;
     desc.site = site;
-    // Named by its flag, not through the curve whose ribbon it makes too wide for any image.
-    if (desc.params.width > 16384.0f)
-        throw usage_error(std::string(o.width ? "--width" : "--scale") + ": " + number_text(desc.params.width) +
-                          " px: a ribbon wider than the largest image (16384 px)");
-    const Ribbon ribbon = build_ribbon(curve, desc.params);
+    // A width too large for any image is named by the flag it came from: without --width, --scale.
+    const Ribbon ribbon = flags_named({{"ribbon width", o.width ? "--width" : "--scale"}},
+                                      [&] { return build_ribbon(curve, desc.params); });
     if (!size) size = default_ribbon_size(ribbon, curve_points.page, o.curve);
     desc.width = size->x;
     desc.height = size->y;
@@ -137,15 +136,15 @@ int run_ribbon(const RibbonOptions& o) {
                 double(s.greedy_cost), double(s.random_cost),
                 curve.closed() ? (s.solution.closed_by_first_dp ? "; cycle from one DP" : "; cycle from a fixed-start DP")
                                : "");
-    // Rows that needed a looser validity rule (engine/ribbon/problem.h).
-    std::string cut, empty;
-    size_t cut_count = 0, empty_count = 0;
-    for (size_t r = 0; r < s.solution.rules.size(); ++r) {
-        if (s.solution.rules[r] == ValidityRule::Empty && empty_count++ < 8)
-            empty += (empty.empty() ? "" : ", ") + std::to_string(r);
-        if (s.solution.rules[r] > ValidityRule::Empty && cut_count++ < 8)
-            cut += (cut.empty() ? "" : ", ") + std::to_string(r);
-    }
+    // Rows that needed a looser validity rule (engine/ribbon/problem.h), the first 8 named.
+    const LooserRows looser = looser_rows(s.solution);
+    const auto first_rows = [](const std::vector<size_t>& rows) {
+        std::string text;
+        for (size_t i = 0; i < std::min<size_t>(rows.size(), 8); ++i) text += (i ? ", " : "") + std::to_string(rows[i]);
+        return text;
+    };
+    const std::string cut = first_rows(looser.cut), empty = first_rows(looser.empty);
+    const size_t cut_count = looser.cut.size(), empty_count = looser.empty.size();
     if (empty_count > 0)
         std::printf("avoidance: %zu pieces (%s%s) lie where no ink can avoid the overlap and are left empty\n",
                     empty_count, empty.c_str(), empty_count > 8 ? ", …" : "");
