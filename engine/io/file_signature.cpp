@@ -6,25 +6,16 @@
 
 namespace lw {
 
-namespace {
-
-template <size_t N>
-bool starts_with(const std::filesystem::path& path, const std::array<unsigned char, N>& bytes) {
+FileKind file_kind(const std::filesystem::path& path) {
+    constexpr std::array<unsigned char, 8> kPng = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    constexpr std::array<unsigned char, 4> kExr = {0x76, 0x2f, 0x31, 0x01};
+    std::array<unsigned char, 8> head{};
     std::ifstream in(path, std::ios::binary);
-    std::array<char, N> head{};
-    in.read(head.data(), N);
-    return in.gcount() == std::streamsize(N) &&
-           std::equal(bytes.begin(), bytes.end(), head.begin(), [](unsigned char a, char b) { return a == static_cast<unsigned char>(b); });
-}
-
-}  // namespace
-
-bool has_png_signature(const std::filesystem::path& path) {
-    return starts_with(path, std::array<unsigned char, 8>{0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'});
-}
-
-bool has_exr_signature(const std::filesystem::path& path) {
-    return starts_with(path, std::array<unsigned char, 4>{0x76, 0x2f, 0x31, 0x01});
+    in.read(reinterpret_cast<char*>(head.data()), std::streamsize(head.size()));
+    const auto got = size_t(in.gcount());
+    if (got >= kPng.size() && std::equal(kPng.begin(), kPng.end(), head.begin())) return FileKind::Png;
+    if (got >= kExr.size() && std::equal(kExr.begin(), kExr.end(), head.begin())) return FileKind::Exr;
+    return FileKind::Other;
 }
 
 }  // namespace lw

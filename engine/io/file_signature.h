@@ -7,10 +7,12 @@
 
 namespace lw {
 
-// PNG's 8-byte signature.
-[[nodiscard]] bool has_png_signature(const std::filesystem::path& path);
+enum class FileKind {
+    Png,    // PNG's 8-byte signature
+    Exr,    // OpenEXR's magic number (76 2f 31 01)
+    Other,  // anything else, a file too short for either, or one that cannot be opened
+};
 
-// OpenEXR's magic number (76 2f 31 01).
-[[nodiscard]] bool has_exr_signature(const std::filesystem::path& path);
+[[nodiscard]] FileKind file_kind(const std::filesystem::path& path);
 
 }  // namespace lw

@@ -92,8 +92,9 @@ ReadThroughOpenImageIO openimageio_reader(std::string& why_not) {
 ImageRGBA8 read_image_rgba8(const std::filesystem::path& path) {
     if (!std::filesystem::exists(path)) throw Error(path.string() + ": no such file");
     if (std::filesystem::is_directory(path)) throw Error(path.string() + ": a folder, not an image");
-    if (has_png_signature(path)) return read_png(path);
-    if (has_exr_signature(path)) refuse_slam(path);
+    const FileKind kind = file_kind(path);
+    if (kind == FileKind::Png) return read_png(path);
+    if (kind == FileKind::Exr) refuse_slam(path);
     return read_image_rgba8_through_openimageio(path);
 }
 

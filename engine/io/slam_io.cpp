@@ -76,7 +76,7 @@ Slam read_slam(const std::filesystem::path& path) {
     const std::string name = path.string();
     if (!std::filesystem::exists(path)) throw Error(name + ": no such SLAM file");
     if (std::filesystem::is_directory(path)) throw Error(name + ": a folder, not a SLAM file (.exr)");
-    if (!has_exr_signature(path))
+    if (file_kind(path) != FileKind::Exr)
         throw Error(name + ": not a SLAM file (not an OpenEXR file; `linework slam` and `linework slam-pattern` make SLAMs)");
     Slam slam;
     try {
