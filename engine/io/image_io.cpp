@@ -64,27 +64,27 @@ std::vector<std::filesystem::path> openimageio_module_candidates() {
     return candidates;
 }
 
-ReadThroughOpenImageIO openimageio_reader(std::string& why_not) {
-    static std::string load_error;
-    static const ReadThroughOpenImageIO reader = [] {
-        std::string failures;  // of candidates that exist: why each did not load
-        std::string looked;
-        const auto add = [](std::string& list, const std::string& item) { list += (list.empty() ? "" : "; ") + item; };
-        for (const std::filesystem::path& candidate : openimageio_module_candidates()) {
-            add(looked, candidate.parent_path().string());
-            if (!std::filesystem::exists(candidate)) continue;
-            if (void* module = dlopen(candidate.c_str(), RTLD_NOW | RTLD_LOCAL)) {
-                if (void* entry = dlsym(module, kOpenImageIOEntry)) return reinterpret_cast<ReadThroughOpenImageIO>(entry);
-                add(failures, candidate.string() + " has no " + kOpenImageIOEntry);
-            } else {
-                add(failures, one_line(dlerror()));
-            }
+// The module's entry, or why there is none.
+struct OpenImageIOReader {
+    ReadThroughOpenImageIO read = nullptr;
+    std::string why_not;
+};
+
+OpenImageIOReader load_openimageio_reader() {
+    std::string failures;  // of candidates that exist: why each did not load
+    std::string looked;
+    const auto add = [](std::string& list, const std::string& item) { list += (list.empty() ? "" : "; ") + item; };
+    for (const std::filesystem::path& candidate : openimageio_module_candidates()) {
+        add(looked, candidate.parent_path().string());
+        if (!std::filesystem::exists(candidate)) continue;
+        if (void* module = dlopen(candidate.c_str(), RTLD_NOW | RTLD_LOCAL)) {
+            if (void* entry = dlsym(module, kOpenImageIOEntry)) return {reinterpret_cast<ReadThroughOpenImageIO>(entry), ""};
+            add(failures, candidate.string() + " has no " + kOpenImageIOEntry);
+        } else {
+            add(failures, one_line(dlerror()));
         }
-        load_error = failures.empty() ? "not found in " + looked : failures;
-        return ReadThroughOpenImageIO{};
-    }();
-    why_not = load_error;
-    return reader;
+    }
+    return {nullptr, failures.empty() ? "not found in " + looked : failures};
 }
 
 }  // namespace
@@ -99,14 +99,13 @@ ImageRGBA8 read_image_rgba8(const std::filesystem::path& path) {
 }
 
 ImageRGBA8 read_image_rgba8_through_openimageio(const std::filesystem::path& path) {
-    std::string why_not;
-    const ReadThroughOpenImageIO reader = openimageio_reader(why_not);
-    if (!reader)
+    static const OpenImageIOReader reader = load_openimageio_reader();  // once, on first use
+    if (!reader.read)
         throw Error(path.string() + ": cannot read image: it is not a PNG, and the reader of other formats (" +
-                    kOpenImageIOModuleName + ") could not be loaded: " + why_not);
+                    kOpenImageIOModuleName + ") could not be loaded: " + reader.why_not);
     ImageRGBA8 image;
     std::string error;
-    if (!reader(path.string().c_str(), &image, &error)) throw Error(path.string() + ": " + one_line(error));
+    if (!reader.read(path.string().c_str(), &image, &error)) throw Error(path.string() + ": " + one_line(error));
     return image;
 }
 
