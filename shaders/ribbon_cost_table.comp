@@ -2,7 +2,8 @@
 #extension GL_GOOGLE_include_directive : require
 // computeCostTable (Zhou et al. 2013, §2): D(v + R_i−1, u + L_i) = Σ_k ξ(R̄[k], L̄[k]) for
 // every pair of a valid position v of piece i−1 (right edges from extractColumns) and a valid
-// position u of piece i (left edge: a column of E), one invocation per pair, C samples each.
+// position u of piece i (its left edge's offsets: a column of E where the piece is copied along
+// its tangent, engine/ribbon/ribbon.h), one invocation per pair, C samples each.
 // A 16 × 16 tile of pairs stages 16 right edges and 16 left edges in shared memory, 32
 // samples at a time, so that each texel is read from memory once per tile instead of 16
 // times. k is summed from 0 to C−1 in every invocation, as the C++ reference does.
@@ -14,7 +15,7 @@ layout(local_size_x = RIBBON_TILE, local_size_y = RIBBON_TILE) in;
 layout(std430, binding = 0) readonly buffer Exemplar { uint texels[]; };
 layout(std430, binding = 1) readonly buffer Columns { uint columns[]; };  // R̄, prev_count × C
 layout(std430, binding = 2) readonly buffer Valid { uint valid[]; };      // positions of piece i
-layout(std430, binding = 3) readonly buffer Probes { ivec2 probes[]; };   // left-edge offsets at left_offset
+layout(std430, binding = 3) readonly buffer Probes { ivec2 probes[]; };   // piece i's left-edge offsets at left_offset
 layout(std430, binding = 4) writeonly buffer Table { float table[]; };
 
 layout(push_constant) uniform CostPush {

@@ -6,7 +6,8 @@
 // Forbidden pixels take the nearest texel instead: the DP validated exactly that texel as
 // transparent there (§3.1), and a bilinear sample could pull in an opaque neighbour. With stitching
 // (§3.2, "Propagation") the point first moves by x/(x + r)·Δ·w, Δ = T[i] − i:
-//  - d interpolates the piece's top and bottom edge directions by the vertical position of p;
+//  - d interpolates the piece's top and bottom edge directions by p's position down the left
+//    edge l (vertical where the piece is copied along its tangent, engine/ribbon/ribbon.h);
 //  - p is projected along d onto the right edge (w), giving the edge position i (in samples);
 //  - x and r are p's distances along d to the left and right edges, so the deformation is
 //    full on the right edge and vanishes on the left edge.
@@ -24,7 +25,8 @@ layout(push_constant) uniform RibbonDrawPush {
 struct PieceDraw {
     vec4 corners;  // xy: top-left corner A in E (piece placed), zw: top-right corner
     vec4 edges;    // xy: top edge (A → top right), zw: bottom edge (bottom left → bottom right)
-    vec4 right;    // xy: right edge w (top right → bottom right), z: s
+    vec4 right;    // xy: right edge w (top right → bottom right)
+    vec4 left;     // xy: left edge l (A → bottom left)
     ivec4 remap;   // x: offset of T in Remaps (−1: none), y: C
 };
 
@@ -38,19 +40,21 @@ layout(location = 1) flat in uint in_piece;
 
 layout(location = 0) out vec4 out_color;
 
+float cross2(vec2 a, vec2 b) { return a.x * b.y - a.y * b.x; }
+
 vec2 deformation(vec2 p, PieceDraw pd) {
-    vec2 A = pd.corners.xy, D = pd.corners.zw, w = pd.right.xy;
-    float s = pd.right.z;
+    vec2 A = pd.corners.xy, D = pd.corners.zw, w = pd.right.xy, l = pd.left.xy;
     int C = pd.remap.y;
-    vec2 d = mix(pd.edges.xy, pd.edges.zw, clamp((p.y - A.y) / s, 0.0, 1.0));
-    if (abs(d.x) < 1e-4) return vec2(0.0);
+    vec2 d = mix(pd.edges.xy, pd.edges.zw, clamp(dot(p - A, l) / dot(l, l), 0.0, 1.0));
+    float across = cross2(d, l);  // d's component across the left edge, times |l|
+    if (abs(across) < 1e-4 * length(l)) return vec2(0.0);
     // p + a·d = D + m·w
     float det = w.x * d.y - d.x * w.y;
     if (abs(det) < 1e-6) return vec2(0.0);
     vec2 q = D - p;
     float a = (w.x * q.y - q.x * w.y) / det;
     float m = (d.x * q.y - q.x * d.y) / det;
-    float x = (p.x - A.x) / d.x;
+    float x = cross2(p - A, l) / across;  // p − x·d lies on the left edge
     if (x + a <= 1e-6) return vec2(0.0);
     float ratio = clamp(x / (x + a), 0.0, 1.0);
     float i = clamp(m * float(C) - 0.5, 0.0, float(C - 1));

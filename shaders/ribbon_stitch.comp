@@ -10,7 +10,7 @@ layout(local_size_x = RIBBON_GROUP) in;
 
 layout(std430, binding = 0) readonly buffer Exemplar { uint texels[]; };
 layout(std430, binding = 1) readonly buffer Probes { ivec2 probes[]; };
-layout(std430, binding = 2) readonly buffer Seams { ivec4 seams[]; };  // 2 per seam: (prev.xy, cur.xy), (right offset, -, -, -)
+layout(std430, binding = 2) readonly buffer Seams { ivec4 seams[]; };  // 2 per seam: (prev.xy, cur.xy), (right, left offset, -, -)
 layout(std430, binding = 3) buffer Rows { float rows[]; };             // 2 × C per seam of the batch
 layout(std430, binding = 4) buffer Moves { uint moves[]; };            // ⌈C² / 16⌉ per seam of the batch
 layout(std430, binding = 5) buffer Remap { int remap[]; };             // C per seam
@@ -18,7 +18,7 @@ layout(std430, binding = 6) writeonly buffer Errors { float errors[]; };  // bef
 
 layout(push_constant) uniform StitchPush {
     int width, height, samples, seam_count;
-    int left_offset, moves_per_seam, seam_begin, batch;  // this dispatch: seams [begin, begin + batch)
+    int pad, moves_per_seam, seam_begin, batch;  // this dispatch: seams [begin, begin + batch)
 } pc;
 
 uint texel(ivec2 p) {
@@ -33,13 +33,13 @@ void main() {
     if (local >= pc.batch || seam >= pc.seam_count) return;
     int C = pc.samples;
     ivec4 pos = seams[2 * seam];
-    int right_offset = seams[2 * seam + 1].x;
+    int right_offset = seams[2 * seam + 1].x, left_offset = seams[2 * seam + 1].y;
     ivec2 prev = pos.xy, cur = pos.zw;
     int row_base = local * 2 * C;
     int move_base = local * pc.moves_per_seam;
 
     for (int s = 0; s < C; ++s) {
-        uint l = texel(cur + probes[pc.left_offset + s]);
+        uint l = texel(cur + probes[left_offset + s]);
         int here = row_base + (s & 1) * C, above = row_base + ((s + 1) & 1) * C;
         uint packed = 0u;
         for (int t = 0; t < C; ++t) {
@@ -77,7 +77,7 @@ void main() {
     float best_c = uintBitsToFloat(0x7f800000u);
     int best_t = t;
     while (true) {
-        uint l = texel(cur + probes[pc.left_offset + s]);
+        uint l = texel(cur + probes[left_offset + s]);
         uint r = texel(prev + probes[right_offset + t]);
         float c = ribbon_xi(l, r);
         if (c <= best_c) { best_c = c; best_t = t; }
@@ -96,11 +96,11 @@ void main() {
 
     precise float before = 0.0, after = 0.0;
     for (int k = 0; k < C; ++k) {
-        uint l = texel(cur + probes[pc.left_offset + k]);
+        uint l = texel(cur + probes[left_offset + k]);
         before += ribbon_xi(l, texel(prev + probes[right_offset + k]));
     }
     for (int k = 0; k < C; ++k) {
-        uint l = texel(cur + probes[pc.left_offset + k]);
+        uint l = texel(cur + probes[left_offset + k]);
         after += ribbon_xi(l, texel(prev + probes[right_offset + remap[seam * C + k]]));
     }
     errors[2 * seam] = before;

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "core/error.h"
+#include "io/image_io.h"
 #include "ribbon/avoidance.h"
 #include "vector/curve.h"
 #include "ribbon/dp_reference.h"
@@ -195,6 +196,47 @@ TEST(RibbonGeometry, SlicesIntoPiecesOfLengthDelta) {
     EXPECT_THROW((void)build_ribbon(line, {.width = 10, .piece = -1, .scale = 10}), Error);
 }
 
+// Along a bend each piece is copied along its chord (ribbon.h): the middles of its left and
+// right edges lie at one height in E, so a straight pattern enters and leaves the piece on
+// the curve. (Copied along the tangent at its start, as §1.2 has it, the right edge's middle
+// sits the arc's sagitta, κδ²/2 scaled by s/b, towards the outside: 1.2 texels here.)
+TEST(RibbonGeometry, PiecesAreCopiedAlongTheirChord) {
+    Curve2D circle{{}, true};
+    for (int i = 0; i < 360; ++i) {
+        const float a = 2.0f * float(M_PI) * float(i) / 360.0f;
+        circle.points.push_back({150.0f + 100.0f * std::cos(a), 150.0f + 100.0f * std::sin(a)});
+    }
+    const Ribbon r = build_ribbon(ArclengthCurve(circle), {.width = 44, .piece = 22, .scale = 22});
+    ASSERT_GE(r.pieces.size(), 28u);
+    for (size_t i = 0; i < r.pieces.size(); ++i) {
+        const RibbonPiece& p = r.pieces[i];
+        const glm::vec2 left_middle = glm::vec2(r.to_exemplar(i, {0, 0}, p.top_left) + r.to_exemplar(i, {0, 0}, p.bottom_left)) * 0.5f;
+        const glm::vec2 right_middle = (r.to_exemplar(i, {0, 0}, p.top_right) + r.to_exemplar(i, {0, 0}, p.bottom_right)) * 0.5f;
+        EXPECT_NEAR(right_middle.y, left_middle.y, 1e-3f) << "piece " << i;
+        const glm::vec2 chord = 0.5f * (p.top_right + p.bottom_right - p.top_left - p.bottom_left);
+        EXPECT_NEAR(right_middle.x - left_middle.x, glm::length(chord) * r.scale / r.width, 1e-3f) << "piece " << i;
+        // The left edge in E is the similarity's image of the piece's own left edge.
+        const glm::dvec2 left = left_edge_in_exemplar(p, r.scale);
+        const glm::vec2 bottom_left = r.to_exemplar(i, {0, 0}, p.bottom_left) - r.to_exemplar(i, {0, 0}, p.top_left);
+        EXPECT_NEAR(left.x, bottom_left.x, 1e-3) << "piece " << i;
+        EXPECT_NEAR(left.y, bottom_left.y, 1e-3) << "piece " << i;
+        EXPECT_GT(std::abs(left.x), 0.5) << "piece " << i << ": a bend of 0.22 rad tilts the left edge";
+    }
+}
+
+// A chain around a circle of radius 4.5δ closes without a cut: no seam puts an ink pixel
+// against background (each would cost γ). With pieces copied along their tangent the
+// pattern drifted outwards and jumped back four times (seams of 9,753).
+TEST(RibbonDp, AChainAroundACircleHasNoCut) {
+    const Exemplar e = make_exemplar(read_image_rgba8(test::source_dir() / "scenes/exemplars/chain.png"), "chain.png");
+    const Ribbon r = build_ribbon(ArclengthCurve(load_curve(test::source_dir() / "scenes/curves/circle.json")),
+                                  {.width = 44, .piece = 22, .scale = default_ribbon_scale(e)});
+    const DpProblem p = build_problem(e, r);
+    const RibbonSolution s = solve_ribbon(p, run_dp_reference, 1);
+    ASSERT_EQ(s.seam_costs.size(), r.pieces.size());
+    for (size_t i = 0; i < s.seam_costs.size(); ++i) EXPECT_LT(s.seam_costs[i], kRibbonGamma) << "seam " << i;
+}
+
 TEST(RibbonCost, XiIsDistanceOrGamma) {
     const uint32_t red = pack_rgba(255, 0, 0, 255), dark_red = pack_rgba(252, 4, 0, 200);
     EXPECT_FLOAT_EQ(xi(red, dark_red), 5.0f);  // both opaque: ‖p − q‖
@@ -298,12 +340,16 @@ TEST(RibbonDp, ClosedCurveEndsWhereItStarts) {
         EXPECT_EQ(s.total_cost, path_cost(p, s.positions));
         EXPECT_EQ(s.seam_costs.size(), r.pieces.size());  // the closing seam included
         // A single DP approximates the optimal cycle (§1.5): never below the true optimum.
+        // Measured: optimal for seeds 1, 3 and 6, 1.018-1.039 for 4 and 5, 1.218 for seed 2,
+        // whose optimal cycle starts where no terminal position of the single DP leads back
+        // (a second single DP cut half-way round gives 1.208). With pieces copied along their
+        // tangents (before the chord, ribbon.h) all six were within 3 %.
         const float optimum = optimal_cycle_cost(p, run_dp_reference(p).valid[0]);
         EXPECT_GE(s.total_cost, optimum);
-        EXPECT_LE(s.total_cost, 1.05f * optimum) << "seed " << seed;  // measured: within 3 %
+        EXPECT_LE(s.total_cost, 1.25f * optimum) << "seed " << seed;
         exact += s.total_cost == optimum;
     }
-    EXPECT_GE(exact, 2) << "the single-DP cycle should often be the optimal one";
+    EXPECT_GE(exact, 3) << "the single-DP cycle should often be the optimal one";
 }
 
 // The bounded row update (most entries never summed) gives the full table's costs and back
@@ -364,7 +410,7 @@ TEST(RibbonDp, BoundedRowHandlesTiesInfinitiesAndNaN) {
     const std::vector<uint32_t> right = extract_columns(p, 0, t.valid[0]);
     const std::vector<uint32_t>& valid = t.valid[1];
     const size_t n = t.valid[0].size();
-    const std::vector<float> table = compute_cost_table(p, right, valid);
+    const std::vector<float> table = compute_cost_table(p, 1, right, valid);
     size_t ties = 0;  // u whose lowest entry two or more v reach
     for (size_t u = 0; u < valid.size(); ++u) {
         float lowest = std::numeric_limits<float>::infinity();
@@ -385,14 +431,14 @@ TEST(RibbonDp, BoundedRowHandlesTiesInfinitiesAndNaN) {
         std::vector<float> full, bounded;
         std::vector<uint32_t> full_back, bounded_back;
         update_table_row(prev, table, valid.size(), full, full_back);
-        update_table_row_bounded(p, right, valid, prev, bounded, bounded_back);
+        update_table_row_bounded(p, 1, right, valid, prev, bounded, bounded_back);
         EXPECT_EQ(bounded_back, full_back);
         ASSERT_EQ(bounded.size(), full.size());
         for (size_t u = 0; u < full.size(); ++u) ASSERT_EQ(std::bit_cast<uint32_t>(bounded[u]), std::bit_cast<uint32_t>(full[u])) << u;
     }
     std::vector<float> none_costs;
     std::vector<uint32_t> none_back;
-    update_table_row_bounded(p, {}, valid, {}, none_costs, none_back);  // no previous position
+    update_table_row_bounded(p, 1, {}, valid, {}, none_costs, none_back);  // no previous position
     EXPECT_EQ(none_back, std::vector<uint32_t>(valid.size(), 0u));
     for (float c : none_costs) EXPECT_EQ(c, inf);
 }

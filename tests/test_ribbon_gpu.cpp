@@ -83,13 +83,15 @@ TEST_F(GpuTest, RibbonChunkedCostTableGivesTheSameResult) {
 }
 
 TEST_F(GpuTest, RibbonRelaxedRowsOnGpuEqualReference) {
-    // A hairpin tighter than the pieces can follow: some rows need a looser slicing rule.
+    // A hairpin tighter than the pieces can follow: some rows need a looser slicing rule (a
+    // radius of 3 px under a 16 px ribbon; copied along their chords, pieces follow 9 px
+    // with the strict rule).
     Curve2D hairpin;
     for (int i = 0; i <= 20; ++i) hairpin.points.push_back({10.0f + 3.0f * float(i), 20.0f});
     for (int k = 1; k < 12; ++k)
-        hairpin.points.push_back({70.0f + 9.0f * std::sin(float(M_PI) * float(k) / 12.0f),
-                                  29.0f - 9.0f * std::cos(float(M_PI) * float(k) / 12.0f)});
-    for (int i = 0; i <= 20; ++i) hairpin.points.push_back({70.0f - 3.0f * float(i), 38.0f});
+        hairpin.points.push_back({70.0f + 3.0f * std::sin(float(M_PI) * float(k) / 12.0f),
+                                  23.0f - 3.0f * std::cos(float(M_PI) * float(k) / 12.0f)});
+    for (int i = 0; i <= 20; ++i) hairpin.points.push_back({70.0f - 3.0f * float(i), 26.0f});
     const Exemplar e = make_exemplar(generate_exemplar("rope", 64, 24, 2), "rope");
     const DpProblem p = build_problem(e, build_ribbon(ArclengthCurve(hairpin), {.width = 16, .piece = 10, .scale = 24}));
     RibbonDpGpu gpu(ctx());

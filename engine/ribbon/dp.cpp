@@ -49,11 +49,11 @@ RibbonSolution make_solution(const DpProblem& problem, const DpTables& t, uint32
 
 float seam_cost(const DpProblem& problem, size_t row, glm::ivec2 prev, glm::ivec2 cur) {
     const Exemplar& e = *problem.exemplar;
-    const PieceProbes& left_piece = problem.rows[row - 1];
+    const PieceProbes &before = problem.rows[row - 1], &after = problem.rows[row];
     float d = 0.0f;
     for (int k = 0; k < problem.samples; ++k) {
-        const glm::ivec2 r = prev + left_piece.right[size_t(k)];
-        d += xi(e.at(r.x, r.y), e.at(cur.x, cur.y + problem.left_dy[size_t(k)]));
+        const glm::ivec2 r = prev + before.right[size_t(k)], l = cur + after.left[size_t(k)];
+        d += xi(e.at(r.x, r.y), e.at(l.x, l.y));
     }
     return d;
 }

@@ -43,7 +43,7 @@ static_assert(sizeof(FindValidPush) == 80 && sizeof(CostPush) == 32 && sizeof(Ex
 
 // Where each row's probe lists start in the one probe buffer.
 struct RowOffsets {
-    int32_t right, top, top_count, bottom, bottom_count, interior, interior_count, forbidden, forbidden_count;
+    int32_t left, right, top, top_count, bottom, bottom_count, interior, interior_count, forbidden, forbidden_count;
 };
 
 constexpr VkBufferUsageFlags kUsage =
@@ -75,11 +75,10 @@ void copy(VkCommandBuffer cmd, const Buffer& from, const Buffer& to, VkDeviceSiz
 }
 uint32_t groups(uint64_t n, uint32_t size) { return uint32_t((n + size - 1) / size); }
 
-// Every row's probes in one buffer, the left-edge offsets after them.
+// Every row's probes in one buffer.
 struct PackedProbes {
     std::vector<glm::ivec2> probes;
     std::vector<RowOffsets> offsets;  // per row
-    int32_t left = 0;                 // where the left-edge offsets start
 };
 PackedProbes pack_probes(const DpProblem& problem) {
     PackedProbes packed;
@@ -90,6 +89,7 @@ PackedProbes pack_probes(const DpProblem& problem) {
     };
     for (const PieceProbes& p : problem.rows) {
         RowOffsets o{};
+        o.left = append(p.left);
         o.right = append(p.right);
         o.top = append(p.top);
         o.top_count = int32_t(p.top.size());
@@ -101,8 +101,6 @@ PackedProbes pack_probes(const DpProblem& problem) {
         o.forbidden_count = int32_t(p.forbidden.size());
         packed.offsets.push_back(o);
     }
-    packed.left = int32_t(packed.probes.size());
-    for (int dy : problem.left_dy) packed.probes.push_back({0, dy});
     return packed;
 }
 
@@ -264,7 +262,8 @@ void DpRun::next_row(size_t i, DpTables& t) {
     ctx_.submit_and_wait([&](VkCommandBuffer cmd) {
         for (uint32_t begin = 0; begin < count; begin += chunk) {
             const uint32_t n = std::min(chunk, count - begin);
-            const CostPush cp{e_.width, e_.height, C_, int32_t(prev_count), int32_t(begin), int32_t(n), packed_.left, 0};
+            const CostPush cp{e_.width, e_.height, C_, int32_t(prev_count), int32_t(begin), int32_t(n),
+                                packed_.offsets[i].left, 0};
             k_.cost.dispatch(ctx_, cmd, {&exemplar_, &columns_, &valid_[cur_], &probes_, &table_}, &cp,
                              groups(n, RIBBON_TILE), groups(prev_count, RIBBON_TILE));
             barrier(cmd);

@@ -60,14 +60,15 @@ std::vector<uint32_t> extract_columns(const DpProblem& problem, size_t row, cons
 
 namespace {
 
-// L̄ of every valid position of a row's piece: column x of E from row y, at the left-edge
-// offsets; V × C texels, row-major (extract_columns' layout for the right edges).
-std::vector<uint32_t> left_edges(const DpProblem& problem, const std::vector<uint32_t>& valid) {
+// L̄ of every valid position of a row's piece, at its left-edge offsets; V × C texels,
+// row-major (extract_columns' layout for the right edges).
+std::vector<uint32_t> left_edges(const DpProblem& problem, size_t row, const std::vector<uint32_t>& valid) {
     const size_t C = size_t(problem.samples);
+    const std::vector<glm::ivec2>& left = problem.rows[row].left;
     std::vector<uint32_t> texels(valid.size() * C);
     for (size_t u = 0; u < valid.size(); ++u) {
         const glm::ivec2 p = problem.position(valid[u]);
-        for (size_t k = 0; k < C; ++k) texels[u * C + k] = problem.exemplar->at(p.x, p.y + problem.left_dy[k]);
+        for (size_t k = 0; k < C; ++k) texels[u * C + k] = problem.exemplar->at(p.x + left[k].x, p.y + left[k].y);
     }
     return texels;
 }
@@ -94,11 +95,11 @@ struct EdgeTexels {
 
 }  // namespace
 
-std::vector<float> compute_cost_table(const DpProblem& problem, const std::vector<uint32_t>& right_edges,
+std::vector<float> compute_cost_table(const DpProblem& problem, size_t row, const std::vector<uint32_t>& right_edges,
                                       const std::vector<uint32_t>& valid) {
     const size_t C = size_t(problem.samples);
     const size_t prev_count = right_edges.size() / C, count = valid.size();
-    const std::vector<uint32_t> left_texels = left_edges(problem, valid);
+    const std::vector<uint32_t> left_texels = left_edges(problem, row, valid);
     EdgeTexels left;
     left.resize(count, C);
     for (size_t u = 0; u < count; ++u)
@@ -106,7 +107,7 @@ std::vector<float> compute_cost_table(const DpProblem& problem, const std::vecto
     std::vector<float> table(prev_count * count, 0.0f);
     parallel_for(prev_count, 16, [&](size_t begin, size_t end, size_t) {
         for (size_t v = begin; v < end; ++v) {
-            float* row = table.data() + v * count;
+            float* entries = table.data() + v * count;
             for (size_t k = 0; k < C; ++k) {
                 // ξ(q, L̄_u[k]) for every u: the same terms as xi(), in the same order per entry.
                 const uint32_t q = right_edges[v * C + k];
@@ -119,7 +120,7 @@ std::vector<float> compute_cost_table(const DpProblem& problem, const std::vecto
                 for (size_t u = 0; u < count; ++u) {
                     const float dr = qr - lr[u], dg = qg - lg[u], db = qb - lb[u];
                     const float distance = std::sqrt(dr * dr + dg * dg + db * db);
-                    row[u] += lo[u] == qo ? distance : kRibbonGamma;
+                    entries[u] += lo[u] == qo ? distance : kRibbonGamma;
                 }
             }
         }
@@ -222,7 +223,7 @@ __attribute__((target_clones("popcnt", "default"))) std::pair<float, uint32_t> b
 
 }  // namespace
 
-void update_table_row_bounded(const DpProblem& problem, const std::vector<uint32_t>& right_edges,
+void update_table_row_bounded(const DpProblem& problem, size_t row_index, const std::vector<uint32_t>& right_edges,
                               const std::vector<uint32_t>& valid, const std::vector<float>& prev_costs,
                               std::vector<float>& costs, std::vector<uint32_t>& back) {
     BoundedRow row;
@@ -230,7 +231,7 @@ void update_table_row_bounded(const DpProblem& problem, const std::vector<uint32
     row.words = (row.samples + 63) / 64;
     const size_t C = row.samples, words = row.words, count = valid.size();
     row.right_edges = right_edges.data();
-    row.left = left_edges(problem, valid);
+    row.left = left_edges(problem, row_index, valid);
     row.left_bits.resize(count * words);
     for (size_t u = 0; u < count; ++u) opacity_bits(row.left.data() + u * C, C, words, row.left_bits.data() + u * words);
     // The previous positions (a NaN cost never wins a strict <: left out) by their opacity
@@ -296,10 +297,10 @@ DpTables run_dp_reference(const DpProblem& problem, const DpRunOptions& options)
         const std::vector<uint32_t> right = extract_columns(problem, i - 1, t.valid[i - 1]);
         t.valid[i] = valid_positions(problem, i, t.rules[i]);
         if (options.keep_cost_tables) {
-            t.cost_tables[i] = compute_cost_table(problem, right, t.valid[i]);
+            t.cost_tables[i] = compute_cost_table(problem, i, right, t.valid[i]);
             update_table_row(costs, t.cost_tables[i], t.valid[i].size(), next, t.back[i]);
         } else {
-            update_table_row_bounded(problem, right, t.valid[i], costs, next, t.back[i]);
+            update_table_row_bounded(problem, i, right, t.valid[i], costs, next, t.back[i]);
         }
         costs.swap(next);
         t.row_ms.push_back(timer.elapsed_ms());

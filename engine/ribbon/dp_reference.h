@@ -29,7 +29,8 @@ namespace lw {
                                                     const std::vector<uint32_t>& valid);
 // computeCostTable: D(v + R_row−1, u + L_row) for every valid v of row−1 (right edges from
 // extract_columns) and u of `row`, at [v · V_row + u]; k summed from 0 to C−1.
-[[nodiscard]] std::vector<float> compute_cost_table(const DpProblem& problem, const std::vector<uint32_t>& right_edges,
+[[nodiscard]] std::vector<float> compute_cost_table(const DpProblem& problem, size_t row,
+                                                    const std::vector<uint32_t>& right_edges,
                                                     const std::vector<uint32_t>& valid);
 // updateTableRow (eq. 1): P[u] = min_v P_prev[v] + table[v · V + u], argmin the lowest v.
 void update_table_row(const std::vector<float>& prev_costs, const std::vector<float>& table, size_t count,
@@ -42,7 +43,7 @@ void update_table_row(const std::vector<float>& prev_costs, const std::vector<fl
 // only where that bound can still beat the best found for u (positions with the same
 // opacity bits share one bound). On spot_ribbons.json 0.5 % of the entries can
 // (docs/BENCHMARKS.md "The DP's rows bounded").
-void update_table_row_bounded(const DpProblem& problem, const std::vector<uint32_t>& right_edges,
+void update_table_row_bounded(const DpProblem& problem, size_t row, const std::vector<uint32_t>& right_edges,
                               const std::vector<uint32_t>& valid, const std::vector<float>& prev_costs,
                               std::vector<float>& costs, std::vector<uint32_t>& back);
 

@@ -47,13 +47,18 @@ PieceProbes piece_probes(const Ribbon& ribbon, size_t i, const ForbiddenMask* fo
     const int C = ribbon.samples;
     const double s = ribbon.scale;
     auto e0 = [&](glm::vec2 p) { return glm::dvec2(ribbon.to_exemplar(i, {0, 0}, p)); };
-    // The piece in E (u = 0): left edge exact, right corners through the similarity.
-    const glm::dvec2 A(0.5, 0.0), B(0.5, s), Cq = e0(piece.bottom_right), D = e0(piece.top_right);
+    // The piece in E (u = 0): left edge exact (a column where the piece is copied along its
+    // tangent), right corners through the similarity.
+    const glm::dvec2 A(0.5, 0.0), B = A + left_edge_in_exemplar(piece, s), Cq = e0(piece.bottom_right),
+                     D = e0(piece.top_right);
     auto on_left = [&](double f) { return A + (B - A) * f; };
     auto on_right = [&](double f) { return D + (Cq - D) * f; };
 
     PieceProbes probes;
-    for (int k = 0; k < C; ++k) probes.right.push_back(floor_texel(on_right((k + 0.5) / C)));
+    for (int k = 0; k < C; ++k) {
+        probes.left.push_back(floor_texel(on_left((k + 0.5) / C)));
+        probes.right.push_back(floor_texel(on_right((k + 0.5) / C)));
+    }
     // Top and bottom edges, through the first and last samples of the left and right edges.
     segment_texels(on_left(0.5 / C), on_right(0.5 / C), probes.top);
     segment_texels(on_left((C - 0.5) / C), on_right((C - 0.5) / C), probes.bottom);
@@ -68,7 +73,7 @@ PieceProbes piece_probes(const Ribbon& ribbon, size_t i, const ForbiddenMask* fo
             const glm::dvec2 c(x + 0.5, y + 0.5);
             if (inside_triangle(c, t0, 1e-3) || inside_triangle(c, t1, 1e-3)) probes.interior.push_back({x, y});
         }
-    for (int k = 0; k < C; ++k) probes.interior.push_back({0, int(std::floor((k + 0.5) * s / C))});
+    probes.interior.insert(probes.interior.end(), probes.left.begin(), probes.left.end());
     unique_sorted(probes.interior);
 
     // Forbidden canvas pixels the piece draws: the texel each would show must be transparent.
@@ -101,7 +106,7 @@ PieceProbes piece_probes(const Ribbon& ribbon, size_t i, const ForbiddenMask* fo
 
     probes.min_dx = 0;
     probes.max_dx = 0;
-    for (const auto* list : {&probes.right, &probes.top, &probes.bottom, &probes.interior})
+    for (const auto* list : {&probes.left, &probes.right, &probes.top, &probes.bottom, &probes.interior})
         for (const glm::ivec2& o : *list) {
             probes.min_dx = std::min(probes.min_dx, o.x);
             probes.max_dx = std::max(probes.max_dx, o.x);
@@ -132,8 +137,6 @@ DpProblem build_problem(const Exemplar& exemplar, const Ribbon& ribbon, const Fo
     problem.band = pattern_band(exemplar);
     problem.samples = ribbon.samples;
     problem.closed = ribbon.closed;
-    for (int k = 0; k < ribbon.samples; ++k)
-        problem.left_dy.push_back(int(std::floor((k + 0.5) * double(ribbon.scale) / ribbon.samples)));
     problem.rows.resize(ribbon.pieces.size());
     parallel_for(ribbon.pieces.size(), 8, [&](size_t begin, size_t end, size_t) {
         for (size_t i = begin; i < end; ++i) problem.rows[i] = piece_probes(ribbon, i, forbidden);

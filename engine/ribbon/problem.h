@@ -55,6 +55,8 @@
 namespace lw {
 
 struct PieceProbes {
+    std::vector<glm::ivec2> left;       // C texel offsets of the left-edge samples L̄ (a column of E
+                                        // where the piece is copied along its tangent, ribbon.h)
     std::vector<glm::ivec2> right;      // C texel offsets of the right-edge samples R̄ (tilted edge)
     std::vector<glm::ivec2> top;        // texels along the top edge: must lie above the band
     std::vector<glm::ivec2> bottom;     // texels along the bottom edge: must lie below the band
@@ -67,7 +69,6 @@ struct PieceProbes {
 struct DpProblem {
     const Exemplar* exemplar = nullptr;
     int samples = 0;             // C = ⌈s⌉
-    std::vector<int> left_dy;    // C row offsets of the left-edge samples L̄ (column x of E)
     glm::ivec2 band{0, -1};      // first and last row of E holding an opaque texel
     std::vector<PieceProbes> rows;
     bool closed = false;         // rows.back() is the terminal piece and must equal rows[0]'s position

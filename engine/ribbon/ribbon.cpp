@@ -12,10 +12,17 @@ namespace lw {
 glm::vec2 Ribbon::to_exemplar(size_t piece, glm::ivec2 u, glm::vec2 p) const {
     const RibbonPiece& q = pieces[piece];
     const glm::vec2 d = p - q.top_left;
-    const glm::vec2 t = q.tangent;
-    // R = [[t.x, t.y], [−t.y, t.x]] takes t to +x and −n = (−t.y, t.x) to +y (down).
+    const glm::vec2 t = q.chord;
+    // R = [[t.x, t.y], [−t.y, t.x]] takes the chord t to +x and its normal to +y (down).
     const glm::vec2 rotated(t.x * d.x + t.y * d.y, -t.y * d.x + t.x * d.y);
     return glm::vec2(float(u.x) + 0.5f, float(u.y)) + (scale / width) * rotated;
+}
+
+glm::dvec2 left_edge_in_exemplar(const RibbonPiece& piece, double scale) {
+    if (piece.chord == piece.tangent) return {0.0, scale};
+    // The left edge runs along −n = (−t.y, t.x); R (above) takes it to (t × c, t · c).
+    const glm::dvec2 t(piece.tangent), c(piece.chord);
+    return scale * glm::dvec2(t.x * c.y - t.y * c.x, t.x * c.x + t.y * c.y);
 }
 
 glm::vec2 Ribbon::min_corner() const {
@@ -102,16 +109,18 @@ Ribbon build_ribbon(const ArclengthCurve& curve, const RibbonParams& params) {
     // Tangents from a chord of ±δ/2 (at least 1 px): smooth over a piece, exact on circles.
     const float h = std::max(1.0f, 0.5f * delta);
     const float half = 0.5f * params.width;
-    std::vector<glm::vec2> top(xs.size()), bottom(xs.size()), tangent(xs.size());
+    std::vector<glm::vec2> centre(xs.size()), top(xs.size()), bottom(xs.size()), tangent(xs.size());
     for (size_t i = 0; i < xs.size(); ++i) {
         const glm::vec2 c = curve.point_at(xs[i]);
         const glm::vec2 t = curve.tangent_at(xs[i], h);
         const glm::vec2 n(t.y, -t.x);
+        centre[i] = c;
         top[i] = c + half * n;
         bottom[i] = c - half * n;
         tangent[i] = t;
     }
     if (curve.closed()) {  // the last right edge is exactly the first left edge
+        centre.back() = centre.front();
         top.back() = top.front();
         bottom.back() = bottom.front();
     }
@@ -121,8 +130,16 @@ Ribbon build_ribbon(const ArclengthCurve& curve, const RibbonParams& params) {
     ribbon.width = params.width;
     ribbon.scale = params.scale;
     ribbon.samples = static_cast<int>(std::ceil(params.scale - 1e-4f));
-    for (size_t i = 0; i + 1 < xs.size(); ++i)
-        ribbon.pieces.push_back({top[i], bottom[i], bottom[i + 1], top[i + 1], tangent[i]});
+    for (size_t i = 0; i + 1 < xs.size(); ++i) {
+        // The chord between the middles of the two edges (the header says why); the tangent
+        // where the curve does not turn over the piece, so that straight ribbons stay exact.
+        glm::vec2 chord = centre[i + 1] - centre[i];
+        const float span = glm::length(chord);
+        chord = span > 0.0f ? chord / span : tangent[i];
+        if (std::abs(tangent[i].x * chord.y - tangent[i].y * chord.x) < 1e-6f && glm::dot(tangent[i], chord) > 0.0f)
+            chord = tangent[i];
+        ribbon.pieces.push_back({top[i], bottom[i], bottom[i + 1], top[i + 1], tangent[i], chord});
+    }
     if (ribbon.closed && ribbon.pieces.size() < 2)
         throw ParameterError("ribbon piece", ": a closed curve of length " + std::to_string(int(std::lround(length))) +
                                                  " px needs at least two pieces; use a shorter piece length");

@@ -7,12 +7,19 @@
 // Conventions (pixels, y down, in the canvas and in the exemplar E):
 // - n(x) is the tangent turned so that a curve running left to right has n pointing up:
 //   n = (t.y, −t.x). The top offset T lies on that side.
-// - Each piece is copied into E by a similarity (§1.2): rotation R_i taking the tangent at
-//   x_i to +x (so the left edge T(x_i)→B(x_i) becomes vertical, pointing down) and scaling
-//   s/b (the left edge spans s exemplar pixels: the paper's M·l_i = y with |y| = 1, times s).
+// - Each piece is copied into E by a similarity (§1.2): rotation R_i taking the piece's
+//   chord, from the middle of its left edge C(x_i) to the middle of its right edge C(x_i+1),
+//   to +x, and scaling s/b (an edge spans s exemplar pixels: the paper's M·l_i = y with
+//   |y| = 1, times s). The paper takes the tangent at x_i to +x, keeping the left edge
+//   vertical; but the straight pattern of a piece then leaves it off the curve by the arc's
+//   sagitta, κδ²/2 towards the outside, and the next piece starts from the curve again, so
+//   that along a bend the pattern must step back at every seam or drift out of the ribbon:
+//   πδ over a closed loop, which cut a chain in four places around a circle of radius 4.5δ.
+//   Along the chord the pattern enters and leaves every piece on the curve. Where the curve
+//   does not turn over a piece the chord is the tangent, and the left edge is vertical.
 //   A piece placed at integer position u = (x, y) has its top-left corner at (x + 0.5, y) in
-//   E, so that its left edge runs through the centres of texel column x; edge sample k of
-//   C = ⌈s⌉ lies at (k + 0.5)/C along an edge — on texel centres when s is an integer.
+//   E, so that a vertical left edge runs through the centres of texel column x; edge sample
+//   k of C = ⌈s⌉ lies at (k + 0.5)/C along an edge — on texel centres when s is an integer.
 // - Drawing reads the texel under e + (½, 0): a straight piece of w = δs/b texels shows
 //   columns x+1 … x+w, the span (left edge, right edge], so at a perfect seam (next piece at
 //   x+w) every column appears once; and where a ribbon is aligned with the pixel grid, pixel
@@ -42,8 +49,13 @@ struct RibbonPiece {
     glm::vec2 bottom_left{0.0f};   // B(x_i)
     glm::vec2 bottom_right{0.0f};  // B(x_i+1)
     glm::vec2 top_right{0.0f};     // T(x_i+1)
-    glm::vec2 tangent{1.0f, 0.0f};  // unit tangent at x_i: the frame the piece is copied in
+    glm::vec2 tangent{1.0f, 0.0f};  // unit tangent at x_i (the left edge is its normal)
+    glm::vec2 chord{1.0f, 0.0f};    // unit direction the piece is copied along (+x in E; see above)
 };
+
+// The left edge of a piece in E, top to bottom: s·(sin φ, cos φ) for the turn φ from the
+// tangent to the chord; exactly (0, s) where they are the same.
+[[nodiscard]] glm::dvec2 left_edge_in_exemplar(const RibbonPiece& piece, double scale);
 
 struct Ribbon {
     std::vector<RibbonPiece> pieces;

@@ -29,7 +29,7 @@ struct RibbonDrawPush {
 static_assert(sizeof(RibbonDrawPush) == 32);
 
 struct PieceDraw {  // mirrors shaders/ribbon_draw.frag
-    glm::vec4 corners, edges, right;
+    glm::vec4 corners, edges, right, left;
     glm::ivec4 remap;
 };
 
@@ -151,15 +151,16 @@ ImageRGBA8 RibbonRenderer::draw(const Ribbon& ribbon, const Exemplar& exemplar, 
     for (size_t i = 0; i < ribbon.pieces.size(); ++i) {
         const RibbonPiece& p = ribbon.pieces[i];
         const glm::ivec2 u = positions[i];
-        const glm::vec2 A(float(u.x) + 0.5f, float(u.y)), B = A + glm::vec2(0.0f, ribbon.scale);
+        const glm::vec2 left_edge(left_edge_in_exemplar(p, ribbon.scale));
+        const glm::vec2 A(float(u.x) + 0.5f, float(u.y)), B = A + left_edge;
         const glm::vec2 D = ribbon.to_exemplar(i, u, p.top_right), Cq = ribbon.to_exemplar(i, u, p.bottom_right);
         int32_t offset = -1;
         if (stitch && i < stitch->remap.size()) {  // seam i+1 deforms piece i's right side
             offset = int32_t(remaps.size());
             remaps.insert(remaps.end(), stitch->remap[i].begin(), stitch->remap[i].end());
         }
-        pieces.push_back({glm::vec4(A, D), glm::vec4(D - A, Cq - B), glm::vec4(Cq - D, ribbon.scale, 0.0f),
-                          glm::ivec4(offset, C, 0, 0)});
+        pieces.push_back({glm::vec4(A, D), glm::vec4(D - A, Cq - B), glm::vec4(Cq - D, 0.0f, 0.0f),
+                          glm::vec4(left_edge, 0.0f, 0.0f), glm::ivec4(offset, C, 0, 0)});
     }
     if (remaps.empty()) remaps.push_back(0);
     std::vector<uint32_t> mask(size_t(width) * size_t(height), 0u);

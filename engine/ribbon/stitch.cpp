@@ -19,11 +19,11 @@ void stitch_seam(const DpProblem& problem, size_t row, glm::ivec2 prev, glm::ive
                  float& before, float& after) {
     const Exemplar& e = *problem.exemplar;
     const int C = problem.samples;
-    const std::vector<glm::ivec2>& right = problem.rows[row - 1].right;
+    const std::vector<glm::ivec2>&right = problem.rows[row - 1].right, &left = problem.rows[row].left;
     std::vector<uint32_t> L(static_cast<size_t>(C)), R(static_cast<size_t>(C));
     for (int k = 0; k < C; ++k) {
-        L[size_t(k)] = e.at(cur.x, cur.y + problem.left_dy[size_t(k)]);
-        const glm::ivec2 r = prev + right[size_t(k)];
+        const glm::ivec2 l = cur + left[size_t(k)], r = prev + right[size_t(k)];
+        L[size_t(k)] = e.at(l.x, l.y);
         R[size_t(k)] = e.at(r.x, r.y);
     }
     std::vector<float> rows(2 * size_t(C));
@@ -96,7 +96,7 @@ void stitch_seam(const DpProblem& problem, size_t row, glm::ivec2 prev, glm::ive
 
 struct StitchPush {
     int32_t width, height, samples, seam_count;
-    int32_t left_offset, moves_per_seam, seam_begin, batch;
+    int32_t pad, moves_per_seam, seam_begin, batch;
 };
 
 }  // namespace
@@ -140,17 +140,18 @@ StitchResult RibbonStitcherGpu::stitch(const DpProblem& problem, const std::vect
     if (seams == 0) return result;
     const int C = problem.samples;
 
-    // Right-edge offsets of every row but the last, then the left-edge offsets.
+    // Per seam: the right-edge offsets of the row before it, then the left-edge offsets of the
+    // row after it.
     std::vector<glm::ivec2> probes;
     std::vector<glm::ivec4> seam_info;
     for (size_t i = 0; i < seams; ++i) {
         const auto right_offset = int32_t(probes.size());
         probes.insert(probes.end(), problem.rows[i].right.begin(), problem.rows[i].right.end());
+        const auto left_offset = int32_t(probes.size());
+        probes.insert(probes.end(), problem.rows[i + 1].left.begin(), problem.rows[i + 1].left.end());
         seam_info.push_back({positions[i], positions[i + 1]});
-        seam_info.push_back({right_offset, 0, 0, 0});
+        seam_info.push_back({right_offset, left_offset, 0, 0});
     }
-    const auto left_offset = int32_t(probes.size());
-    for (int dy : problem.left_dy) probes.push_back({0, dy});
 
     const auto storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
     const auto out_usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
@@ -169,7 +170,7 @@ StitchResult RibbonStitcherGpu::stitch(const DpProblem& problem, const std::vect
 
     ctx.submit_and_wait([&](VkCommandBuffer cmd) {
         for (size_t begin = 0; begin < seams; begin += batch) {
-            const StitchPush push{problem.exemplar->width, problem.exemplar->height, C, int32_t(seams), left_offset,
+            const StitchPush push{problem.exemplar->width, problem.exemplar->height, C, int32_t(seams), 0,
                                   moves_per_seam, int32_t(begin), int32_t(batch)};
             pipeline_.dispatch(ctx, cmd, {&exemplar, &probe_buffer, &seam_buffer, &rows, &moves, &remap, &errors},
                                &push, uint32_t((batch + RIBBON_GROUP - 1) / RIBBON_GROUP));
