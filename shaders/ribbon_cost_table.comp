@@ -2,8 +2,8 @@
 #extension GL_GOOGLE_include_directive : require
 // computeCostTable (Zhou et al. 2013, §2): D(v + R_i−1, u + L_i) = Σ_k ξ(R̄[k], L̄[k]) for
 // every pair of a valid position v of piece i−1 (right edges from extractColumns) and a valid
-// position u of piece i (its left edge's offsets: a column of E where the piece is copied along
-// its tangent, engine/ribbon/ribbon.h), one invocation per pair, C samples each.
+// position u of piece i (its left edge's offsets: tilted where the curve turns over the piece,
+// engine/ribbon/ribbon.h, else a column of E), one invocation per pair, C samples each.
 // A 16 × 16 tile of pairs stages 16 right edges and 16 left edges in shared memory, 32
 // samples at a time, so that each texel is read from memory once per tile instead of 16
 // times. k is summed from 0 to C−1 in every invocation, as the C++ reference does.

@@ -199,7 +199,8 @@ TEST(RibbonGeometry, SlicesIntoPiecesOfLengthDelta) {
 // Along a bend each piece is copied along its chord (ribbon.h): the middles of its left and
 // right edges lie at one height in E, so a straight pattern enters and leaves the piece on
 // the curve. (Copied along the tangent at its start, as §1.2 has it, the right edge's middle
-// sits the arc's sagitta, κδ²/2 scaled by s/b, towards the outside: 1.2 texels here.)
+// sits the arc's offset from that tangent, κδ²/2 scaled by s/b, towards the outside: 1.2
+// texels here.)
 TEST(RibbonGeometry, PiecesAreCopiedAlongTheirChord) {
     Curve2D circle{{}, true};
     for (int i = 0; i < 360; ++i) {
@@ -323,6 +324,7 @@ float optimal_cycle_cost(const DpProblem& p, const std::vector<uint32_t>& starts
 
 TEST(RibbonDp, ClosedCurveEndsWhereItStarts) {
     int exact = 0;
+    double ratio_sum = 0.0;
     for (uint64_t seed = 1; seed <= 6; ++seed) {
         const Exemplar e = test::banded_exemplar(16, 10, 3, 6, seed);
         Curve2D circle{{}, true};
@@ -343,12 +345,13 @@ TEST(RibbonDp, ClosedCurveEndsWhereItStarts) {
         // Measured: optimal for seeds 1, 3 and 6, 1.018-1.039 for 4 and 5, 1.218 for seed 2,
         // whose optimal cycle starts where no terminal position of the single DP leads back
         // (a second single DP cut half-way round gives 1.208). With pieces copied along their
-        // tangents (before the chord, ribbon.h) all six were within 3 %.
+        // tangents (before the chord, ribbon.h) all six were within 3 %. Their mean: 1.046.
         const float optimum = optimal_cycle_cost(p, run_dp_reference(p).valid[0]);
         EXPECT_GE(s.total_cost, optimum);
-        EXPECT_LE(s.total_cost, 1.25f * optimum) << "seed " << seed;
+        ratio_sum += double(s.total_cost) / double(optimum);
         exact += s.total_cost == optimum;
     }
+    EXPECT_LE(ratio_sum / 6.0, 1.10) << "the single-DP cycle should be near the optimal one";
     EXPECT_GE(exact, 3) << "the single-DP cycle should often be the optimal one";
 }
 

@@ -83,9 +83,9 @@ TEST_F(GpuTest, RibbonChunkedCostTableGivesTheSameResult) {
 }
 
 TEST_F(GpuTest, RibbonRelaxedRowsOnGpuEqualReference) {
-    // A hairpin tighter than the pieces can follow: some rows need a looser slicing rule (a
-    // radius of 3 px under a 16 px ribbon; copied along their chords, pieces follow 9 px
-    // with the strict rule).
+    // A hairpin tighter than the pieces can slice: some rows need a looser rule. Its radius is
+    // 3 px under a 16 px ribbon (its legs, 6 px apart, overlap; no avoidance map here): copied
+    // along their chords, pieces round a radius of 9 px with the strict rule.
     Curve2D hairpin;
     for (int i = 0; i <= 20; ++i) hairpin.points.push_back({10.0f + 3.0f * float(i), 20.0f});
     for (int k = 1; k < 12; ++k)

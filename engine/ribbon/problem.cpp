@@ -47,8 +47,8 @@ PieceProbes piece_probes(const Ribbon& ribbon, size_t i, const ForbiddenMask* fo
     const int C = ribbon.samples;
     const double s = ribbon.scale;
     auto e0 = [&](glm::vec2 p) { return glm::dvec2(ribbon.to_exemplar(i, {0, 0}, p)); };
-    // The piece in E (u = 0): left edge exact (a column where the piece is copied along its
-    // tangent), right corners through the similarity.
+    // The piece in E (u = 0): left edge exact (a column where the curve does not turn over
+    // the piece, ribbon.h), right corners through the similarity.
     const glm::dvec2 A(0.5, 0.0), B = A + left_edge_in_exemplar(piece, s), Cq = e0(piece.bottom_right),
                      D = e0(piece.top_right);
     auto on_left = [&](double f) { return A + (B - A) * f; };

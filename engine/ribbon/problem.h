@@ -55,8 +55,8 @@
 namespace lw {
 
 struct PieceProbes {
-    std::vector<glm::ivec2> left;       // C texel offsets of the left-edge samples L̄ (a column of E
-                                        // where the piece is copied along its tangent, ribbon.h)
+    std::vector<glm::ivec2> left;       // C texel offsets of the left-edge samples L̄ (tilted where
+                                        // the curve turns over the piece, ribbon.h; else a column)
     std::vector<glm::ivec2> right;      // C texel offsets of the right-edge samples R̄ (tilted edge)
     std::vector<glm::ivec2> top;        // texels along the top edge: must lie above the band
     std::vector<glm::ivec2> bottom;     // texels along the bottom edge: must lie below the band

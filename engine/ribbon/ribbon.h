@@ -11,8 +11,9 @@
 //   chord, from the middle of its left edge C(x_i) to the middle of its right edge C(x_i+1),
 //   to +x, and scaling s/b (an edge spans s exemplar pixels: the paper's M·l_i = y with
 //   |y| = 1, times s). The paper takes the tangent at x_i to +x, keeping the left edge
-//   vertical; but the straight pattern of a piece then leaves it off the curve by the arc's
-//   sagitta, κδ²/2 towards the outside, and the next piece starts from the curve again, so
+//   vertical; but the straight pattern of a piece then ends off the curve by the arc's
+//   offset from that tangent, κδ²/2 towards the outside, and the next piece starts from the
+//   curve again, so
 //   that along a bend the pattern must step back at every seam or drift out of the ribbon:
 //   πδ over a closed loop, which cut a chain in four places around a circle of radius 4.5δ.
 //   Along the chord the pattern enters and leaves every piece on the curve. Where the curve
