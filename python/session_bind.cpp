@@ -6,6 +6,7 @@
 #include "scene/scene.h"
 #include "scene/scene_file.h"
 #include "session.h"
+#include "synthesizers.h"
 
 namespace lw::py {
 
@@ -179,9 +180,7 @@ speak raises RuntimeError. Bad input raises ValueError with the command line's m
                      } catch (const pyb::cast_error&) {
                          throw pyb::value_error("size: expected (width, height), two integers");
                      }
-                     if (wh.first < 1 || wh.second < 1 || wh.first > 16384 || wh.second > 16384)
-                         throw pyb::value_error("size: must be between 1x1 and 16384x16384, got (" +
-                                                std::to_string(wh.first) + ", " + std::to_string(wh.second) + ")");
+                     check_image_size(wh.first, wh.second);
                      a.size = wh;
                  }
                  a.camera = {optional_vec3(eye, "eye"), optional_vec3(target, "target"), optional_vec3(up, "up")};

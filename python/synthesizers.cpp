@@ -14,6 +14,7 @@
 #include <tuple>
 
 #include "core/text.h"
+#include "core/image.h"
 #include "io/image_io.h"
 #include "io/slam_io.h"
 #include "ribbon/avoidance.h"
@@ -73,6 +74,14 @@ uint64_t seed_argument(const pyb::object& seed, uint64_t max) {
 void check_positive(double value, const char* name) {
     if (!(value > 0.0) || std::isinf(value))
         throw pyb::value_error(std::string(name) + ": must be a positive number, got " + number_text(value));
+}
+
+void check_image_size(int width, int height) {
+    if (width < 1 || height < 1 || width > kLargestImageSide || height > kLargestImageSide) {
+        const std::string side = std::to_string(kLargestImageSide);
+        throw pyb::value_error("size: must be between 1x1 and " + side + "x" + side + ", got (" + std::to_string(width) +
+                               ", " + std::to_string(height) + ")");
+    }
 }
 
 namespace {
@@ -208,9 +217,7 @@ pyb::object ribbon(const pyb::object& exemplar_value, const pyb::object& curve_v
     std::optional<glm::ivec2> size;
     if (size_value) {
         size = glm::ivec2(std::get<0>(*size_value), std::get<1>(*size_value));
-        if (size->x < 1 || size->y < 1 || size->x > 16384 || size->y > 16384)
-            throw pyb::value_error("size: must be between 1x1 and 16384x16384, got (" + std::to_string(size->x) +
-                                   ", " + std::to_string(size->y) + ")");
+        check_image_size(size->x, size->y);
     }
     (void)arguments_named(kRibbonNames, [&] { return parse_device_choice(device); });
 

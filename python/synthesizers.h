@@ -45,6 +45,8 @@ auto naming_input(const std::string& where, F&& f) {
 void check_range(double value, double lo, double hi, const char* name);
 // ValueError "NAME: must be a positive number, got V" (CLI::PositiveNumber).
 void check_positive(double value, const char* name);
+// ValueError "size: must be between 1x1 and LxL, got (W, H)" past kLargestImageSide.
+void check_image_size(int width, int height);
 // A seed taken as a Python int: ValueError "seed: must be a whole number from 0 to MAX, got V"
 // for a negative one or one past `max` (as an unsigned argument pybind11 gave a TypeError
 // listing every signature), as the command line's --seed says.

@@ -11,6 +11,11 @@
 
 namespace lw {
 
+// The largest width and height of an image anything here makes, reads or draws: Vulkan's
+// maxImageDimension2D on lavapipe and most GPUs, and 16384² RGBA8 is already 1 GiB, so a
+// corrupt header claiming more is refused before anything is allocated.
+inline constexpr int kLargestImageSide = 16384;
+
 struct ImageRGBA8 {
     int width = 0;
     int height = 0;

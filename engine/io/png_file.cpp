@@ -17,7 +17,6 @@ namespace lw {
 
 namespace {
 
-constexpr int kLargestSide = 16384;  // 16384² RGBA is 1 GiB
 
 // libpng reports errors through a callback that must not return: it records the message and
 // jumps back to the setjmp of the phase that called libpng. The functions holding a setjmp
@@ -122,9 +121,9 @@ ImageRGBA8 read_png(const std::filesystem::path& path) {
     png_uint_32 width = 0, height = 0;
     if (!read_header(reader, width, height)) throw Error(name + ": cannot read image: " + one_line(reader.error));
     // Before allocating: a header may claim any size (found by tests/fuzz/fuzz_image).
-    if (width > kLargestSide || height > kLargestSide)
-        throw Error(name + ": image of " + std::to_string(width) + "x" + std::to_string(height) +
-                    " is too large (at most 16384x16384)");
+    if (width > png_uint_32(kLargestImageSide) || height > png_uint_32(kLargestImageSide))
+        throw Error(name + ": image of " + std::to_string(width) + "x" + std::to_string(height) + " is too large (at most " +
+                    std::to_string(kLargestImageSide) + "x" + std::to_string(kLargestImageSide) + ")");
     ImageRGBA8 image{int(width), int(height), std::vector<uint8_t>(size_t(width) * height * 4)};
     std::vector<png_bytep> rows(height);
     for (png_uint_32 y = 0; y < height; ++y) rows[y] = image.pixels.data() + size_t(y) * width * 4;

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "core/image.h"
 #include "core/text.h"
 
 namespace lw {
@@ -50,8 +51,9 @@ glm::ivec2 default_ribbon_size(const Ribbon& ribbon, glm::vec2 page, const std::
                     "output pixels");
     const glm::ivec2 size = glm::max(glm::ivec2(std::max(1, int(std::ceil(hi.x)) + 2), std::max(1, int(std::ceil(hi.y)) + 2)),
                                      glm::ivec2(int(std::ceil(page.x)), int(std::ceil(page.y))));
-    if (size.x > 16384 || size.y > 16384)
-        throw Error(curve_file + ": the curve (or its page) reaches past 16384 pixels; give the output's size");
+    if (size.x > kLargestImageSide || size.y > kLargestImageSide)
+        throw Error(curve_file + ": the curve (or its page) reaches past " + std::to_string(kLargestImageSide) +
+                    " pixels; give the output's size");
     return size;
 }
 
@@ -74,9 +76,9 @@ void check_ribbon_in_image(const Ribbon& ribbon, int width, int height) {
 Ribbon build_ribbon(const ArclengthCurve& curve, const RibbonParams& params) {
     if (!(params.width > 0.0f) || !std::isfinite(params.width))
         throw ParameterError("ribbon width", ": the ribbon width b must be a positive number of pixels");
-    if (params.width > 16384.0f)  // (number_text: int() of a width past 2^31 was undefined)
-        throw ParameterError("ribbon width",
-                             ": " + number_text(params.width) + " px: a ribbon wider than the largest image (16384 px)");
+    if (params.width > float(kLargestImageSide))  // (number_text: int() of a width past 2^31 was undefined)
+        throw ParameterError("ribbon width", ": " + number_text(params.width) + " px: a ribbon wider than the largest image (" +
+                                                 std::to_string(kLargestImageSide) + " px)");
     if (!(params.piece > 0.0f) || !std::isfinite(params.piece))
         throw ParameterError("ribbon piece", ": the piece length δ must be a positive number of pixels");
     if (!(params.scale > 0.0f) || !std::isfinite(params.scale))

@@ -79,7 +79,7 @@ struct Ribbon {
 
 // The output size when none is asked for: from the origin to past the ribbon's far corner, and
 // at least the page an SVG curve was drawn on (`page`, 0 for none), so that the image lines up
-// with that drawing. Throws lw::Error naming `curve_file` past 16384 pixels.
+// with that drawing. Throws lw::Error naming `curve_file` past kLargestImageSide pixels.
 [[nodiscard]] glm::ivec2 default_ribbon_size(const Ribbon& ribbon, glm::vec2 page, const std::string& curve_file);
 
 // An output of width × height pixels that no piece reaches into would be blank: a

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "core/image.h"
 #include "gpu/render_target.h"
 #include "ribbon_avoid_frag.h"
 #include "ribbon_draw_frag.h"
@@ -67,7 +68,7 @@ std::vector<RibbonVertex> build_vertices(const Ribbon& ribbon, const std::vector
 // Clears the target, draws `vertices` with `pipeline` (buffers pushed by `bind`), reads back.
 ImageRGBA8 render(const Context& ctx, const GraphicsPipeline& pipeline, const std::vector<RibbonVertex>& vertices,
                   const RibbonDrawPush& push, const std::function<void(VkCommandBuffer)>& bind, int width, int height) {
-    if (width < 1 || height < 1 || width > 16384 || height > 16384)
+    if (width < 1 || height < 1 || width > kLargestImageSide || height > kLargestImageSide)
         throw Error("ribbon canvas " + std::to_string(width) + "x" + std::to_string(height) + " is out of range");
     const RenderTarget target(ctx, uint32_t(width), uint32_t(height));
     const VkDeviceSize pixels = VkDeviceSize(width) * VkDeviceSize(height);

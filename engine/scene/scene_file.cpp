@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
+#include "core/image.h"
 #include "core/text.h"
 #include "scene/line_set_file.h"
 #include "scene/model.h"
@@ -460,7 +461,8 @@ SceneDesc parse_scene_json(const std::string& text, const std::filesystem::path&
         if (!s.is_array() || s.size() != 2 || !s[0].is_number_integer() || !s[1].is_number_integer())
             r.fail_key("size", "expected [width, height] in pixels");
         const long long w = s[0].get<long long>(), h = s[1].get<long long>();
-        if (w < 1 || h < 1 || w > 16384 || h > 16384) r.fail_key("size", "width and height must be 1..16384");
+        if (w < 1 || h < 1 || w > kLargestImageSide || h > kLargestImageSide)
+            r.fail_key("size", "width and height must be 1.." + std::to_string(kLargestImageSide));
         scene.width = static_cast<int>(w);
         scene.height = static_cast<int>(h);
     }

@@ -14,6 +14,7 @@
 #include <glm/glm.hpp>
 
 #include "core/error.h"
+#include "core/image.h"
 
 namespace lw {
 class Context;
@@ -42,7 +43,7 @@ Runner add_view_command(CLI::App& app);
 glm::vec3 parse_vec3(const std::string& text, const std::string& option);
 // "1920x1080" -> (1920, 1080); throws a usage error naming `option`.
 glm::ivec2 parse_size(const std::string& text, const std::string& option, glm::ivec2 smallest = {1, 1},
-                      glm::ivec2 largest = {16384, 16384});
+                      glm::ivec2 largest = {kLargestImageSide, kLargestImageSide});
 // --slam FILE --stroke-width W: silhouettes and suggestive contours (the shorthand's types,
 // or every line set selecting either) as SLAM strokes of width W, tapered over 2W
 // (replacing any ribbon style).

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "core/image.h"
 #include "core/text.h"
 #include "view_keys.h"
 
@@ -67,8 +68,9 @@ std::vector<ScriptCommand> parse_script(const std::string& text, const std::stri
             c.kind = Kind::Resize;
             c.a = number(w[1], where);
             c.b = number(w[2], where);
-            if (c.a < 1 || c.b < 1 || c.a > 16384 || c.b > 16384 || c.a != std::floor(c.a) || c.b != std::floor(c.b))
-                throw Error(where + ": width and height must be whole numbers 1..16384");
+            const double largest = kLargestImageSide;
+            if (c.a < 1 || c.b < 1 || c.a > largest || c.b > largest || c.a != std::floor(c.a) || c.b != std::floor(c.b))
+                throw Error(where + ": width and height must be whole numbers 1.." + std::to_string(kLargestImageSide));
         } else if (op == "minimize" || op == "restore" || op == "quit") {
             args(0);
             c.kind = op == "minimize" ? Kind::Minimize : op == "restore" ? Kind::Restore : Kind::Quit;

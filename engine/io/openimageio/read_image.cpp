@@ -26,9 +26,10 @@ extern "C" __attribute__((visibility("default"))) bool lw_read_image_through_ope
         return false;
     }
     // Before allocating: a header may claim any size (found by tests/fuzz/fuzz_image).
-    if (spec.width > 16384 || spec.height > 16384 || spec.nchannels > 64) {
+    if (spec.width > lw::kLargestImageSide || spec.height > lw::kLargestImageSide || spec.nchannels > 64) {
+        const std::string side = std::to_string(lw::kLargestImageSide);
         *error = "image of " + std::to_string(spec.width) + "x" + std::to_string(spec.height) + " with " +
-                 std::to_string(spec.nchannels) + " channels is too large (at most 16384x16384, 64 channels)";
+                 std::to_string(spec.nchannels) + " channels is too large (at most " + side + "x" + side + ", 64 channels)";
         return false;
     }
     const int n = spec.nchannels;
