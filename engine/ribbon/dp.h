@@ -8,10 +8,11 @@
 // kernels (dp_gpu.h), which must agree exactly — and returns what backtracking needs.
 // `solve_ribbon` backtracks: from the cheapest last-row entry for an open curve; for a closed
 // curve from every terminal position, keeping the cheapest path whose terminal position
-// equals its first (§1.5). When no terminal position backtracks to itself, the DP is run once
-// more with piece 0 fixed at the best path's start (the paper's "unless otherwise specified
-// by the user" for the first row), which always closes: the terminal piece is a copy of
-// piece 0, so that start is valid for it too.
+// equals its first (§1.5's single DP). A closed curve also runs the DP over its pieces twice
+// round from a free start, and once more with piece 0 fixed where that path passes piece 0
+// the second time (the wrap-around start of tail-biting Viterbi decoding; solve_ribbon says
+// why); the cheaper of the two cycles is kept. A fixed start always closes: the terminal
+// piece is a copy of piece 0, so that start is valid for it too.
 //
 // Ties (common with periodic exemplars) are broken by the seed: the end is drawn among the
 // equally cheap last-row entries, so different seeds give different, equally optimal results.
@@ -55,7 +56,7 @@ struct RibbonSolution {
     std::vector<uint32_t> valid_counts;
     std::vector<ValidityRule> rules;       // per row (problem.h); rows above Band are reported
     std::vector<double> row_ms;
-    bool closed_by_first_dp = true;     // closed curves: false when the fixed-start DP was needed
+    bool closed_by_first_dp = true;     // closed curves: false when the fixed-start DP's cycle was kept
 };
 
 [[nodiscard]] RibbonSolution solve_ribbon(const DpProblem& problem, const DpRunner& runner, uint64_t seed,
