@@ -282,9 +282,17 @@ pyb::object ribbon(const pyb::object& exemplar_value, const pyb::object& curve_v
         warn_in_python(warning, PyExc_RuntimeWarning);
     }
     if (cut > 0) {
-        const std::string warning = std::to_string(cut) + " of " + std::to_string(s.solution.rules.size()) +
-                                    " pieces cannot hold the whole pattern where the curve bends this tightly and may "
-                                    "cut it (info['cut_pieces']); a shorter piece or a wider scale helps";
+        const int least = minimum_ribbon_scale(exemplar);
+        const std::string pieces = std::to_string(cut) + " of " + std::to_string(s.solution.rules.size()) + " pieces";
+        const std::string warning =
+            s.ribbon.scale < float(least)
+                ? pieces + " cannot hold the whole pattern and may cut it (info['cut_pieces']): scale " +
+                      number_text(s.ribbon.scale) + " is under the " + std::to_string(least) +
+                      " exemplar rows a piece needs (the pattern's " + std::to_string(least - 2) +
+                      " and one above and below); leave scale out for the default, " +
+                      number_text(default_ribbon_scale(exemplar))
+                : pieces + " cannot hold the whole pattern where the curve bends this tightly and may cut it "
+                           "(info['cut_pieces']); a shorter piece or a wider scale helps";
         warn_in_python(warning, PyExc_RuntimeWarning);
     }
     pyb::dict info = return_info ? ribbon_info(s, desc, *ctx) : pyb::dict();

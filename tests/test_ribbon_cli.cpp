@@ -149,6 +149,19 @@ TEST(RibbonCli, BadFlagsAreUsageErrors) {
     EXPECT_EQ(run_linework("ribbon-exemplar velvet -o x.png").exit_code, 2);
 }
 
+// A --scale under the pattern's height cuts every piece, along a straight curve as along a
+// bend: the warning names the scale and the least that holds the pattern, not the bends.
+TEST(RibbonCli, AScaleUnderThePatternIsNamedAsTheCause) {
+    const RibbonFiles f;
+    const std::string base = "ribbon " + quote(f.exemplar) + " --curve " + quote(f.curve) + " -o " + quote(f.dir / "o.png");
+    const auto small = run_linework(base + " --scale 4");
+    EXPECT_EQ(small.exit_code, 0) << small.output;
+    EXPECT_NE(small.output.find("--scale 4 is under the"), std::string::npos) << small.output;
+    EXPECT_EQ(small.output.find("bends this tightly"), std::string::npos) << small.output;
+    const auto fine = run_linework(base);
+    EXPECT_EQ(fine.output.find("cannot hold the whole pattern"), std::string::npos) << fine.output;
+}
+
 TEST(RibbonCli, HelpExplains) {
     const auto r = run_linework("ribbon --help");
     EXPECT_EQ(r.exit_code, 0) << r.output;

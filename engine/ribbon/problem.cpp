@@ -125,11 +125,21 @@ glm::ivec2 pattern_band(const Exemplar& e) {
     return band;
 }
 
-float default_ribbon_scale(const Exemplar& exemplar) {
+namespace {
+
+int band_height(const Exemplar& exemplar) {
     const glm::ivec2 band = pattern_band(exemplar);
-    const int height = std::max(1, band.y - band.x + 1);
+    return std::max(1, band.y - band.x + 1);
+}
+
+}  // namespace
+
+float default_ribbon_scale(const Exemplar& exemplar) {
+    const int height = band_height(exemplar);
     return float(height + 2 + std::max(2, int(std::lround(0.3 * height))));
 }
+
+int minimum_ribbon_scale(const Exemplar& exemplar) { return band_height(exemplar) + 2; }
 
 DpProblem build_problem(const Exemplar& exemplar, const Ribbon& ribbon, const ForbiddenMask* forbidden) {
     DpProblem problem;

@@ -90,6 +90,10 @@ struct DpProblem {
 // The default s: the band's height, 2 rows for the edges, and 30 % of it (at least 2 rows) as
 // the pattern's freedom to diverge from the curve.
 [[nodiscard]] float default_ribbon_scale(const Exemplar& exemplar);
+// The least s at which a piece can hold the whole band, even along a straight curve: the
+// band's height and a row above and below it for the top and bottom edges. Under it every
+// piece needs a looser rule (problem.h) and may cut the pattern, whatever the curve does.
+[[nodiscard]] int minimum_ribbon_scale(const Exemplar& exemplar);
 
 // The probes of one piece (exposed for tests).
 [[nodiscard]] PieceProbes piece_probes(const Ribbon& ribbon, size_t piece, const ForbiddenMask* forbidden);

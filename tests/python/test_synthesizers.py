@@ -320,6 +320,13 @@ def test_ribbon_that_draws_nothing_is_an_error(ribbon_inputs):
                         width=16, reference=True)
 
 
+def test_ribbon_scale_under_the_pattern_is_named_as_the_cause(ribbon_inputs):
+    # As the command line warns: a scale under the pattern's rows cuts every piece, bends or not.
+    exemplar = read_png(ribbon_inputs / "chain.png")
+    with pytest.warns(RuntimeWarning, match=r"scale 4 is under the \d+ exemplar rows a piece needs"):
+        linework.ribbon(exemplar, RIBBON_CURVE, scale=4, reference=True)
+
+
 def test_ribbon_is_deterministic_per_seed(ribbon_inputs):
     exemplar = read_png(ribbon_inputs / "chain.png")
     a = linework.ribbon(exemplar, RIBBON_CURVE, seed=3, reference=True)

@@ -13,6 +13,7 @@
 #include "commands.h"
 #include "cli_numbers.h"
 #include "core/error.h"
+#include "core/text.h"
 #include "core/timer.h"
 #include "gpu/context.h"
 #include "io/image_io.h"
@@ -154,7 +155,15 @@ int run_ribbon(const RibbonOptions& o) {
                     (o.avoid.empty() ? std::string(" (a curve that doubles back within the ribbon's width)")
                                      : " or where " + o.avoid + " forbids ink") +
                     "; nothing was written");
-    if (cut_count > 0)
+    if (cut_count > 0 && s.ribbon.scale < float(minimum_ribbon_scale(exemplar)))
+        std::fprintf(stderr,
+                     "ribbon: warning: %zu of %zu pieces (%s%s) cannot hold the whole pattern and may cut it: --scale "
+                     "%s is under the %d exemplar rows a piece needs (the pattern's %d and one above and below); "
+                     "leave --scale out for the default, %s\n",
+                     cut_count, s.solution.rules.size(), cut.c_str(), cut_count > 8 ? ", …" : "",
+                     number_text(s.ribbon.scale).c_str(), minimum_ribbon_scale(exemplar),
+                     minimum_ribbon_scale(exemplar) - 2, number_text(default_ribbon_scale(exemplar)).c_str());
+    else if (cut_count > 0)
         std::fprintf(stderr,
                      "ribbon: warning: %zu of %zu pieces (%s%s) cannot hold the whole pattern where the curve bends "
                      "this tightly and may cut it; a shorter --piece or a wider --scale helps\n",
@@ -219,7 +228,9 @@ Runner add_ribbon_command(CLI::App& app) {
                     "exemplar pixel (default: the height of the exemplar's band of opaque rows + 2 + 30 %:\n"
                     "the slack is how far the pattern may wander from the curve)")
         ->check(positive("exemplar pixels"));
-    cmd->add_option("--seed", o->seed, "Chooses among equally good results, and the random baseline")->check(seed())
+    cmd->add_option("--seed", o->seed,
+                    "Breaks ties among equally cheap results (common with periodic exemplars along straight stretches, "
+                    "rare elsewhere: most curves give the same image for every seed), and draws the random baseline")->check(seed())
         ->capture_default_str();
     cmd->add_option("--size", o->size, "Output size WxH (default: the ribbon's extent from the origin, and at least an SVG curve's\n"
                                          "page: its width and height)");
