@@ -285,12 +285,11 @@ pyb::object ribbon(const pyb::object& exemplar_value, const pyb::object& curve_v
         const int least = minimum_ribbon_scale(exemplar);
         const std::string pieces = std::to_string(cut) + " of " + std::to_string(s.solution.rules.size()) + " pieces";
         const std::string warning =
-            s.ribbon.scale < float(least)
+            !ribbon_scale_holds_pattern(exemplar, s.ribbon.scale)
                 ? pieces + " cannot hold the whole pattern and may cut it (info['cut_pieces']): scale " +
-                      number_text(s.ribbon.scale) + " is under the " + std::to_string(least) +
-                      " exemplar rows a piece needs (the pattern's " + std::to_string(least - 2) +
-                      " and one above and below); leave scale out for the default, " +
-                      number_text(default_ribbon_scale(exemplar))
+                      number_text(s.ribbon.scale) + " is too small for the pattern's " + std::to_string(least - 2) +
+                      " rows and one above and below (scale " + std::to_string(least) +
+                      " holds them); leave scale out for the default, " + number_text(default_ribbon_scale(exemplar))
                 : pieces + " cannot hold the whole pattern where the curve bends this tightly and may cut it "
                            "(info['cut_pieces']); a shorter piece or a wider scale helps";
         warn_in_python(warning, PyExc_RuntimeWarning);
@@ -367,7 +366,8 @@ closed: close the curve (the last piece connects back to the first, §1.5).
 piece: δ, output pixels (default: b / 2). width: b, output pixels (default: scale).
 scale: s, exemplar pixels across the ribbon (default: the exemplar's band of opaque rows
   + 2 + 30 %).
-seed: chooses among equally good results, and the random baseline.
+seed: breaks ties among equally cheap results (rare but for periodic exemplars along straight
+stretches), and draws the random baseline.
 stitch: deform pieces so that their edges align better (§3.2, P = 32).
 size: output (width, height) (default: the ribbon's extent from the origin, and at least an SVG curve's page).
 avoid: H×W(×4) uint8 avoidance map of the output size (or a PNG): alpha ≥ 128 is forbidden (§3.1).

@@ -238,6 +238,21 @@ TEST(RibbonDp, AChainAroundACircleHasNoCut) {
     for (size_t i = 0; i < s.seam_costs.size(); ++i) EXPECT_LT(s.seam_costs[i], kRibbonGamma) << "seam " << i;
 }
 
+// Whether a scale can hold the chain's 32-row band is whether a straight ribbon at that scale
+// finds positions under the strict rule: the predicate the warning uses agrees with the DP.
+TEST(RibbonGeometry, AScaleHoldsThePatternWhenItsEdgeSamplesSpanIt) {
+    const Exemplar e = make_exemplar(read_image_rgba8(test::source_dir() / "scenes/exemplars/chain.png"), "chain.png");
+    ASSERT_EQ(minimum_ribbon_scale(e), 34);
+    const ArclengthCurve line(Curve2D{{{10, 40}, {250, 40}}, false});
+    for (const float s : {32.0f, 33.0f, 33.4f, 33.5f, 33.9f, 34.0f, 44.0f}) {
+        const DpProblem p = build_problem(e, build_ribbon(line, {.width = s, .piece = 16, .scale = s}));
+        const LooserRows looser = looser_rows(solve_ribbon(p, run_dp_reference, 1));
+        const bool held = looser.cut.empty() && looser.empty.empty();
+        EXPECT_EQ(ribbon_scale_holds_pattern(e, s), held) << "scale " << s;
+        EXPECT_EQ(held, s >= 33.5f) << "scale " << s;  // measured (the edge samples' span)
+    }
+}
+
 TEST(RibbonCost, XiIsDistanceOrGamma) {
     const uint32_t red = pack_rgba(255, 0, 0, 255), dark_red = pack_rgba(252, 4, 0, 200);
     EXPECT_FLOAT_EQ(xi(red, dark_red), 5.0f);  // both opaque: ‖p − q‖

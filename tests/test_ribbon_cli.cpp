@@ -156,7 +156,7 @@ TEST(RibbonCli, AScaleUnderThePatternIsNamedAsTheCause) {
     const std::string base = "ribbon " + quote(f.exemplar) + " --curve " + quote(f.curve) + " -o " + quote(f.dir / "o.png");
     const auto small = run_linework(base + " --scale 4");
     EXPECT_EQ(small.exit_code, 0) << small.output;
-    EXPECT_NE(small.output.find("--scale 4 is under the"), std::string::npos) << small.output;
+    EXPECT_NE(small.output.find("--scale 4 is too small for the pattern's"), std::string::npos) << small.output;
     EXPECT_EQ(small.output.find("bends this tightly"), std::string::npos) << small.output;
     const auto fine = run_linework(base);
     EXPECT_EQ(fine.output.find("cannot hold the whole pattern"), std::string::npos) << fine.output;

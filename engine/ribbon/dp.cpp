@@ -85,6 +85,19 @@ DpProblem two_laps(const DpProblem& problem) {
     return laps;
 }
 
+// The entry of the last row at `position`; a fixed start always has one (dp.h).
+uint32_t end_at(const DpTables& t, uint32_t position) {
+    const auto it = std::find(t.valid.back().begin(), t.valid.back().end(), position);
+    if (it == t.valid.back().end()) throw Error("closed ribbon: the terminal piece cannot take the first piece's position");
+    return uint32_t(it - t.valid.back().begin());
+}
+
+// Adds a run's row times onto `into`, row by row (a run twice round folds onto the rows).
+void add_row_times(std::vector<double>& into, const std::vector<double>& from) {
+    if (into.empty()) return;
+    for (size_t r = 0; r < from.size(); ++r) into[r % into.size()] += from[r];
+}
+
 }  // namespace
 
 RibbonSolution solve_ribbon(const DpProblem& problem, const DpRunner& runner, uint64_t seed,
@@ -93,6 +106,10 @@ RibbonSolution solve_ribbon(const DpProblem& problem, const DpRunner& runner, ui
     if (!problem.closed || rows < 2) {
         DpTables t = runner(problem, options);
         return make_solution(problem, t, cheapest_end(t, seed));
+    }
+    if (options.first_position) {  // piece 0 given: the loop closes there
+        DpTables t = runner(problem, options);
+        return make_solution(problem, t, end_at(t, *options.first_position));
     }
     // A closed curve runs three DPs, one after the other; progress counts their rows together.
     const size_t total = rows + (2 * rows - 1) + rows;
@@ -129,16 +146,15 @@ RibbonSolution solve_ribbon(const DpProblem& problem, const DpRunner& runner, ui
     DpRunOptions fixed = pass(rows + laps.rows.size());
     fixed.first_position = start;
     DpTables f = runner(problem, fixed);
-    const auto it = std::find(f.valid.back().begin(), f.valid.back().end(), start);
-    if (it == f.valid.back().end()) throw Error("closed ribbon: the terminal piece cannot take the first piece's position");
-    const auto fixed_end = uint32_t(it - f.valid.back().begin());
+    const uint32_t fixed_end = end_at(f, start);
 
-    // The cheaper cycle; the single DP's on a tie.
-    if (first_cycle && !(f.last_costs[fixed_end] < t.last_costs[*first_cycle])) return make_solution(problem, t, *first_cycle);
-    RibbonSolution s = make_solution(problem, f, fixed_end);
-    s.closed_by_first_dp = false;
-    // Report the valid counts and row times of the runs on this problem's rows where they add up.
-    for (size_t r = 0; r < s.row_ms.size() && r < t.row_ms.size(); ++r) s.row_ms[r] += t.row_ms[r];
+    // The cheaper cycle; the single DP's on a tie. Its row times are all three runs' (the
+    // two-lap run folded onto the rows), whichever is kept; the valid counts are the first's.
+    const bool first_kept = first_cycle && !(f.last_costs[fixed_end] < t.last_costs[*first_cycle]);
+    RibbonSolution s = first_kept ? make_solution(problem, t, *first_cycle) : make_solution(problem, f, fixed_end);
+    s.closed_by_first_dp = first_kept;
+    add_row_times(s.row_ms, first_kept ? f.row_ms : t.row_ms);
+    add_row_times(s.row_ms, w.row_ms);
     s.valid_counts[0] = uint32_t(t.valid[0].size());
     return s;
 }

@@ -15,7 +15,9 @@
 // piece is a copy of piece 0, so that start is valid for it too.
 //
 // Ties (common with periodic exemplars) are broken by the seed: the end is drawn among the
-// equally cheap last-row entries, so different seeds give different, equally optimal results.
+// equally cheap last-row entries, so different seeds give different, equally optimal results
+// (for a loop the seed also picks the second candidate's start, so there the kept cycle's
+// cost may differ from seed to seed).
 // Inside the table, argmin keeps the lowest index, identically on CPU and GPU.
 #pragma once
 

@@ -141,6 +141,13 @@ float default_ribbon_scale(const Exemplar& exemplar) {
 
 int minimum_ribbon_scale(const Exemplar& exemplar) { return band_height(exemplar) + 2; }
 
+bool ribbon_scale_holds_pattern(const Exemplar& exemplar, float scale) {
+    const double s = scale, C = std::ceil(double(scale) - 1e-4);  // as build_ribbon's samples
+    if (!(C >= 1.0)) return false;
+    const double top = std::floor(0.5 * s / C), bottom = std::floor((C - 0.5) * s / C);
+    return bottom - top >= double(band_height(exemplar) + 1);
+}
+
 DpProblem build_problem(const Exemplar& exemplar, const Ribbon& ribbon, const ForbiddenMask* forbidden) {
     DpProblem problem;
     problem.exemplar = &exemplar;

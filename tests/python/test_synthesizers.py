@@ -323,7 +323,8 @@ def test_ribbon_that_draws_nothing_is_an_error(ribbon_inputs):
 def test_ribbon_scale_under_the_pattern_is_named_as_the_cause(ribbon_inputs):
     # As the command line warns: a scale under the pattern's rows cuts every piece, bends or not.
     exemplar = read_png(ribbon_inputs / "chain.png")
-    with pytest.warns(RuntimeWarning, match=r"scale 4 is under the \d+ exemplar rows a piece needs"):
+    with pytest.warns(RuntimeWarning, match=r"scale 4 is too small for the pattern's 12 rows and one above and below "
+                                             r"\(scale 14 holds them\); leave scale out for the default, 18"):
         linework.ribbon(exemplar, RIBBON_CURVE, scale=4, reference=True)
 
 
