@@ -282,14 +282,14 @@ pyb::object ribbon(const pyb::object& exemplar_value, const pyb::object& curve_v
         warn_in_python(warning, PyExc_RuntimeWarning);
     }
     if (cut > 0) {
-        const int least = minimum_ribbon_scale(exemplar);
+        const std::optional<ScaleShortfall> shortfall = scale_shortfall(exemplar, s.ribbon.scale);
         const std::string pieces = std::to_string(cut) + " of " + std::to_string(s.solution.rules.size()) + " pieces";
         const std::string warning =
-            !ribbon_scale_holds_pattern(exemplar, s.ribbon.scale)
-                ? pieces + " cannot hold the whole pattern and may cut it (info['cut_pieces']): scale " +
-                      number_text(s.ribbon.scale) + " is too small for the pattern's " + std::to_string(least - 2) +
-                      " rows and one above and below (scale " + std::to_string(least) +
-                      " holds them); leave scale out for the default, " + number_text(default_ribbon_scale(exemplar))
+            shortfall ? pieces + " cannot hold the whole pattern and may cut it (info['cut_pieces']): scale " +
+                            number_text(s.ribbon.scale) + " is too small for the pattern's " +
+                            std::to_string(shortfall->band_rows) + " rows and one above and below (scale " +
+                            std::to_string(shortfall->least_scale) + " holds them); leave scale out for the default, " +
+                            number_text(shortfall->default_scale)
                 : pieces + " cannot hold the whole pattern where the curve bends this tightly and may cut it "
                            "(info['cut_pieces']); a shorter piece or a wider scale helps";
         warn_in_python(warning, PyExc_RuntimeWarning);

@@ -242,13 +242,16 @@ TEST(RibbonDp, AChainAroundACircleHasNoCut) {
 // finds positions under the strict rule: the predicate the warning uses agrees with the DP.
 TEST(RibbonGeometry, AScaleHoldsThePatternWhenItsEdgeSamplesSpanIt) {
     const Exemplar e = make_exemplar(read_image_rgba8(test::source_dir() / "scenes/exemplars/chain.png"), "chain.png");
-    ASSERT_EQ(minimum_ribbon_scale(e), 34);
+    ASSERT_TRUE(scale_shortfall(e, 33.0f).has_value());
+    EXPECT_EQ(scale_shortfall(e, 33.0f)->band_rows, 32);
+    EXPECT_EQ(scale_shortfall(e, 33.0f)->least_scale, 34);
+    EXPECT_EQ(scale_shortfall(e, 33.0f)->default_scale, 44.0f);
     const ArclengthCurve line(Curve2D{{{10, 40}, {250, 40}}, false});
     for (const float s : {32.0f, 33.0f, 33.4f, 33.5f, 33.9f, 34.0f, 44.0f}) {
         const DpProblem p = build_problem(e, build_ribbon(line, {.width = s, .piece = 16, .scale = s}));
         const LooserRows looser = looser_rows(solve_ribbon(p, run_dp_reference, 1));
         const bool held = looser.cut.empty() && looser.empty.empty();
-        EXPECT_EQ(ribbon_scale_holds_pattern(e, s), held) << "scale " << s;
+        EXPECT_EQ(!scale_shortfall(e, s).has_value(), held) << "scale " << s;
         EXPECT_EQ(held, s >= 33.5f) << "scale " << s;  // measured (the edge samples' span)
     }
 }

@@ -17,7 +17,6 @@ namespace lw {
 
 namespace {
 
-
 // libpng reports errors through a callback that must not return: it records the message and
 // jumps back to the setjmp of the phase that called libpng. The functions holding a setjmp
 // create no object with a destructor after it (C++ forbids jumping over one), so all state

@@ -139,13 +139,12 @@ float default_ribbon_scale(const Exemplar& exemplar) {
     return float(height + 2 + std::max(2, int(std::lround(0.3 * height))));
 }
 
-int minimum_ribbon_scale(const Exemplar& exemplar) { return band_height(exemplar) + 2; }
-
-bool ribbon_scale_holds_pattern(const Exemplar& exemplar, float scale) {
+std::optional<ScaleShortfall> scale_shortfall(const Exemplar& exemplar, float scale) {
+    const int rows = band_height(exemplar);
     const double s = scale, C = std::ceil(double(scale) - 1e-4);  // as build_ribbon's samples
-    if (!(C >= 1.0)) return false;
-    const double top = std::floor(0.5 * s / C), bottom = std::floor((C - 0.5) * s / C);
-    return bottom - top >= double(band_height(exemplar) + 1);
+    const bool holds = C >= 1.0 && std::floor((C - 0.5) * s / C) - std::floor(0.5 * s / C) >= double(rows + 1);
+    if (holds) return std::nullopt;
+    return ScaleShortfall{.band_rows = rows, .least_scale = rows + 2, .default_scale = default_ribbon_scale(exemplar)};
 }
 
 DpProblem build_problem(const Exemplar& exemplar, const Ribbon& ribbon, const ForbiddenMask* forbidden) {

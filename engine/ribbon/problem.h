@@ -44,6 +44,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -90,14 +91,17 @@ struct DpProblem {
 // The default s: the band's height, 2 rows for the edges, and 30 % of it (at least 2 rows) as
 // the pattern's freedom to diverge from the curve.
 [[nodiscard]] float default_ribbon_scale(const Exemplar& exemplar);
-// The least whole s at which a piece can hold the whole band: the band's height and a row
-// above and below it for the top and bottom edges.
-[[nodiscard]] int minimum_ribbon_scale(const Exemplar& exemplar);
-// Whether a piece of scale s can hold the whole band even along a straight curve: its first
-// and last edge samples, at (k + 0.5)/C of s with C = ⌈s⌉ (ribbon.h), lie at least the band's
-// height + 1 rows apart. When not, every piece needs a looser rule and may cut the pattern,
-// whatever the curve does (s = 33 for a 32-row band does not; 33.5 and 34 do).
-[[nodiscard]] bool ribbon_scale_holds_pattern(const Exemplar& exemplar, float scale);
+// A scale s at which no piece can hold the whole band, even along a straight curve: its first
+// and last edge samples, at (k + 0.5)/C of s with C = ⌈s⌉ (ribbon.h), lie less than the band's
+// height + 1 rows apart (s = 33 for a 32-row band; 33.5 and 34 hold it). Then every piece
+// needs a looser rule and may cut the pattern, whatever the curve does: the reason the command
+// line and Python give for cut pieces, with these figures.
+struct ScaleShortfall {
+    int band_rows = 0;         // the pattern's height
+    int least_scale = 0;       // the least whole s that holds it: a row above and below
+    float default_scale = 0;   // default_ribbon_scale
+};
+[[nodiscard]] std::optional<ScaleShortfall> scale_shortfall(const Exemplar& exemplar, float scale);
 
 // The probes of one piece (exposed for tests).
 [[nodiscard]] PieceProbes piece_probes(const Ribbon& ribbon, size_t piece, const ForbiddenMask* forbidden);

@@ -19,7 +19,8 @@ void stitch_seam(const DpProblem& problem, size_t row, glm::ivec2 prev, glm::ive
                  float& before, float& after) {
     const Exemplar& e = *problem.exemplar;
     const int C = problem.samples;
-    const std::vector<glm::ivec2>&right = problem.rows[row - 1].right, &left = problem.rows[row].left;
+    const std::vector<glm::ivec2>& right = problem.rows[row - 1].right;
+    const std::vector<glm::ivec2>& left = problem.rows[row].left;
     std::vector<uint32_t> L(static_cast<size_t>(C)), R(static_cast<size_t>(C));
     for (int k = 0; k < C; ++k) {
         const glm::ivec2 l = cur + left[size_t(k)], r = prev + right[size_t(k)];

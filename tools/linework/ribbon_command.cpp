@@ -155,14 +155,15 @@ int run_ribbon(const RibbonOptions& o) {
                     (o.avoid.empty() ? std::string(" (a curve that doubles back within the ribbon's width)")
                                      : " or where " + o.avoid + " forbids ink") +
                     "; nothing was written");
-    if (cut_count > 0 && !ribbon_scale_holds_pattern(exemplar, s.ribbon.scale))
+    const std::optional<ScaleShortfall> shortfall = cut_count > 0 ? scale_shortfall(exemplar, s.ribbon.scale) : std::nullopt;
+    if (shortfall)
         std::fprintf(stderr,
                      "ribbon: warning: %zu of %zu pieces (%s%s) cannot hold the whole pattern and may cut it: --scale "
                      "%s is too small for the pattern's %d rows and one above and below (--scale %d holds them); "
                      "leave --scale out for the default, %s\n",
                      cut_count, s.solution.rules.size(), cut.c_str(), cut_count > 8 ? ", …" : "",
-                     number_text(s.ribbon.scale).c_str(), minimum_ribbon_scale(exemplar) - 2,
-                     minimum_ribbon_scale(exemplar), number_text(default_ribbon_scale(exemplar)).c_str());
+                     number_text(s.ribbon.scale).c_str(), shortfall->band_rows, shortfall->least_scale,
+                     number_text(shortfall->default_scale).c_str());
     else if (cut_count > 0)
         std::fprintf(stderr,
                      "ribbon: warning: %zu of %zu pieces (%s%s) cannot hold the whole pattern where the curve bends "
