@@ -8,7 +8,8 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const bool binary = size >= 4 && data[0] == 'g' && data[1] == 'l' && data[2] == 'T' && data[3] == 'F';
-    const auto path = lw::fuzz::write_input(data, size, binary ? ".glb" : ".gltf");
+    const lw::fuzz::InputFile input(data, size, binary ? ".glb" : ".gltf");
+    const std::filesystem::path& path = input.path();
     try {
         const lw::Model model = lw::load_gltf(path);
         (void)lw::flatten(model, lw::world_transforms(model));

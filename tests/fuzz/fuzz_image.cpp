@@ -6,7 +6,8 @@
 #include "slam_synth/slam_builder.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-    const auto path = lw::fuzz::write_input(data, size, ".png");
+    const lw::fuzz::InputFile input(data, size, ".png");
+    const std::filesystem::path& path = input.path();
     try {
         const lw::ImageRGBA8 image = lw::read_image_rgba8(path);
         (void)lw::make_exemplar(image, path.string());

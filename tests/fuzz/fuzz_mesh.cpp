@@ -7,7 +7,8 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const bool ply = size >= 3 && data[0] == 'p' && data[1] == 'l' && data[2] == 'y';
-    const auto path = lw::fuzz::write_input(data, size, ply ? ".ply" : ".obj");
+    const lw::fuzz::InputFile input(data, size, ply ? ".ply" : ".obj");
+    const std::filesystem::path& path = input.path();
     try {
         const lw::Model model = lw::load_model(path);
         (void)lw::flatten(model, lw::world_transforms(model));

@@ -4,7 +4,8 @@
 #include "io/slam_io.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-    const auto path = lw::fuzz::write_input(data, size, ".exr");
+    const lw::fuzz::InputFile input(data, size, ".exr");
+    const std::filesystem::path& path = input.path();
     try {
         (void)lw::read_slam(path);
     } catch (const lw::Error&) {
