@@ -430,6 +430,39 @@ TEST(Coherence, SlidingReportsThePairsWhereOnePathLiesAlone) {
     EXPECT_EQ(both.alone.pops, 0.0);
 }
 
+// A crease carried along itself by its surface, 3 px a frame (the line X = 0…0.4 of the model
+// drawn at 100 px a unit, shifted), sampled at fixed pixels. A texture on the surface slides
+// 3 px a frame on the screen and not at all on the surface; a texture that stays on the
+// screen, the other way round. Silhouettes are not attached: they have no surface measure.
+TEST(Coherence, AttachedLinesAreMeasuredOnTheSurface) {
+    constexpr float kRho = 0.01f;
+    auto frame = [](int f, bool on_surface, const char* type) {
+        const float shift = 3.0f * float(f);
+        DumpPath path{.type = type, .line_set = "lines", .rho = kRho, .samples = {}};
+        for (int k = 0; k <= 20; ++k) {
+            const float x = 2.0f * float(k) + 10.0f;
+            const float surface_px = x - shift;  // 100 × X
+            const float t = kRho * (on_surface ? surface_px : x);
+            path.samples.push_back({{x, 5.0f}, x - 10.0f, t, t, {surface_px / 100.0f, 0.2f, -1.0f}});
+        }
+        return PathDump{.frame = f, .paths = {path}};
+    };
+    for (const bool on_surface : {true, false}) {
+        const std::vector<PathDump> frames{frame(0, on_surface, "crease"), frame(1, on_surface, "crease"),
+                                           frame(2, on_surface, "crease")};
+        const SlidingMeasure screen = measure_sliding(frames);
+        const SlidingStats surface = measure_sliding_on_surface(frames);
+        EXPECT_EQ(screen.pairs, 2u * 21u);
+        EXPECT_NEAR(screen.median_px, on_surface ? 3.0 : 0.0, 1e-3);
+        // On the surface, the samples within 3 px of the shifted end have no match.
+        EXPECT_EQ(surface.pairs, 2u * 20u);
+        EXPECT_NEAR(surface.median_px, on_surface ? 0.0 : 3.0, 1e-3);
+        EXPECT_NEAR(surface.p90_px, on_surface ? 0.0 : 3.0, 1e-3);
+    }
+    const std::vector<PathDump> contours{frame(0, true, "silhouette"), frame(1, true, "silhouette")};
+    EXPECT_EQ(measure_sliding_on_surface(contours).pairs, 0u);
+}
+
 // A camera that scales the image about its centre by `zoom`.
 CameraMatrices zoomed_camera(float zoom) {
     CameraMatrices camera;

@@ -284,8 +284,7 @@ VoteSet CoherenceTracker::gather_votes(const std::vector<ScreenPath>& paths, con
             const glm::vec2 tangent = path_tangent(path, c.sample);
             const glm::vec2 moved = glm::vec2(pixel) - sample.pixel;
             pixel = glm::vec3(sample.pixel + moved + glm::dot(zoomed - moved, tangent) * tangent, pixel.z);
-        } else if (path.type == LineType::Suggestive || path.type == LineType::SuggestiveHighlight ||
-                   path.type == LineType::ApparentRidge || path.type == LineType::PrincipalHighlight) {
+        } else if (!attached_to_surface(path.type)) {
             // A suggestive contour (the zero set of κr) moves over the surface at a speed of
             // its own, across itself too, so its surface point's motion is not the line's:
             // it looks up its closest correspondent where it is now (§4.1), moved only by the

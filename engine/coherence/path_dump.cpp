@@ -11,6 +11,7 @@
 
 #include "core/error.h"
 #include "core/text.h"
+#include "types/line_type.h"
 
 namespace lw {
 
@@ -72,9 +73,15 @@ PathDump parse_path_dump(const std::string& text, const std::string& name) {
             DumpPath path{p.at("type").get<std::string>(), p.value("line_set", std::string()), p.at("rho").get<float>(), {}};
             // Each layer is measured on its own, as a line set is (dumps before the index: one group).
             if (p.contains("layer")) path.line_set = "layers[" + std::to_string(p.at("layer").get<int>()) + "]";
-            for (const auto& s : p.at("samples"))
-                path.samples.push_back({{s.at("x").get<float>(), s.at("y").get<float>()}, s.at("s").get<float>(),
-                                        s.at("t").get<float>(), s.at("u").get<float>()});
+            for (const auto& s : p.at("samples")) {
+                DumpSample sample{{s.at("x").get<float>(), s.at("y").get<float>()}, s.at("s").get<float>(),
+                                  s.at("t").get<float>(), s.at("u").get<float>()};
+                if (s.contains("p")) {
+                    const auto& q = s.at("p");
+                    sample.position = {q.at(0).get<float>(), q.at(1).get<float>(), q.at(2).get<float>()};
+                }
+                path.samples.push_back(sample);
+            }
             dump.paths.push_back(std::move(path));
         }
     } catch (const nlohmann::json::exception& e) {
@@ -91,51 +98,77 @@ double wrapped_dt(double a, double b) {
     return std::abs(dt - std::round(dt));
 }
 
-// Samples of a frame in a grid of `cell`-pixel buckets for neighbour queries.
+// Where a sample lies for a grid and a match: on the screen (N = 2, pixels) or on the
+// surface (N = 3, the model's units).
+template <int N>
+using Point = glm::vec<N, float>;
+template <int N>
+Point<N> where(const DumpSample& s) {
+    if constexpr (N == 2)
+        return s.pixel;
+    else
+        return s.position;
+}
+
+// Samples of a frame in a grid of `cell`-sized buckets for neighbour queries.
+template <int N>
 struct SampleGrid {
     struct Entry {
         const DumpPath* path = nullptr;
         size_t k = 0;
         const DumpSample& sample() const { return path->samples[k]; }
+        Point<N> at() const { return where<N>(sample()); }
     };
     float cell;
     std::unordered_map<int64_t, std::vector<Entry>> buckets;
-    static int64_t key(int x, int y) { return int64_t(x) << 32 ^ int64_t(uint32_t(y)); }
-    SampleGrid(const PathDump& frame, float c) : cell(c) {
+    static int64_t key(glm::ivec3 c) {  // 21 bits a coordinate
+        constexpr int64_t mask = (int64_t(1) << 21) - 1;
+        return (int64_t(c.x) & mask) << 42 | (int64_t(c.y) & mask) << 21 | (int64_t(c.z) & mask);
+    }
+    glm::ivec3 cell_of(Point<N> p) const {
+        glm::ivec3 c(0);
+        for (int i = 0; i < N; ++i) c[i] = int(std::floor(p[i] / cell));
+        return c;
+    }
+    // `keep(path)`: the paths the grid holds.
+    template <class Keep>
+    SampleGrid(const PathDump& frame, float c, Keep keep) : cell(c) {
         for (const auto& path : frame.paths)
-            for (size_t k = 0; k < path.samples.size(); ++k) {
-                const glm::vec2 p = path.samples[k].pixel;
-                buckets[key(int(std::floor(p.x / cell)), int(std::floor(p.y / cell)))].push_back({&path, k});
-            }
+            if (keep(path))
+                for (size_t k = 0; k < path.samples.size(); ++k)
+                    buckets[key(cell_of(where<N>(path.samples[k])))].push_back({&path, k});
     }
+    SampleGrid(const PathDump& frame, float c) : SampleGrid(frame, c, [](const DumpPath&) { return true; }) {}
+    // Every entry within `radius` (at most a cell) of `p`.
     template <class F>
-    void for_each_within(glm::vec2 p, float radius, F&& f) const {
-        const int cx = int(std::floor(p.x / cell)), cy = int(std::floor(p.y / cell));
-        for (int y = cy - 1; y <= cy + 1; ++y)
-            for (int x = cx - 1; x <= cx + 1; ++x) {
-                const auto it = buckets.find(key(x, y));
-                if (it == buckets.end()) continue;
-                for (const Entry& e : it->second)
-                    if (glm::length(e.sample().pixel - p) <= radius) f(e);
-            }
+    void for_each_within(Point<N> p, float radius, F&& f) const {
+        const glm::ivec3 c = cell_of(p);
+        const glm::ivec3 reach(1, 1, N == 3 ? 1 : 0);
+        for (int z = c.z - reach.z; z <= c.z + reach.z; ++z)
+            for (int y = c.y - reach.y; y <= c.y + reach.y; ++y)
+                for (int x = c.x - reach.x; x <= c.x + reach.x; ++x) {
+                    const auto it = buckets.find(key({x, y, z}));
+                    if (it == buckets.end()) continue;
+                    for (const Entry& e : it->second)
+                        if (glm::length(e.at() - p) <= radius) f(e);
+                }
     }
-    // Of the samples of `line_set` whose pixel lies within `radius`, those whose
-    // `distance(entry)` is within 0.05 px of the least: the least `score(entry)` among them
-    // (none: no sample within `radius`). Equally near samples are the ends two paths share (a
-    // chain cut at a vertex: one point ends a path and starts the next, each with its own
-    // phase) or a run in two pieces; the callers score by phase difference, so that the
-    // point's own path is the one compared.
+    // Of the samples of `line_set` within `radius`, those whose `distance(entry)` is within
+    // `tie` (0.05 px on the screen) of the least: the least `score(entry)` among them (none: no
+    // sample within `radius`). Equally near samples are the ends two paths share (a chain cut
+    // at a vertex: one point ends a path and starts the next, each with its own phase) or a run
+    // in two pieces; the callers score by phase difference, so that the point's own path is
+    // the one compared.
     template <class Distance, class Score>
-    std::optional<double> least_score_of_nearest(glm::vec2 p, float radius, const std::string& line_set,
+    std::optional<double> least_score_of_nearest(Point<N> p, float radius, float tie, const std::string& line_set,
                                                  Distance distance, Score score) const {
-        constexpr float kTie = 0.05f;
         float nearest_d = radius;
         for_each_within(p, radius, [&](const Entry& e) {
             if (e.path->line_set == line_set) nearest_d = std::min(nearest_d, distance(e));
         });
         std::optional<double> best;
         for_each_within(p, radius, [&](const Entry& e) {
-            if (e.path->line_set != line_set || distance(e) > nearest_d + kTie) return;
+            if (e.path->line_set != line_set || distance(e) > nearest_d + tie) return;
             const double sc = score(e);
             if (!best || sc < *best) best = sc;
         });
@@ -150,13 +183,14 @@ struct PathPoint {
     float distance;
     double t;
 };
-PathPoint point_on_path(const SampleGrid::Entry& e, glm::vec2 p) {
+template <int N>
+PathPoint point_on_path(const typename SampleGrid<N>::Entry& e, Point<N> p) {
     const std::vector<DumpSample>& s = e.path->samples;
     double t = s[e.k].t;
-    float best = glm::length(s[e.k].pixel - p);
+    float best = glm::length(e.at() - p);
     for (const size_t other : {e.k - 1, e.k + 1}) {
         if (other >= s.size()) continue;  // e.k - 1 wraps past 0
-        const glm::vec2 a = s[e.k].pixel, b = s[other].pixel;
+        const Point<N> a = e.at(), b = where<N>(s[other]);
         const float len2 = glm::dot(b - a, b - a);
         if (len2 <= 0.0f) continue;
         const float alpha = std::clamp(glm::dot(p - a, b - a) / len2, 0.0f, 1.0f);
@@ -195,10 +229,13 @@ SlidingStats sliding_stats(std::vector<double>& dts, std::vector<double>& pixels
             .median_px = along.median, .p90_px = along.p90, .pairs = dts.size()};
 }
 
+using ScreenGrid = SampleGrid<2>;
+constexpr float kTiePx = 0.05f;  // samples this much farther than the nearest are as near
+
 // Whether a sample of another path of `line_set` than `path` lies within `radius` of `p`.
-bool crowded(const SampleGrid& grid, glm::vec2 p, float radius, const DumpPath* path) {
+bool crowded(const ScreenGrid& grid, glm::vec2 p, float radius, const DumpPath* path) {
     bool found = false;
-    grid.for_each_within(p, radius, [&](const SampleGrid::Entry& e) {
+    grid.for_each_within(p, radius, [&](const ScreenGrid::Entry& e) {
         found = found || (e.path != path && e.path->line_set == path->line_set);
     });
     return found;
@@ -208,22 +245,22 @@ bool crowded(const SampleGrid& grid, glm::vec2 p, float radius, const DumpPath* 
 
 SlidingMeasure measure_sliding(const std::vector<PathDump>& frames, float match_px) {
     std::vector<double> dts, pixels, alone_dts, alone_pixels;
-    std::optional<SampleGrid> previous;
+    std::optional<ScreenGrid> previous;
     for (size_t f = 1; f < frames.size(); ++f) {
         if (!previous) previous.emplace(frames[f - 1], std::max(match_px, 1.0f));
-        SampleGrid current(frames[f], std::max(match_px, 1.0f));
+        ScreenGrid current(frames[f], std::max(match_px, 1.0f));
         for (const auto& path : frames[f].paths)
             for (const auto& s : path.samples) {
-                auto distance = [&](const SampleGrid::Entry& e) { return point_on_path(e, s.pixel).distance; };
-                const SampleGrid::Entry* matched = nullptr;
+                auto distance = [&](const ScreenGrid::Entry& e) { return point_on_path<2>(e, s.pixel).distance; };
+                const ScreenGrid::Entry* matched = nullptr;
                 double best_dt = 0.0;
-                auto phase = [&](const SampleGrid::Entry& e) {
-                    const double dt = wrapped_dt(s.t, point_on_path(e, s.pixel).t);
+                auto phase = [&](const ScreenGrid::Entry& e) {
+                    const double dt = wrapped_dt(s.t, point_on_path<2>(e, s.pixel).t);
                     if (!matched || dt < best_dt) matched = &e, best_dt = dt;
                     return dt;
                 };
                 const std::optional<double> dt =
-                    previous->least_score_of_nearest(s.pixel, match_px, path.line_set, distance, phase);
+                    previous->least_score_of_nearest(s.pixel, match_px, kTiePx, path.line_set, distance, phase);
                 if (!dt) continue;
                 const double px = path.rho != 0.0f ? *dt / std::abs(double(path.rho)) : -1.0;
                 dts.push_back(*dt);
@@ -242,16 +279,73 @@ SlidingMeasure measure_sliding(const std::vector<PathDump>& frames, float match_
     return m;
 }
 
+bool attached_to_surface(const DumpPath& path) {
+    const std::optional<LineType> type = line_type_from_name(path.type);
+    return type && attached_to_surface(*type);
+}
+
+namespace {
+
+// Model units per pixel at sample k of `path`: the lengths of its segments on the surface
+// over their lengths on the screen (segments under a quarter pixel on the screen left out);
+// 0 where none is left.
+float units_per_pixel(const DumpPath& path, size_t k) {
+    float units = 0.0f, pixels = 0.0f;
+    for (const size_t other : {k - 1, k + 1}) {
+        if (other >= path.samples.size()) continue;  // k - 1 wraps past 0
+        const float on_screen = glm::length(path.samples[other].pixel - path.samples[k].pixel);
+        if (on_screen < 0.25f) continue;
+        units += glm::length(path.samples[other].position - path.samples[k].position);
+        pixels += on_screen;
+    }
+    return pixels > 0.0f ? units / pixels : 0.0f;
+}
+
+}  // namespace
+
+SlidingStats measure_sliding_on_surface(const std::vector<PathDump>& frames, float match_px) {
+    std::vector<double> dts, pixels;
+    for (size_t f = 1; f < frames.size(); ++f) {
+        // The match radius is `match_px` in model units at each sample. The grid's cells are
+        // twice the frame's median radius; a farther sample's radius is clamped to a cell.
+        std::vector<float> scales;
+        for (const DumpPath& path : frames[f].paths)
+            if (attached_to_surface(path))
+                for (size_t k = 0; k < path.samples.size(); ++k)
+                    if (const float upp = units_per_pixel(path, k); upp > 0.0f) scales.push_back(upp);
+        if (scales.empty()) continue;
+        std::nth_element(scales.begin(), scales.begin() + std::ptrdiff_t(scales.size() / 2), scales.end());
+        const float cell = 2.0f * match_px * scales[scales.size() / 2];
+        const SampleGrid<3> previous(frames[f - 1], cell, [](const DumpPath& p) { return attached_to_surface(p); });
+        for (const DumpPath& path : frames[f].paths) {
+            if (!attached_to_surface(path)) continue;
+            for (size_t k = 0; k < path.samples.size(); ++k) {
+                const float upp = units_per_pixel(path, k);
+                if (upp <= 0.0f) continue;
+                const DumpSample& s = path.samples[k];
+                auto distance = [&](const SampleGrid<3>::Entry& e) { return point_on_path<3>(e, s.position).distance; };
+                auto phase = [&](const SampleGrid<3>::Entry& e) { return wrapped_dt(s.t, point_on_path<3>(e, s.position).t); };
+                const std::optional<double> dt = previous.least_score_of_nearest(
+                    s.position, std::min(match_px * upp, cell), kTiePx * upp, path.line_set, distance, phase);
+                if (!dt) continue;
+                dts.push_back(*dt);
+                if (path.rho != 0.0f) pixels.push_back(*dt / std::abs(double(path.rho)));
+            }
+        }
+    }
+    return sliding_stats(dts, pixels);
+}
+
 PhaseError measure_phase_error(const PathDump& frame, const PathDump& reference, float match_px) {
     std::vector<double> dts;
-    const SampleGrid grid(reference, std::max(match_px, 1.0f));
+    const ScreenGrid grid(reference, std::max(match_px, 1.0f));
     for (const auto& path : frame.paths)
         for (const auto& s : path.samples) {
             // The nearest reference path of the same set; where several lie as near (shared
             // ends, a run in two pieces), the closest phase among them counts.
-            auto distance = [&](const SampleGrid::Entry& e) { return point_on_path(e, s.pixel).distance; };
-            auto phase = [&](const SampleGrid::Entry& e) { return wrapped_dt(s.t, point_on_path(e, s.pixel).t); };
-            if (const std::optional<double> dt = grid.least_score_of_nearest(s.pixel, match_px, path.line_set, distance, phase))
+            auto distance = [&](const ScreenGrid::Entry& e) { return point_on_path<2>(e, s.pixel).distance; };
+            auto phase = [&](const ScreenGrid::Entry& e) { return wrapped_dt(s.t, point_on_path<2>(e, s.pixel).t); };
+            if (const std::optional<double> dt = grid.least_score_of_nearest(s.pixel, match_px, kTiePx, path.line_set, distance, phase))
                 dts.push_back(*dt);
         }
     const Quantiles q = quantiles(dts);

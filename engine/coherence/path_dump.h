@@ -16,6 +16,14 @@
 //             tracker, so T of a crease and T of a silhouette crossing it are not
 //             comparable): its median, its 90th percentile (the tail a viewer sees), and the
 //             share of "pops" (|Δt| > 0.25);
+//   sliding on the surface — for lines attached to the surface (line_type.h's
+//             attached_to_surface: creases, borders, ridges, …), the same |Δt| with each sample
+//             matched to the previous frame's path of its set nearest to its surface point "p"
+//             (within 1.5 px, converted to the model's units by the sample's own path), T
+//             interpolated there. The screen measure counts a crease's motion across the screen
+//             with its surface as sliding under any policy that keeps its texture on the
+//             surface; this one counts what moves along the surface. Static models only: "p" is
+//             the posed point, so a skinned model's own motion would count as sliding;
 //   stretch — per sample, the on-screen length of one period of the sampled texture,
 //             ds/du, and the share of samples inside the best factor-of-2 band [x, 2x).
 #pragma once
@@ -45,6 +53,7 @@ struct DumpGroup {
 struct DumpSample {
     glm::vec2 pixel;
     float s, t, u;
+    glm::vec3 position{0.0f};  // "p", the surface point
 };
 struct DumpPath {
     std::string type;
@@ -52,6 +61,8 @@ struct DumpPath {
     float rho = 0.0f;
     std::vector<DumpSample> samples;
 };
+// Whether the path's type is attached to the surface (line_type.h; layers are not).
+[[nodiscard]] bool attached_to_surface(const DumpPath& path);
 struct PathDump {
     int frame = 0;
     int width = 0, height = 0;  // the image's (0: not given)
@@ -87,6 +98,9 @@ struct SlidingMeasure : SlidingStats {
 // spacing, 2 px: a texture that did not slide read one spacing wherever the samples had
 // moved along the path, and one that slid by less read 0 or a spacing.)
 [[nodiscard]] SlidingMeasure measure_sliding(const std::vector<PathDump>& frames, float match_px = 1.5f);
+
+// Sliding on the surface (above), over the paths attached to it; `alone` is not measured.
+[[nodiscard]] SlidingStats measure_sliding_on_surface(const std::vector<PathDump>& frames, float match_px = 1.5f);
 
 // How far one frame's parameterization is from a reference render of the same frame (a
 // farm chunk's first frames against one render of the shot): per sample, |Δt| (wrapped to

@@ -39,6 +39,15 @@ constexpr int kFaceLineTypeCount = 10;
 // The types a line set selects when it does not say: those drawn by default.
 constexpr uint32_t kDefaultLineTypes = 0xfu;
 
+// Lines that lie where the surface is, whatever the view (creases, borders, ridges, valleys,
+// material boundaries, intersections): a texture on them moves with the surface. The others
+// move over the surface as the view turns (contours, suggestive contours and rtsc's other
+// view-dependent lines), so a point of the surface is not a point of the line a frame later.
+constexpr bool attached_to_surface(LineType type) {
+    return type != LineType::Silhouette && type != LineType::Suggestive && type != LineType::ApparentRidge &&
+           type != LineType::SuggestiveHighlight && type != LineType::PrincipalHighlight;
+}
+
 // SVG group ids, scene-file keys and `--lines` names.
 inline const char* line_type_name(LineType type) {
     constexpr const char* names[kLineTypeCount] = {"silhouette",     "suggestive",           "crease",

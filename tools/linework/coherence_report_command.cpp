@@ -5,7 +5,7 @@
 // sliding (median and 90th percentile of |Δt| of nearby samples in consecutive frames, and
 // the share of pops over a quarter period; with --baseline, as ratios to another render; the
 // same again over the pairs where one path lies alone, where paths of a set run closer than the
-// match radius) and stretch (on-screen pixels per texture period, and the share of samples
+// match radius; for lines attached to the surface, also matched by surface point) and stretch (on-screen pixels per texture period, and the share of samples
 // inside the best factor-of-2 band). With --against REF: per frame, how far the
 // parameterization is from REF's dump of the same frame (a farm chunk against one render).
 #include <algorithm>
@@ -26,10 +26,13 @@ namespace {
 
 struct Measures {
     SlidingMeasure sliding;
+    SlidingStats on_surface;  // over the group's lines attached to the surface
     StretchMeasure stretch;
 };
 
-Measures measure(const std::vector<PathDump>& frames) { return {measure_sliding(frames), measure_stretch(frames)}; }
+Measures measure(const std::vector<PathDump>& frames) {
+    return {measure_sliding(frames), measure_sliding_on_surface(frames), measure_stretch(frames)};
+}
 
 // Below `nothing` (1e-4 periods, 0.01 px) nothing slides measurably: such a ratio is 0, not
 // a quotient of rounding errors (a still camera's lines give 0 under both policies).
@@ -60,6 +63,21 @@ void print_measures(const std::string& what, const Measures& m, const Measures* 
                     ratio(m.sliding.p90_dt, baseline->sliding.p90_dt), ratio(m.sliding.pops, baseline->sliding.pops),
                     ratio(m.sliding.median_px, baseline->sliding.median_px, 0.01),
                     ratio(m.sliding.p90_px, baseline->sliding.p90_px, 0.01));
+    // Lines attached to the surface, matched by their surface points (path_dump.h): what
+    // moves along the surface, not the surface's own motion on the screen.
+    const SlidingStats& o = m.on_surface;
+    if (o.pairs > 0) {
+        std::printf("    on the surface (lines attached to it, matched by surface point; static models): median |dt| "
+                    "%.5f, p90 %.5f periods (%.2f, %.2f px), pops %.3f %% of %zu pairs\n",
+                    o.median_dt, o.p90_dt, o.median_px, o.p90_px, 100.0 * o.pops, o.pairs);
+        if (baseline && baseline->on_surface.pairs > 0) {
+            const SlidingStats& b = baseline->on_surface;
+            std::printf("      ratios to the baseline on the surface: median %.3f, p90 %.3f, pops %.3f; in pixels: median "
+                        "%.3f, p90 %.3f\n",
+                        ratio(o.median_dt, b.median_dt), ratio(o.p90_dt, b.p90_dt), ratio(o.pops, b.pops),
+                        ratio(o.median_px, b.median_px, 0.01), ratio(o.p90_px, b.p90_px, 0.01));
+        }
+    }
     // The pairs where one path of the group lies alone within the match radius (see
     // SlidingMeasure::alone): where paths crowd, the measure compares neighbouring textures.
     const SlidingStats& a = m.sliding.alone;
@@ -230,7 +248,9 @@ Runner add_coherence_report_command(CLI::App& app) {
                                        "Sliding: each sample's phase change |dt| against T on the previous frame's "
                                        "nearest path of the same line set (within 1.5 px), interpolated between that "
                                        "path's samples; its median, 90th percentile and the share over a quarter "
-                                       "period (pops), also over the pairs where one path lies alone.");
+                                       "period (pops), also over the pairs where one path lies alone, and for "
+                                       "lines attached to the surface (creases, borders, ridges, ...) with each "
+                                       "sample matched by its surface point instead (static models).");
     cmd->add_option("dumps", o->folders, "Dump folders written by `linework render --dump-paths`")->required();
     cmd->add_option("--against", o->against,
                     "Reference dump folder of the same frames (one render of the shot): print per frame how far "
