@@ -430,8 +430,8 @@ TEST(Coherence, SlidingReportsThePairsWhereOnePathLiesAlone) {
     EXPECT_EQ(both.alone.pops, 0.0);
 }
 
-// A crease carried along itself by its surface, 3 px a frame (the line X = 0…0.4 of the model
-// drawn at 100 px a unit, shifted), sampled at fixed pixels. A texture on the surface slides
+// A crease carried along itself by its surface, 3 px a frame (a line of the model drawn at
+// 100 px a unit, shifted), sampled at fixed pixels. A texture on the surface slides
 // 3 px a frame on the screen and not at all on the surface; a texture that stays on the
 // screen, the other way round. Silhouettes are not attached: they have no surface measure.
 TEST(Coherence, AttachedLinesAreMeasuredOnTheSurface) {
@@ -443,7 +443,9 @@ TEST(Coherence, AttachedLinesAreMeasuredOnTheSurface) {
             const float x = 2.0f * float(k) + 10.0f;
             const float surface_px = x - shift;  // 100 × X
             const float t = kRho * (on_surface ? surface_px : x);
-            path.samples.push_back({{x, 5.0f}, x - 10.0f, t, t, {surface_px / 100.0f, 0.2f, -1.0f}});
+            // On a diagonal of the model's space through negative cells of the surface grid.
+            const glm::vec3 along = glm::normalize(glm::vec3(1.0f, -0.5f, 0.2f)) / 100.0f;
+            path.samples.push_back({{x, 5.0f}, x - 10.0f, t, t, glm::vec3(-0.3f, 0.1f, -0.2f) + surface_px * along});
         }
         return PathDump{.frame = f, .paths = {path}};
     };

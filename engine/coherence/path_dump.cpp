@@ -305,6 +305,7 @@ float units_per_pixel(const DumpPath& path, size_t k) {
 
 SlidingStats measure_sliding_on_surface(const std::vector<PathDump>& frames, float match_px) {
     std::vector<double> dts, pixels;
+    if (!(match_px > 0.0f)) return {};
     for (size_t f = 1; f < frames.size(); ++f) {
         // The match radius is `match_px` in model units at each sample. The grid's cells are
         // twice the frame's median radius; a farther sample's radius is clamped to a cell.

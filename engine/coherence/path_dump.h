@@ -19,7 +19,8 @@
 //   sliding on the surface — for lines attached to the surface (line_type.h's
 //             attached_to_surface: creases, borders, ridges, …), the same |Δt| with each sample
 //             matched to the previous frame's path of its set nearest to its surface point "p"
-//             (within 1.5 px, converted to the model's units by the sample's own path), T
+//             (within 1.5 px, converted to the model's units by the sample's own path, and at
+//             most twice the frame's median such radius), T
 //             interpolated there. The screen measure counts a crease's motion across the screen
 //             with its surface as sliding under any policy that keeps its texture on the
 //             surface; this one counts what moves along the surface. Static models only: "p" is

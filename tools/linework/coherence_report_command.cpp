@@ -44,6 +44,9 @@ double ratio(double a, double b, double nothing = 1e-4) {
 // One group's measures; against a baseline's same group (another policy's render of the same
 // shot), their ratios as well.
 void print_measures(const std::string& what, const Measures& m, const Measures* baseline) {
+    // Fewer pairs than this and a median or a share of pops is a handful of samples (the
+    // tables of docs/BENCHMARKS.md leave such groups out).
+    constexpr size_t kFewPairs = 300;
     std::printf("  %s:\n", what.c_str());
     std::printf("    sliding: median |dt| %.5f, p90 %.5f periods (%.2f, %.2f px), pops (|dt| > 0.25) %.3f %% of %zu matched "
                 "sample pairs\n",
@@ -52,9 +55,6 @@ void print_measures(const std::string& what, const Measures& m, const Measures* 
     std::printf("    stretch: %.2f %% of %zu samples within [%.1f, %.1f) px per period; median %.1f px\n",
                 100.0 * m.stretch.share_in_band, m.stretch.samples, m.stretch.band_low, 2.0 * m.stretch.band_low,
                 m.stretch.median_ds_du);
-    // Fewer pairs than this and a median or a share of pops is a handful of samples (the
-    // tables of docs/BENCHMARKS.md leave such groups out).
-    constexpr size_t kFewPairs = 300;
     if (m.sliding.pairs < kFewPairs)
         std::printf("    (only %zu matched pairs: too few for the sliding figures to mean much)\n", m.sliding.pairs);
     if (baseline && baseline->sliding.pairs > 0)
@@ -70,6 +70,7 @@ void print_measures(const std::string& what, const Measures& m, const Measures* 
         std::printf("    on the surface (lines attached to it, matched by surface point; static models): median |dt| "
                     "%.5f, p90 %.5f periods (%.2f, %.2f px), pops %.3f %% of %zu pairs\n",
                     o.median_dt, o.p90_dt, o.median_px, o.p90_px, 100.0 * o.pops, o.pairs);
+        if (o.pairs < kFewPairs) std::printf("      (only %zu pairs on the surface: too few to mean much)\n", o.pairs);
         if (baseline && baseline->on_surface.pairs > 0) {
             const SlidingStats& b = baseline->on_surface;
             std::printf("      ratios to the baseline on the surface: median %.3f, p90 %.3f, pops %.3f; in pixels: median "
