@@ -12,6 +12,7 @@
 //  - x and r are p's distances along d to the left and right edges, so the deformation is
 //    full on the right edge and vanishes on the left edge.
 // On forbidden pixels the point is left as the DP validated it (no opaque texel there).
+// The C++ reference of this stage: engine/ribbon/draw_reference.cpp (the same expressions).
 #include "ribbon_shared.glsl"
 
 layout(push_constant) uniform RibbonDrawPush {

@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include "core/image.h"
 #include "gpu/render_target.h"
+#include "ribbon/draw_reference.h"
 #include "ribbon_avoid_frag.h"
 #include "ribbon_draw_frag.h"
 #include "ribbon_draw_vert.h"
@@ -150,18 +151,15 @@ ImageRGBA8 RibbonRenderer::draw(const Ribbon& ribbon, const Exemplar& exemplar, 
     std::vector<PieceDraw> pieces;
     std::vector<int32_t> remaps;
     for (size_t i = 0; i < ribbon.pieces.size(); ++i) {
-        const RibbonPiece& p = ribbon.pieces[i];
-        const glm::ivec2 u = positions[i];
-        const glm::vec2 left_edge(left_edge_in_exemplar(p, ribbon.scale));
-        const glm::vec2 A(float(u.x) + 0.5f, float(u.y)), B = A + left_edge;
-        const glm::vec2 D = ribbon.to_exemplar(i, u, p.top_right), Cq = ribbon.to_exemplar(i, u, p.bottom_right);
+        const PieceFrame f = piece_frame(ribbon, i, positions[i]);
         int32_t offset = -1;
         if (stitch && i < stitch->remap.size()) {  // seam i+1 deforms piece i's right side
             offset = int32_t(remaps.size());
             remaps.insert(remaps.end(), stitch->remap[i].begin(), stitch->remap[i].end());
         }
-        pieces.push_back({glm::vec4(A, D), glm::vec4(D - A, Cq - B), glm::vec4(Cq - D, 0.0f, 0.0f),
-                          glm::vec4(left_edge, 0.0f, 0.0f), glm::ivec4(offset, C, 0, 0)});
+        pieces.push_back({glm::vec4(f.top_left, f.top_right), glm::vec4(f.top_edge, f.bottom_edge),
+                          glm::vec4(f.right_edge, 0.0f, 0.0f), glm::vec4(f.left_edge, 0.0f, 0.0f),
+                          glm::ivec4(offset, C, 0, 0)});
     }
     if (remaps.empty()) remaps.push_back(0);
     std::vector<uint32_t> mask(size_t(width) * size_t(height), 0u);

@@ -11,6 +11,7 @@
 // (T(x_i), B(x_i+1), T(x_i+1)) with exemplar coordinates at the corners; the avoidance
 // pass counts coverage by additive blending into RGBA8 (red = count / 255), the pattern
 // pass resamples the exemplar bilinearly, nearest on forbidden pixels (shaders/ribbon_draw.frag).
+// Their plain C++ references: avoidance.h (coverage) and draw_reference.h (the pattern).
 #pragma once
 
 #include <vector>
