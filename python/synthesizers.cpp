@@ -271,10 +271,8 @@ pyb::object ribbon(const pyb::object& exemplar_value, const pyb::object& curve_v
 
     const LooserRows looser = looser_rows(s.solution);
     const size_t cut = looser.cut.size(), empty = looser.empty.size();
-    if (empty == s.solution.rules.size())  // a blank image is no result, as for the command
-        throw pyb::value_error("curve: the ribbon drew nothing: every piece lies where the ribbon overlaps itself" +
-                               std::string(user.pixels.empty() ? " (a curve that doubles back within the ribbon's width)"
-                                                               : " or where `avoid` forbids ink"));
+    if (const std::optional<std::string> blank = blank_ribbon_reason(s.solution, user.pixels.empty() ? "" : "`avoid`"))
+        throw pyb::value_error("curve: " + *blank);
     if (empty > 0) {  // as the command prints it
         const std::string warning = std::to_string(empty) + " of " + std::to_string(s.solution.rules.size()) +
                                     " pieces lie where no ink can avoid the overlap and are left empty "

@@ -209,4 +209,11 @@ LooserRows looser_rows(const RibbonSolution& solution) {
     return rows;
 }
 
+std::optional<std::string> blank_ribbon_reason(const RibbonSolution& solution, const std::string& avoid) {
+    if (solution.rules.empty() || looser_rows(solution).empty.size() < solution.rules.size()) return std::nullopt;
+    return "the ribbon drew nothing: every piece lies where the ribbon overlaps itself" +
+           (avoid.empty() ? std::string(" (a curve that doubles back within the ribbon's width)")
+                          : " or where " + avoid + " forbids ink");
+}
+
 }  // namespace lw

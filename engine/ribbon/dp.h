@@ -24,6 +24,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -71,6 +72,11 @@ struct LooserRows {
     std::vector<size_t> empty, cut;
 };
 [[nodiscard]] LooserRows looser_rows(const RibbonSolution& solution);
+
+// A solution whose every piece was left empty draws a blank image, which is no result: why,
+// for the caller's error ("the ribbon drew nothing: …"); nothing while some piece has ink.
+// `avoid`: how the caller names the user's avoidance map ("" for none).
+[[nodiscard]] std::optional<std::string> blank_ribbon_reason(const RibbonSolution& solution, const std::string& avoid);
 
 // D(prev + R_row−1, cur + L_row): the seam cost between rows row−1 and row.
 [[nodiscard]] float seam_cost(const DpProblem& problem, size_t row, glm::ivec2 prev, glm::ivec2 cur);

@@ -150,11 +150,8 @@ int run_ribbon(const RibbonOptions& o) {
         std::printf("avoidance: %zu pieces (%s%s) lie where no ink can avoid the overlap and are left empty\n",
                     empty_count, empty.c_str(), empty_count > 8 ? ", …" : "");
     std::fflush(stdout);
-    if (empty_count == s.solution.rules.size())  // a blank image is no result
-        throw Error(o.curve + ": the ribbon drew nothing: every piece lies where the ribbon overlaps itself" +
-                    (o.avoid.empty() ? std::string(" (a curve that doubles back within the ribbon's width)")
-                                     : " or where " + o.avoid + " forbids ink") +
-                    "; nothing was written");
+    if (const std::optional<std::string> blank = blank_ribbon_reason(s.solution, o.avoid))
+        throw Error(o.curve + ": " + *blank + "; nothing was written");
     const std::optional<ScaleShortfall> shortfall = cut_count > 0 ? scale_shortfall(exemplar, s.ribbon.scale) : std::nullopt;
     if (shortfall)
         std::fprintf(stderr,
