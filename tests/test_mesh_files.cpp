@@ -223,5 +223,73 @@ TEST(MeshFile, GlbObjAndPlyRenderIdentically) {
     }
 }
 
+// A grid of 4 × 4 vertices (x = column, y = row) as triangle strips, one strip per row of
+// cells: the first two rows stitched into one strip by repeated vertices (degenerate
+// triangles, whose place in the strip keeps the winding's parity), then `-1` restarting the
+// strip for the third. Written as ASCII, binary little- and big-endian.
+void write_strip_ply(const fs::path& path, const std::string& format) {
+    const std::vector<int32_t> strip = {0, 4, 1, 5, 2, 6, 3, 7, 7, 4, 4, 8, 5, 9, 6, 10, 7, 11,
+                                        -1, 8, 12, 9, 13, 10, 14, 11, 15};
+    std::ofstream out(path, std::ios::binary);
+    out << "ply\nformat " << format << " 1.0\nelement vertex 16\nproperty float x\nproperty float y\nproperty float z\n"
+        << "element tristrips 1\nproperty list int int vertex_indices\nend_header\n";
+    auto put = [&](auto value) {
+        if (format == "ascii") {
+            out << value << ' ';
+            return;
+        }
+        char bytes[sizeof value];
+        std::memcpy(bytes, &value, sizeof value);
+        if (format == "binary_big_endian") std::reverse(bytes, bytes + sizeof value);
+        out.write(bytes, sizeof value);
+    };
+    for (int v = 0; v < 16; ++v) {
+        put(float(v % 4));
+        put(float(v / 4));
+        put(0.0f);
+        if (format == "ascii") out << '\n';
+    }
+    put(int32_t(strip.size()));
+    for (const int32_t i : strip) put(i);
+}
+
+// Assimp 5.2 read a whole strip element as its last triangle (a scan of 268,686 triangles as
+// one); the strips are read as rtsc's trimesh2 reads them.
+TEST(MeshFile, PlyTriangleStripsAreReadWhole) {
+    const fs::path dir = test::temp_dir();
+    std::vector<uint32_t> first;
+    for (const char* format : {"ascii", "binary_little_endian", "binary_big_endian"}) {
+        const fs::path path = dir / (std::string(format) + ".ply");
+        write_strip_ply(path, format);
+        const TriangleMesh mesh = world_mesh(load_model(path));
+        // Three rows of three cells, two triangles a cell; the degenerate ones skipped.
+        ASSERT_EQ(mesh.triangle_count(), 18u) << format;
+        ASSERT_EQ(mesh.positions.size(), 16u) << format;
+        for (size_t t = 0; t < mesh.triangle_count(); ++t) {
+            const glm::vec3 a = mesh.positions[mesh.indices[3 * t]], b = mesh.positions[mesh.indices[3 * t + 1]],
+                            c = mesh.positions[mesh.indices[3 * t + 2]];
+            EXPECT_LT(glm::cross(b - a, c - a).z, 0.0f) << format << ": triangle " << t << " winds the other way";
+        }
+        // Every cell covered: the triangles' areas sum to the grid's, 3 × 3.
+        float area = 0.0f;
+        for (size_t t = 0; t < mesh.triangle_count(); ++t)
+            area += 0.5f * glm::length(glm::cross(mesh.positions[mesh.indices[3 * t + 1]] - mesh.positions[mesh.indices[3 * t]],
+                                                  mesh.positions[mesh.indices[3 * t + 2]] - mesh.positions[mesh.indices[3 * t]]));
+        EXPECT_NEAR(area, 9.0f, 1e-5f) << format;
+        if (first.empty()) first = mesh.indices;
+        EXPECT_EQ(mesh.indices, first) << format << " reads other triangles than ascii";
+    }
+    // A strip naming a vertex the file does not have.
+    std::ofstream(dir / "bad.ply") << "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                      "property float z\nelement tristrips 1\nproperty list int int vertex_indices\nend_header\n"
+                                      "0 0 0\n1 0 0\n0 1 0\n4 0 1 2 7\n";
+    try {
+        (void)load_model(dir / "bad.ply");
+        ADD_FAILURE() << "a strip past the vertices was read";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("bad.ply: PLY tristrips 0 refers to vertex 7 of 3"), std::string::npos) << e.what();
+    }
+}
+
 }  // namespace
 }  // namespace lw

@@ -11,6 +11,7 @@
 // what a PLY declares (hangs, aborts, fills memory on malformed files): scene/ply_check.cpp
 // checks the structure first, and our own pass over the faces runs before its post-processing.
 #include <cmath>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -106,6 +107,27 @@ size_t keep_polygons(aiMesh& mesh, const std::string& file) {
     return kept;
 }
 
+// One mesh of one primitive, no material, under one root node: what an OBJ or PLY becomes.
+Model single_mesh_model(const std::filesystem::path& path, std::vector<Primitive> primitives) {
+    Model model;
+    model.path = path;
+    model.meshes.push_back(Mesh{.name = path.stem().string(), .primitives = std::move(primitives)});
+    // OBJ and PLY have no scene graph worth keeping (OBJ groups are meshes here): one root node.
+    model.nodes.push_back({.name = path.stem().string(), .mesh = 0});
+    model.roots = {0};
+    return model;
+}
+
+// A PLY of triangle strips (read_ply_strips has checked its indices and coordinates).
+Model model_from_strips(PlyStripMesh strips, const std::filesystem::path& path) {
+    if (strips.indices.empty()) throw Error(path.string() + ": " + kNoTriangles);
+    Primitive p;
+    p.positions = std::move(strips.positions);
+    p.normals = std::move(strips.normals);
+    p.indices = std::move(strips.indices);
+    return single_mesh_model(path, {std::move(p)});
+}
+
 }  // namespace
 
 bool is_mesh_file_path(const std::filesystem::path& path) {
@@ -121,7 +143,10 @@ Model load_mesh_file(const std::filesystem::path& path) {
     std::error_code ec;
     if (!std::filesystem::exists(path, ec)) throw Error(file + ": no such file");
     if (!std::filesystem::is_regular_file(path, ec)) throw Error(file + ": not a regular file");
-    if (lower(path.extension().string()) == ".ply") check_ply_structure(path, file);
+    if (lower(path.extension().string()) == ".ply") {
+        check_ply_structure(path, file);
+        if (std::optional<PlyStripMesh> strips = read_ply_strips(path, file)) return model_from_strips(std::move(*strips), path);
+    }
 
     // Parsed and validated first, post-processed after our own pass over the faces: Debian's
     // Assimp is built with its assertions on, and its Triangulate step aborts the process on
@@ -140,21 +165,16 @@ Model load_mesh_file(const std::filesystem::path& path) {
     scene = importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_JoinIdenticalVertices);
     if (!scene) throw Error(file + ": cannot load the mesh: " + one_line(importer.GetErrorString()));
 
-    Model model;
-    model.path = path;
-    Mesh mesh{.name = path.stem().string()};
+    std::vector<Primitive> primitives;
     for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
         Primitive p = to_primitive(*scene, *scene->mMeshes[m], file, "mesh " + std::to_string(m));
-        if (!p.indices.empty()) mesh.primitives.push_back(std::move(p));
+        if (!p.indices.empty()) primitives.push_back(std::move(p));
     }
-    if (mesh.primitives.empty()) throw Error(file + ": " + kNoTriangles);
+    if (primitives.empty()) throw Error(file + ": " + kNoTriangles);
+    Model model = single_mesh_model(path, std::move(primitives));
     // Names only: line sets select by them; the scene colours the surface (MTL colours are not read).
     for (unsigned m = 0; m < scene->mNumMaterials; ++m)
         model.materials.push_back(Material{.name = material_name(*scene->mMaterials[m]), .has_color = false});
-    model.meshes.push_back(std::move(mesh));
-    // OBJ and PLY have no scene graph worth keeping (OBJ groups are meshes here): one root node.
-    model.nodes.push_back({.name = path.stem().string(), .mesh = 0});
-    model.roots = {0};
     return model;
 }
 

@@ -7,9 +7,14 @@
 // pass reads only the structure — the header, and for ASCII the list lengths — so that such
 // a file is refused in one pass over its bytes; Assimp still reads the values.
 #include <algorithm>
+#include <bit>
 #include <cctype>
+#include <cstdint>
 #include <cstdlib>
+#include <cstring>
+#include <cmath>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -25,6 +30,9 @@ struct PlyProperty {
     bool list = false;
     unsigned size = 0;        // bytes of a scalar (binary)
     unsigned count_size = 0;  // bytes of a list's length (binary)
+    std::string type;         // of a scalar or a list's items
+    std::string count_type;   // of a list's length
+    std::string name;
 };
 
 struct PlyElement {
@@ -42,12 +50,16 @@ unsigned type_size(const std::string& type) {
     return 0;
 }
 
-}  // namespace
+// The header of a PLY file read whole into `bytes`.
+struct PlyLayout {
+    std::string format;
+    std::vector<PlyElement> elements;
+    size_t header_end = 0;  // the body's first byte
+};
 
-void check_ply_structure(const std::filesystem::path& path, const std::string& file) {
-    std::ifstream in(path, std::ios::binary);
-    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    const auto fail = [&](const std::string& problem) { throw Error(file + ": " + problem); };
+template <class Fail>
+PlyLayout read_layout(const std::string& bytes, Fail fail) {
+    PlyLayout layout;
     if (bytes.rfind("ply\n", 0) != 0 && bytes.rfind("ply\r\n", 0) != 0) fail("not a PLY file (the first line is not \"ply\")");
     size_t header_end = std::string::npos;
     for (size_t at = bytes.find("end_header"); at != std::string::npos; at = bytes.find("end_header", at + 1))
@@ -57,10 +69,12 @@ void check_ply_structure(const std::filesystem::path& path, const std::string& f
             break;
         }
     if (header_end == std::string::npos) fail("PLY header has no end_header line before the end of the file");
+    layout.header_end = header_end;
 
     std::istringstream header(bytes.substr(0, header_end));
-    std::string line, format;
-    std::vector<PlyElement> elements;
+    std::string line;
+    std::string& format = layout.format;
+    std::vector<PlyElement>& elements = layout.elements;
     while (std::getline(header, line)) {
         std::istringstream words(line);
         std::string word;
@@ -82,11 +96,15 @@ void check_ply_structure(const std::filesystem::path& path, const std::string& f
                 p.list = true;
                 p.count_size = type_size(count_type);
                 p.size = type_size(item_type);
+                p.type = item_type;
+                p.count_type = count_type;
                 if (p.count_size == 0 || p.size == 0) fail("PLY header: bad list property \"" + line + "\"");
             } else {
                 p.size = type_size(type);
+                p.type = type;
                 if (p.size == 0) fail("PLY header: unknown property type \"" + type + "\"");
             }
+            words >> p.name;
             elements.back().properties.push_back(p);
         } else if (!word.empty() && word != "ply" && word != "comment" && word != "obj_info" && word != "end_header") {
             // Assimp reads such lines its own way, and then the body differently from us.
@@ -98,6 +116,24 @@ void check_ply_structure(const std::filesystem::path& path, const std::string& f
     }
     if (format != "ascii" && format != "binary_little_endian" && format != "binary_big_endian")
         fail("PLY header: unknown format \"" + format + "\"");
+
+    return layout;
+}
+
+std::string read_bytes(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+}  // namespace
+
+void check_ply_structure(const std::filesystem::path& path, const std::string& file) {
+    const std::string bytes = read_bytes(path);
+    const auto fail = [&](const std::string& problem) { throw Error(file + ": " + problem); };
+    const PlyLayout layout = read_layout(bytes, fail);
+    const std::string& format = layout.format;
+    const std::vector<PlyElement>& elements = layout.elements;
+    const size_t header_end = layout.header_end;
 
     // Every element takes at least a byte per property (binary: its size; ASCII: a digit and
     // a separator), so the counts cannot outgrow the file.
@@ -137,6 +173,155 @@ void check_ply_structure(const std::filesystem::path& path, const std::string& f
                 for (unsigned long long k = 0; k < n; ++k)
                     if (!next()) fail("PLY body ends inside element " + e.name + " " + std::to_string(i));
             }
+}
+
+namespace {
+
+// The values of a PLY body in the order the header lays them out, ASCII or binary.
+class BodyReader {
+public:
+    BodyReader(const std::string& bytes, const PlyLayout& layout, std::string file)
+        : bytes_(bytes), at_(layout.header_end), ascii_(layout.format == "ascii"),
+          swap_((layout.format == "binary_big_endian") != (std::endian::native == std::endian::big)),
+          file_(std::move(file)) {}
+
+    // The next value of `type` (`size` bytes in binary); `where` names it in errors.
+    double next(const std::string& type, unsigned size, const std::string& where) {
+        if (ascii_) {
+            while (at_ < bytes_.size() && std::isspace(static_cast<unsigned char>(bytes_[at_]))) ++at_;
+            const char* begin = bytes_.c_str() + at_;
+            char* stop = nullptr;
+            const double v = std::strtod(begin, &stop);
+            if (stop == begin) throw Error(file_ + ": PLY body: no number in " + where);
+            at_ += size_t(stop - begin);
+            return v;
+        }
+        if (at_ + size > bytes_.size()) throw Error(file_ + ": PLY body ends inside " + where);
+        unsigned char raw[8];
+        std::memcpy(raw, bytes_.data() + at_, size);
+        at_ += size;
+        if (swap_) std::reverse(raw, raw + size);
+        return decode(raw, type);
+    }
+
+private:
+    static double decode(const unsigned char* raw, const std::string& type) {
+        auto as = [&]<class T>(T) {
+            T v;
+            std::memcpy(&v, raw, sizeof(T));
+            return double(v);
+        };
+        if (type == "char" || type == "int8") return as(int8_t{});
+        if (type == "uchar" || type == "uint8") return as(uint8_t{});
+        if (type == "short" || type == "int16") return as(int16_t{});
+        if (type == "ushort" || type == "uint16") return as(uint16_t{});
+        if (type == "int" || type == "int32") return as(int32_t{});
+        if (type == "uint" || type == "uint32") return as(uint32_t{});
+        if (type == "float" || type == "float32") return as(float{});
+        return as(double{});
+    }
+
+    const std::string& bytes_;
+    size_t at_;
+    bool ascii_, swap_;
+    std::string file_;
+};
+
+// Triangles of one strip's indices: triangle k is (v_k, v_k+1, v_k+2), its first two swapped
+// when k is odd so that every triangle of the strip winds the same way; -1 restarts the strip;
+// degenerate triangles (stitching strips together) are skipped.
+void strip_triangles(const std::vector<int64_t>& strip, std::vector<uint32_t>& out) {
+    int64_t a = -1, b = -1;
+    bool odd = false;
+    for (const int64_t v : strip) {
+        if (v < 0) {
+            a = b = -1;
+            odd = false;
+            continue;
+        }
+        if (a < 0) {
+            a = v;
+            continue;
+        }
+        if (b < 0) {
+            b = v;
+            continue;
+        }
+        if (a != b && b != v && a != v) {
+            const int64_t first = odd ? b : a, second = odd ? a : b;
+            out.insert(out.end(), {uint32_t(first), uint32_t(second), uint32_t(v)});
+        }
+        a = b;
+        b = v;
+        odd = !odd;
+    }
+}
+
+}  // namespace
+
+std::optional<PlyStripMesh> read_ply_strips(const std::filesystem::path& path, const std::string& file) {
+    const std::string bytes = read_bytes(path);
+    const PlyLayout layout = read_layout(bytes, [&](const std::string& problem) { throw Error(file + ": " + problem); });
+    const auto strips = std::find_if(layout.elements.begin(), layout.elements.end(),
+                                     [](const PlyElement& e) { return e.name == "tristrips"; });
+    if (strips == layout.elements.end()) return std::nullopt;
+    PlyStripMesh mesh;
+    BodyReader body(bytes, layout, file);
+    for (auto e = layout.elements.begin(); e != std::next(strips); ++e) {
+        const bool is_vertex = e->name == "vertex", is_strips = e == strips;
+        // Where x, y, z and nx, ny, nz are among the vertex's properties.
+        auto index_of = [&](const char* name) {
+            for (size_t k = 0; k < e->properties.size(); ++k)
+                if (!e->properties[k].list && e->properties[k].name == name) return int(k);
+            return -1;
+        };
+        const int position[3] = {index_of("x"), index_of("y"), index_of("z")};
+        const int normal[3] = {index_of("nx"), index_of("ny"), index_of("nz")};
+        const bool normals = is_vertex && normal[0] >= 0 && normal[1] >= 0 && normal[2] >= 0;
+        if (is_vertex && (position[0] < 0 || position[1] < 0 || position[2] < 0))
+            throw Error(file + ": PLY vertex element has no x, y and z properties");
+        std::vector<double> values(e->properties.size());
+        std::vector<int64_t> strip;
+        for (unsigned long long i = 0; i < e->count; ++i) {
+            const std::string where = "element " + e->name + " " + std::to_string(i);
+            bool first_list = true;
+            for (size_t k = 0; k < e->properties.size(); ++k) {
+                const PlyProperty& prop = e->properties[k];
+                if (!prop.list) {
+                    values[k] = body.next(prop.type, prop.size, where);
+                    continue;
+                }
+                const double n = body.next(prop.count_type, prop.count_size, where);
+                if (!(n >= 0.0) || n > double(bytes.size())) throw Error(file + ": PLY " + where + ": bad list length");
+                const bool indices = is_strips && first_list;
+                first_list = false;
+                if (indices) strip.clear();
+                for (unsigned long long j = 0; j < (unsigned long long)n; ++j) {
+                    const double v = body.next(prop.type, prop.size, where);
+                    if (!indices) continue;
+                    if (!(v > -2147483649.0 && v < 4294967296.0))
+                        throw Error(file + ": PLY " + where + ": " + std::to_string(v) + " is not a vertex index");
+                    strip.push_back(int64_t(v));
+                }
+            }
+            if (is_vertex) {
+                for (const int k : {position[0], position[1], position[2], normal[0], normal[1], normal[2]})
+                    if (k >= 0 && !(std::abs(values[size_t(k)]) <= double(std::numeric_limits<float>::max())))
+                        throw Error(file + ": PLY vertex " + std::to_string(i) + " has a coordinate that is not a finite float");
+                mesh.positions.push_back(glm::vec3(values[size_t(position[0])], values[size_t(position[1])], values[size_t(position[2])]));
+                if (normals)
+                    mesh.normals.push_back(glm::vec3(values[size_t(normal[0])], values[size_t(normal[1])], values[size_t(normal[2])]));
+            }
+            if (is_strips) {
+                for (const int64_t v : strip)
+                    if (v >= int64_t(mesh.positions.size()))
+                        throw Error(file + ": PLY tristrips " + std::to_string(i) + " refers to vertex " + std::to_string(v) +
+                                    " of " + std::to_string(mesh.positions.size()));
+                strip_triangles(strip, mesh.indices);
+            }
+        }
+    }
+    return mesh;
 }
 
 }  // namespace lw
