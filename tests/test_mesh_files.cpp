@@ -225,11 +225,14 @@ TEST(MeshFile, GlbObjAndPlyRenderIdentically) {
 
 // A grid of 4 × 4 vertices (x = column, y = row) as triangle strips, one strip per row of
 // cells: the first two rows stitched into one strip by repeated vertices (degenerate
-// triangles, whose place in the strip keeps the winding's parity), then `-1` restarting the
-// strip for the third. Written as ASCII, binary little- and big-endian.
+// triangles, which still count in the strip's parity: after the even run 7 7 4 4 the second
+// row winds as the first), a last repeat making the run before the restart odd, then `-1`
+// and the third row, led by a repeated vertex: parity starts again at the restart, and the
+// leading repeat turns the third row the other way (the usual way to flip a strip).
+// Written as ASCII, binary little- and big-endian.
 void write_strip_ply(const fs::path& path, const std::string& format) {
-    const std::vector<int32_t> strip = {0, 4, 1, 5, 2, 6, 3, 7, 7, 4, 4, 8, 5, 9, 6, 10, 7, 11,
-                                        -1, 8, 12, 9, 13, 10, 14, 11, 15};
+    const std::vector<int32_t> strip = {0, 4, 1, 5, 2, 6, 3, 7, 7, 4, 4, 8, 5, 9, 6, 10, 7, 11, 11,
+                                        -1, 8, 8, 12, 9, 13, 10, 14, 11, 15};
     std::ofstream out(path, std::ios::binary);
     out << "ply\nformat " << format << " 1.0\nelement vertex 16\nproperty float x\nproperty float y\nproperty float z\n"
         << "element tristrips 1\nproperty list int int vertex_indices\nend_header\n";
@@ -254,7 +257,8 @@ void write_strip_ply(const fs::path& path, const std::string& format) {
 }
 
 // Assimp 5.2 read a whole strip element as its last triangle (a scan of 268,686 triangles as
-// one); the strips are read as rtsc's trimesh2 reads them.
+// one); the strips are read as rtsc's trimesh2 reads them. A file that also has faces, or
+// its vertices after the strips, is refused.
 TEST(MeshFile, PlyTriangleStripsAreReadWhole) {
     const fs::path dir = test::temp_dir();
     std::vector<uint32_t> first;
@@ -268,7 +272,9 @@ TEST(MeshFile, PlyTriangleStripsAreReadWhole) {
         for (size_t t = 0; t < mesh.triangle_count(); ++t) {
             const glm::vec3 a = mesh.positions[mesh.indices[3 * t]], b = mesh.positions[mesh.indices[3 * t + 1]],
                             c = mesh.positions[mesh.indices[3 * t + 2]];
-            EXPECT_LT(glm::cross(b - a, c - a).z, 0.0f) << format << ": triangle " << t << " winds the other way";
+            const bool third_row = std::min({a.y, b.y, c.y}) == 2.0f;
+            const float turn = glm::cross(b - a, c - a).z;
+            EXPECT_TRUE(third_row ? turn > 0.0f : turn < 0.0f) << format << ": triangle " << t << " winds the other way";
         }
         // Every cell covered: the triangles' areas sum to the grid's, 3 × 3.
         float area = 0.0f;
@@ -288,6 +294,27 @@ TEST(MeshFile, PlyTriangleStripsAreReadWhole) {
         ADD_FAILURE() << "a strip past the vertices was read";
     } catch (const Error& e) {
         EXPECT_NE(std::string(e.what()).find("bad.ply: PLY tristrips 0 refers to vertex 7 of 3"), std::string::npos) << e.what();
+    }
+    const std::string vertices = "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n";
+    const std::string strips = "element tristrips 1\nproperty list int int vertex_indices\n";
+    const std::string faces = "element face 1\nproperty list uchar int vertex_indices\n";
+    const struct {
+        const char* name;
+        std::string header, body, error;
+    } refused[] = {{"both.ply", vertices + faces + strips, "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 1 2\n",
+                    "both.ply: PLY has both faces and triangle strips"},
+                   {"after.ply", strips + vertices, "3 0 1 2\n0 0 0\n1 0 0\n0 1 0\n",
+                    "after.ply: PLY element vertex comes after tristrips"},
+                   {"restart.ply", vertices + strips, "0 0 0\n1 0 0\n0 1 0\n4 0 1 -2 2\n",
+                    "restart.ply: PLY tristrips 0: -2.000000 is not a vertex index"}};
+    for (const auto& r : refused) {
+        std::ofstream(dir / r.name) << "ply\nformat ascii 1.0\n" << r.header << "end_header\n" << r.body;
+        try {
+            (void)load_model(dir / r.name);
+            ADD_FAILURE() << r.name << " was read";
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find(r.error), std::string::npos) << e.what();
+        }
     }
 }
 

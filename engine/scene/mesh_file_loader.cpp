@@ -11,7 +11,6 @@
 // what a PLY declares (hangs, aborts, fills memory on malformed files): scene/ply_check.cpp
 // checks the structure first, and our own pass over the faces runs before its post-processing.
 #include <cmath>
-#include <optional>
 #include <string>
 #include <utility>
 
@@ -144,8 +143,7 @@ Model load_mesh_file(const std::filesystem::path& path) {
     if (!std::filesystem::exists(path, ec)) throw Error(file + ": no such file");
     if (!std::filesystem::is_regular_file(path, ec)) throw Error(file + ": not a regular file");
     if (lower(path.extension().string()) == ".ply") {
-        check_ply_structure(path, file);
-        if (std::optional<PlyStripMesh> strips = read_ply_strips(path, file)) return model_from_strips(std::move(*strips), path);
+        if (check_ply_structure(path, file)) return model_from_strips(read_ply_strips(path, file), path);
     }
 
     // Parsed and validated first, post-processed after our own pass over the faces: Debian's

@@ -127,7 +127,7 @@ std::string read_bytes(const std::filesystem::path& path) {
 
 }  // namespace
 
-void check_ply_structure(const std::filesystem::path& path, const std::string& file) {
+bool check_ply_structure(const std::filesystem::path& path, const std::string& file) {
     const std::string bytes = read_bytes(path);
     const auto fail = [&](const std::string& problem) { throw Error(file + ": " + problem); };
     const PlyLayout layout = read_layout(bytes, fail);
@@ -147,7 +147,18 @@ void check_ply_structure(const std::filesystem::path& path, const std::string& f
         least += e.count * per;
     }
     if (least > body) fail("PLY body of " + std::to_string(body) + " bytes is shorter than its header declares");
-    if (format != "ascii") return;
+    // Triangle strips are read by read_ply_strips, whole, up to the strips (so the vertices
+    // come first), and instead of faces, not beside them.
+    auto element = [&](const char* name) {
+        return std::find_if(elements.begin(), elements.end(), [&](const PlyElement& e) { return e.name == name; });
+    };
+    const bool strips = element("tristrips") != elements.end();
+    if (strips && element("face") != elements.end())
+        fail("PLY has both faces and triangle strips (elements face and tristrips): give one or the other");
+    if (strips && element("vertex") == elements.end()) fail("PLY has triangle strips but no vertex element");
+    if (strips && element("vertex") > element("tristrips"))
+        fail("PLY element vertex comes after tristrips: give the vertices first");
+    if (format != "ascii") return strips;
 
     // ASCII: walk the tokens as the header lays them out; a list's length must fit the tokens left.
     const char* p = bytes.c_str() + header_end;
@@ -160,7 +171,7 @@ void check_ply_structure(const std::filesystem::path& path, const std::string& f
         return token;
     };
     for (const PlyElement& e : elements)
-        for (unsigned long long i = 0; i < e.count; ++i)
+        for (unsigned long long i = 0; i < (e.properties.empty() ? 0 : e.count); ++i)
             for (const PlyProperty& prop : e.properties) {
                 const char* token = next();
                 if (!token) fail("PLY body ends inside element " + e.name + " " + std::to_string(i));
@@ -173,6 +184,7 @@ void check_ply_structure(const std::filesystem::path& path, const std::string& f
                 for (unsigned long long k = 0; k < n; ++k)
                     if (!next()) fail("PLY body ends inside element " + e.name + " " + std::to_string(i));
             }
+    return strips;
 }
 
 namespace {
@@ -185,18 +197,19 @@ public:
           swap_((layout.format == "binary_big_endian") != (std::endian::native == std::endian::big)),
           file_(std::move(file)) {}
 
-    // The next value of `type` (`size` bytes in binary); `where` names it in errors.
-    double next(const std::string& type, unsigned size, const std::string& where) {
+    // The next value of `type` (`size` bytes in binary), in entry `i` of `element`.
+    double next(const std::string& type, unsigned size, const PlyElement& element, unsigned long long i) {
         if (ascii_) {
             while (at_ < bytes_.size() && std::isspace(static_cast<unsigned char>(bytes_[at_]))) ++at_;
             const char* begin = bytes_.c_str() + at_;
             char* stop = nullptr;
             const double v = std::strtod(begin, &stop);
-            if (stop == begin) throw Error(file_ + ": PLY body: no number in " + where);
+            if (stop == begin) throw Error(file_ + ": PLY body: no number in element " + element.name + " " + std::to_string(i));
             at_ += size_t(stop - begin);
             return v;
         }
-        if (at_ + size > bytes_.size()) throw Error(file_ + ": PLY body ends inside " + where);
+        if (at_ + size > bytes_.size())
+            throw Error(file_ + ": PLY body ends inside element " + element.name + " " + std::to_string(i));
         unsigned char raw[8];
         std::memcpy(raw, bytes_.data() + at_, size);
         at_ += size;
@@ -259,15 +272,29 @@ void strip_triangles(const std::vector<int64_t>& strip, std::vector<uint32_t>& o
 
 }  // namespace
 
-std::optional<PlyStripMesh> read_ply_strips(const std::filesystem::path& path, const std::string& file) {
+namespace {
+
+// A strip's index as read: a vertex, or a restart (-1; the largest value of an unsigned type).
+int64_t strip_index(double v, const PlyProperty& prop, const std::string& file, unsigned long long strip) {
+    const bool is_unsigned = prop.type[0] == 'u';
+    if (v == -1.0 || (is_unsigned && v == std::exp2(8.0 * prop.size) - 1.0)) return -1;
+    if (!(v >= 0.0 && v < 4294967295.0) || v != std::floor(v))
+        throw Error(file + ": PLY tristrips " + std::to_string(strip) + ": " + std::to_string(v) + " is not a vertex index");
+    return int64_t(v);
+}
+
+}  // namespace
+
+PlyStripMesh read_ply_strips(const std::filesystem::path& path, const std::string& file) {
     const std::string bytes = read_bytes(path);
     const PlyLayout layout = read_layout(bytes, [&](const std::string& problem) { throw Error(file + ": " + problem); });
     const auto strips = std::find_if(layout.elements.begin(), layout.elements.end(),
                                      [](const PlyElement& e) { return e.name == "tristrips"; });
-    if (strips == layout.elements.end()) return std::nullopt;
+    if (strips == layout.elements.end()) throw Error(file + ": PLY has no tristrips element");
     PlyStripMesh mesh;
     BodyReader body(bytes, layout, file);
     for (auto e = layout.elements.begin(); e != std::next(strips); ++e) {
+        if (e->properties.empty()) continue;  // nothing to read, however many it declares
         const bool is_vertex = e->name == "vertex", is_strips = e == strips;
         // Where x, y, z and nx, ny, nz are among the vertex's properties.
         auto index_of = [&](const char* name) {
@@ -283,25 +310,22 @@ std::optional<PlyStripMesh> read_ply_strips(const std::filesystem::path& path, c
         std::vector<double> values(e->properties.size());
         std::vector<int64_t> strip;
         for (unsigned long long i = 0; i < e->count; ++i) {
-            const std::string where = "element " + e->name + " " + std::to_string(i);
             bool first_list = true;
             for (size_t k = 0; k < e->properties.size(); ++k) {
                 const PlyProperty& prop = e->properties[k];
                 if (!prop.list) {
-                    values[k] = body.next(prop.type, prop.size, where);
+                    values[k] = body.next(prop.type, prop.size, *e, i);
                     continue;
                 }
-                const double n = body.next(prop.count_type, prop.count_size, where);
-                if (!(n >= 0.0) || n > double(bytes.size())) throw Error(file + ": PLY " + where + ": bad list length");
-                const bool indices = is_strips && first_list;
+                const double n = body.next(prop.count_type, prop.count_size, *e, i);
+                if (!(n >= 0.0) || n > double(bytes.size()))
+                    throw Error(file + ": PLY element " + e->name + " " + std::to_string(i) + ": bad list length");
+                const bool indices = is_strips && first_list;  // a strip's vertex_indices
                 first_list = false;
                 if (indices) strip.clear();
                 for (unsigned long long j = 0; j < (unsigned long long)n; ++j) {
-                    const double v = body.next(prop.type, prop.size, where);
-                    if (!indices) continue;
-                    if (!(v > -2147483649.0 && v < 4294967296.0))
-                        throw Error(file + ": PLY " + where + ": " + std::to_string(v) + " is not a vertex index");
-                    strip.push_back(int64_t(v));
+                    const double v = body.next(prop.type, prop.size, *e, i);
+                    if (indices) strip.push_back(strip_index(v, prop, file, i));
                 }
             }
             if (is_vertex) {

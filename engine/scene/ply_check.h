@@ -6,7 +6,6 @@
 #pragma once
 
 #include <filesystem>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,17 +13,18 @@
 
 namespace lw {
 
-void check_ply_structure(const std::filesystem::path& path, const std::string& file);
+// True when the file's faces are triangle strips (read_ply_strips reads them, not Assimp).
+[[nodiscard]] bool check_ply_structure(const std::filesystem::path& path, const std::string& file);
 
 // A PLY whose faces are triangle strips (element "tristrips", a list of vertex indices, -1
 // restarting a strip; many scans of the 1990s come so, and rtsc's trimesh2 reads them): its
 // vertices (x, y, z; nx, ny, nz where given) and the strips' triangles. Assimp 5.2 keeps only
-// the last triangle of each strip element, a whole scan read as one triangle. nullopt for a
-// file without strips; lw::Error naming the file for one that cannot be read.
+// the last triangle of each strip element, a whole scan read as one triangle. lw::Error naming
+// the file for one that cannot be read.
 struct PlyStripMesh {
     std::vector<glm::vec3> positions, normals;
     std::vector<uint32_t> indices;  // three per triangle
 };
-[[nodiscard]] std::optional<PlyStripMesh> read_ply_strips(const std::filesystem::path& path, const std::string& file);
+[[nodiscard]] PlyStripMesh read_ply_strips(const std::filesystem::path& path, const std::string& file);
 
 }  // namespace lw
