@@ -10,6 +10,7 @@
 #include "ribbon/avoidance.h"
 #include "vector/curve.h"
 #include "ribbon/dp_reference.h"
+#include "ribbon/draw_reference.h"
 #include "ribbon/exemplar_gen.h"
 #include "ribbon/stitch.h"
 #include "test_ribbon_support.h"
@@ -240,6 +241,23 @@ TEST(RibbonDp, AChainAroundACircleHasNoCut) {
 
 // Whether a scale can hold the chain's 32-row band is whether a straight ribbon at that scale
 // finds positions under the strict rule: the predicate the warning uses agrees with the DP.
+// The stitching deformation (§3.2) on a straight piece of 8 × 24 texels whose seam shows
+// each right-edge sample two further down (T[s] = s + 2, clamped): nothing on the left edge,
+// the whole shift on the right edge, half of it halfway, and at the clamped end only what T
+// moves there.
+TEST(RibbonGeometry, StitchingDeformationGrowsFromTheLeftEdgeToTheRight) {
+    const PieceFrame f{.top_left = {0.5f, 0.0f}, .top_right = {8.5f, 0.0f}, .top_edge = {8.0f, 0.0f},
+                       .bottom_edge = {8.0f, 0.0f}, .right_edge = {0.0f, 24.0f}, .left_edge = {0.0f, 24.0f}};
+    std::vector<int32_t> remap(24);
+    for (int s = 0; s < 24; ++s) remap[size_t(s)] = std::min(s + 2, 23);
+    auto at = [&](float x, float y) { return stitch_deformation({x, y}, f, remap); };
+    EXPECT_NEAR(glm::length(at(0.5f, 12.0f)), 0.0f, 1e-6f);
+    EXPECT_NEAR(at(8.5f, 12.0f).y, 2.0f, 1e-5f);  // Δ = 2 samples of w/C = 1 texel
+    EXPECT_NEAR(at(8.5f, 12.0f).x, 0.0f, 1e-6f);
+    EXPECT_NEAR(at(4.5f, 12.0f).y, 1.0f, 1e-5f);
+    EXPECT_NEAR(at(8.5f, 23.5f).y, 0.0f, 1e-5f);  // the last sample stays: T[23] = 23
+}
+
 TEST(RibbonGeometry, AScaleHoldsThePatternWhenItsEdgeSamplesSpanIt) {
     const Exemplar e = make_exemplar(read_image_rgba8(test::source_dir() / "scenes/exemplars/chain.png"), "chain.png");
     ASSERT_TRUE(scale_shortfall(e, 33.0f).has_value());

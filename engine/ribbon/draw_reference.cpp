@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "core/error.h"
 #include "ribbon/triangle_raster.h"
@@ -85,6 +86,9 @@ ImageRGBA8 draw_ribbon_reference(const Ribbon& ribbon, const Exemplar& exemplar,
         // Seam i + 1 deforms piece i's right side.
         const std::span<const int32_t> remap =
             remaps && i < remaps->size() ? std::span<const int32_t>((*remaps)[i]) : std::span<const int32_t>();
+        if (!remap.empty() && remap.size() != size_t(ribbon.samples))  // the shader reads C = ribbon.samples
+            throw Error("ribbon draw: seam " + std::to_string(i + 1) + " has " + std::to_string(remap.size()) +
+                        " stitching samples, the ribbon " + std::to_string(ribbon.samples));
         auto shade = [&](int x, int y) {
             const bool forbidden_pixel = forbidden && forbidden->at(x, y);
             glm::vec2 e = ribbon.to_exemplar(i, u, glm::vec2(float(x) + 0.5f, float(y) + 0.5f));
