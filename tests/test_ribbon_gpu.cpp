@@ -32,6 +32,18 @@ Curve2D circle_curve(glm::vec2 centre, float radius, int points) {
     return c;
 }
 
+// A figure eight on a 160 × 100 canvas (it crosses itself) ending in a hairpin (it folds over).
+Curve2D eight_with_hairpin() {
+    Curve2D eight;
+    for (int i = 0; i <= 100; ++i) {
+        const float t = float(i) / 100.0f * 2.0f * float(M_PI);
+        eight.points.push_back({80.0f + 55.0f * std::sin(t), 50.0f + 30.0f * std::sin(2.0f * t)});
+    }
+    eight.points.push_back({80.0f, 75.0f});
+    eight.points.push_back({50.0f, 75.0f});
+    return eight;
+}
+
 void expect_same_tables(const DpTables& cpu, const DpTables& gpu) {
     ASSERT_EQ(cpu.valid.size(), gpu.valid.size());
     for (size_t r = 0; r < cpu.valid.size(); ++r) {
@@ -168,13 +180,7 @@ TEST_F(GpuTest, RibbonAvoidanceMapMatchesTheReference) {
 TEST_F(GpuTest, RibbonNoOpaquePixelInForbiddenRegions) {
     // A figure eight (it crosses itself), a hairpin at its end (folds over) and a user's
     // forbidden disc; drawn with and without the stitching deformation.
-    Curve2D eight;
-    for (int i = 0; i <= 100; ++i) {
-        const float t = float(i) / 100.0f * 2.0f * float(M_PI);
-        eight.points.push_back({80.0f + 55.0f * std::sin(t), 50.0f + 30.0f * std::sin(2.0f * t)});
-    }
-    eight.points.push_back({80.0f, 75.0f});
-    eight.points.push_back({50.0f, 75.0f});
+    const Curve2D eight = eight_with_hairpin();
     const int W = 160, H = 100;
     ForbiddenMask user{W, H, std::vector<uint8_t>(size_t(W) * H, 0)};
     for (int y = 0; y < H; ++y)
@@ -231,13 +237,7 @@ ImageDifference differences(const ImageRGBA8& a, const ImageRGBA8& b, int levels
 // figure eight, none of 1,292 on the circle. Drawn without the deformation, the reference
 // differs on 93 and 119 pixels by more than two levels, so the comparison sees it.
 TEST_F(GpuTest, RibbonStitchedDrawingEqualsTheReference) {
-    Curve2D eight;
-    for (int i = 0; i <= 100; ++i) {
-        const float t = float(i) / 100.0f * 2.0f * float(M_PI);
-        eight.points.push_back({80.0f + 55.0f * std::sin(t), 50.0f + 30.0f * std::sin(2.0f * t)});
-    }
-    eight.points.push_back({80.0f, 75.0f});
-    eight.points.push_back({50.0f, 75.0f});
+    const Curve2D eight = eight_with_hairpin();
     const struct {
         const char* name;
         Curve2D curve;
