@@ -107,6 +107,9 @@ void write_fixtures(const fs::path& tmp) {
         write(tmp / "short.ply", all.substr(0, all.find("end_header\n") + 11 + 40));  // half a vertex list
     }
     write(tmp / "text.ply", "not a ply\n");
+    write(tmp / "strips.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                              "property float z\nelement tristrips 1\nproperty list int int vertex_indices\nend_header\n"
+                              "0 0 0\n1 0 0\n0 1 0\n4 0 1 2 7\n");
     write(tmp / "model.stl", "solid x\nendsolid x\n");
     write(tmp / "nomodel.json", R"({"size": [10, 10]})");
     write(tmp / "missingmodel.json", R"({"model": "missing.glb"})");
