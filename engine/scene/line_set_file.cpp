@@ -151,29 +151,26 @@ std::vector<GeometryModifier> geometry_modifiers(ObjectReader& style, const std:
     for (size_t i = 0; i < list.size(); ++i) {
         ObjectReader r(list[i], style.path("geometry") + "[" + std::to_string(i) + "]", file);
         if (!r.has("kind")) r.fail_key("kind", "required");
-        const std::string k =
-            r.string_of("kind", {"sinus", "noise", "backbone_stretch", "tip_remove", "simplify"});
-        GeometryModifier m{.kind = k == "sinus" ? Kind::Sinus : k == "noise" ? Kind::Noise
-                                   : k == "backbone_stretch"             ? Kind::BackboneStretch
-                                   : k == "tip_remove"                   ? Kind::TipRemove
-                                                                         : Kind::Simplify};
-        // Each kind's own keys (another kind's were taken and changed nothing).
-        const std::vector<std::string> own = m.kind == Kind::Sinus   ? std::vector<std::string>{"wavelength", "amplitude", "phase"}
-                                             : m.kind == Kind::Noise ? std::vector<std::string>{"wavelength", "amplitude", "seed"}
-                                             : m.kind == Kind::Simplify ? std::vector<std::string>{"tolerance"}
-                                                                        : std::vector<std::string>{"length"};
-        // (Another kind's key at its default is what views saved before this rule wrote.)
+        std::set<std::string> names;
+        for (const GeometryKindKeys& g : kGeometryKinds) names.insert(g.name);
+        const std::string k = r.string_of("kind", names);
+        const GeometryKindKeys& kind =
+            *std::find_if(kGeometryKinds.begin(), kGeometryKinds.end(), [&](const GeometryKindKeys& g) { return k == g.name; });
+        GeometryModifier m{.kind = kind.kind};
+        // Each kind's own keys (another kind's were taken and changed nothing). Another kind's
+        // key at its default is what views saved before this rule wrote.
+        const std::vector<std::string> own(kind.keys.begin(), kind.keys.begin() + std::ptrdiff_t(kind.count));
         const GeometryModifier defaults;
-        const std::pair<const char*, double> others[] = {
-            {"wavelength", defaults.wavelength_px}, {"amplitude", defaults.amplitude_px}, {"phase", defaults.phase},
-            {"seed", double(defaults.seed)},        {"length", defaults.length_px},       {"tolerance", defaults.tolerance_px}};
-        for (const auto& [key, fallback] : others)
-            if (r.has(key) && std::find(own.begin(), own.end(), key) == own.end() &&
-                !(r.at(key).is_number() && r.at(key).get<double>() == fallback))
-                r.fail_key(key, "is not a key of " + k + " (its keys: " +
-                                    std::accumulate(std::next(own.begin()), own.end(), own.front(),
-                                                    [](const std::string& a, const std::string& b) { return a + ", " + b; }) +
-                                    ")");
+        for (const GeometryKindKeys& other : kGeometryKinds)
+            for (size_t i = 0; i < other.count; ++i) {
+                const char* key = other.keys[i];
+                if (r.has(key) && std::find(own.begin(), own.end(), key) == own.end() &&
+                    !(r.at(key).is_number() && r.at(key).get<double>() == geometry_key_value(defaults, key)))
+                    r.fail_key(key, "is not a key of " + k + " (its keys: " +
+                                        std::accumulate(std::next(own.begin()), own.end(), own.front(),
+                                                        [](const std::string& a, const std::string& b) { return a + ", " + b; }) +
+                                        ")");
+            }
         if (r.has("wavelength")) m.wavelength_px = float(r.number("wavelength", 0.5, 1e5));
         if (r.has("amplitude")) m.amplitude_px = float(r.number("amplitude", 0.0, 1e4));
         if (r.has("phase")) m.phase = float(r.number("phase", -1e4, 1e4));

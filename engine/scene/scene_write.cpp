@@ -63,23 +63,19 @@ json color_modifiers(const std::vector<ColorModifier>& modifiers) {
 }
 
 json geometry_modifiers(const std::vector<GeometryModifier>& modifiers) {
-    using Kind = GeometryModifier::Kind;
     json out = json::array();
     for (const GeometryModifier& m : modifiers) {
         // Each kind's own keys (the reader refuses another kind's).
-        switch (m.kind) {
-        case Kind::Sinus:
-            out.push_back({{"kind", "sinus"}, {"wavelength", round6(m.wavelength_px)},
-                           {"amplitude", round6(m.amplitude_px)}, {"phase", round6(m.phase)}});
-            break;
-        case Kind::Noise:
-            out.push_back({{"kind", "noise"}, {"wavelength", round6(m.wavelength_px)},
-                           {"amplitude", round6(m.amplitude_px)}, {"seed", m.seed}});
-            break;
-        case Kind::BackboneStretch: out.push_back({{"kind", "backbone_stretch"}, {"length", round6(m.length_px)}}); break;
-        case Kind::TipRemove: out.push_back({{"kind", "tip_remove"}, {"length", round6(m.length_px)}}); break;
-        case Kind::Simplify: out.push_back({{"kind", "simplify"}, {"tolerance", round6(m.tolerance_px)}}); break;
+        const GeometryKindKeys& kind = geometry_kind_keys(m.kind);
+        json entry{{"kind", kind.name}};
+        for (size_t i = 0; i < kind.count; ++i) {
+            const std::string key = kind.keys[i];
+            if (key == "seed")
+                entry[key] = m.seed;
+            else
+                entry[key] = round6(float(geometry_key_value(m, key)));
         }
+        out.push_back(std::move(entry));
     }
     return out;
 }

@@ -6,10 +6,12 @@
 // to several sets: each set selects, parameterizes and draws its own copy.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <set>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -125,6 +127,35 @@ struct GeometryModifier {
     float length_px = 8.0f;       // backbone stretch: added at both ends; tip removal: cut at both ends
     float tolerance_px = 1.0f;    // simplification: Douglas–Peucker tolerance
 };
+
+// Each kind's scene-file name and keys, in the order they are written: the scene reader
+// (scene/line_set_file.cpp) takes exactly these keys for the kind, the writer
+// (scene/scene_write.cpp) writes them.
+struct GeometryKindKeys {
+    GeometryModifier::Kind kind;
+    const char* name;
+    std::array<const char*, 3> keys;  // the first `count`
+    size_t count;
+};
+inline constexpr std::array<GeometryKindKeys, 5> kGeometryKinds{{
+    {GeometryModifier::Kind::Sinus, "sinus", {"wavelength", "amplitude", "phase"}, 3},
+    {GeometryModifier::Kind::Noise, "noise", {"wavelength", "amplitude", "seed"}, 3},
+    {GeometryModifier::Kind::BackboneStretch, "backbone_stretch", {"length"}, 1},
+    {GeometryModifier::Kind::TipRemove, "tip_remove", {"length"}, 1},
+    {GeometryModifier::Kind::Simplify, "simplify", {"tolerance"}, 1},
+}};
+inline const GeometryKindKeys& geometry_kind_keys(GeometryModifier::Kind kind) {
+    return kGeometryKinds[static_cast<size_t>(kind)];
+}
+// The member a key names ("wavelength", "amplitude", "phase", "seed", "length", "tolerance").
+inline double geometry_key_value(const GeometryModifier& m, std::string_view key) {
+    if (key == "wavelength") return m.wavelength_px;
+    if (key == "amplitude") return m.amplitude_px;
+    if (key == "phase") return m.phase;
+    if (key == "seed") return double(m.seed);
+    if (key == "length") return m.length_px;
+    return m.tolerance_px;
+}
 
 // Chaining options applied to each selected run before it is parameterized.
 struct ChainingOptions {
