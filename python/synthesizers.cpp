@@ -334,7 +334,9 @@ Raises ValueError for a bad argument or exemplar, with the command line's messag
     m.def("slam_pattern", &slam_pattern, "name"_a, pyb::kw_only(), "levels"_a = 17, "length"_a = 1024, "height"_a = 32,
           "seed"_a = int64_t(1),
           R"(A procedural, exactly self-similar SLAM as `linework slam-pattern` writes it: a periodic
-pattern P at level 0.5 and A_l = (1 − α)·P(u) + α·P(2u), α = 2l − 1.
+pattern P at level 0.5, P(2u) at level 1.0, and between them, for dots and dashes, whole
+elements (each element of level 0.5 moves to its place in P(2u), the others grow from
+nothing, linearly in α = 2l − 1); pencil's grain is blended, A_l = (1 − α)·P(u) + α·P(2u).
 
 name: 'dots', 'dashes' or 'pencil'. levels: 2–256. length: texels along the stroke (16–16384,
 even). height: texels across (1–1024). seed: jitter of the elements' sizes and positions.

@@ -34,10 +34,14 @@ struct Slam {
 
 enum class SlamPattern { Dots, Dashes, Pencil };
 
-// A procedural SLAM: a periodic pattern P(u, v) at level 0.5 and A_l = (1 − α)·P(u) + α·P(2u)
-// with α = 2l − 1 (the seed-pyramid interpolation of §3.2.1 applied to the pattern itself),
-// so that self-similarity holds exactly and adjacent levels vary smoothly. Sizes and
-// positions of dots and dashes are jittered from `seed` (irregular elements help coherence, §3.1).
+// A procedural SLAM: a periodic pattern P(u, v) at level 0.5, P(2u, v) at level 1 (so that
+// self-similarity holds exactly), and between them, for dots and dashes, whole elements: each
+// element of level 0.5 moves to its place in P(2u) and the others grow from nothing, linearly
+// in α = 2l − 1, so that adjacent levels vary little and no level shows two patterns half
+// inked (the alpha blending the paper's §2 finds degrades structured patterns; its levels are
+// synthesized instead). Pencil's grain, which has no elements, is blended,
+// A_l = (1 − α)·P(u) + α·P(2u). Sizes and positions of dots and dashes are jittered from
+// `seed` (irregular elements help coherence, §3.1).
 [[nodiscard]] Slam make_procedural_slam(SlamPattern pattern, int levels = 17, int length = 1024, int height = 32,
                                         uint32_t seed = 1);
 
@@ -46,6 +50,9 @@ enum class SlamPattern { Dots, Dashes, Pencil };
 
 // Largest |A_l[x] − A_{l+1}[x]| between adjacent levels (smooth variation).
 [[nodiscard]] float slam_max_level_step(const Slam& slam);
+// Mean |A_i − A_{i+1}| over texels and adjacent levels (elements that move and grow change a
+// few texels fully from one level to the next: their largest step is 1, their mean small).
+[[nodiscard]] float slam_mean_level_step(const Slam& slam);
 
 // Two levels of full ink: a SLAM that draws every fragment at the stroke's colour (fills,
 // solid layer strokes, styled line sets without a texture).

@@ -31,9 +31,9 @@ int run_pattern(const PatternOptions& o) {
     if (o.length % 2 != 0) throw usage_error("--length: must be even (level 0.5 is half of it)");
     const Slam slam = make_procedural_slam(pattern, o.levels, o.length, o.height, o.seed);
     write_slam(o.output, slam);
-    std::printf("%s: %d levels of %dx%d, self-similarity error %.3g, largest step between levels %.3g\n",
+    std::printf("%s: %d levels of %dx%d, self-similarity error %.3g, mean step between levels %.3g (largest %.3g)\n",
                 o.output.c_str(), slam.levels, slam.length, slam.height, double(slam_self_similarity_error(slam)),
-                double(slam_max_level_step(slam)));
+                double(slam_mean_level_step(slam)), double(slam_max_level_step(slam)));
     return 0;
 }
 
