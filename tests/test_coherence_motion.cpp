@@ -50,14 +50,15 @@ protected:
                                 Bounds bounds) {
         const std::vector<PathDump> coherent = shot(json, ParamPolicy::Coherent, frames);
         const std::vector<PathDump> tiling = shot(json, ParamPolicy::Arclength, frames);
-        // As `coherence-report --baseline`: below 1e-4 nothing slides measurably (ratio 0).
-        auto ratio = [](double a, double b) { return a <= 1e-4 ? 0.0 : b > 1e-4 ? a / b : 1e9; };
+        // As `coherence-report --baseline`: below 1e-4 periods nothing slides measurably (ratio
+        // 0); a share of pops counts from the first pop.
+        auto ratio = [](double a, double b, double nothing = 1e-4) { return a <= nothing ? 0.0 : b > nothing ? a / b : 1e9; };
         std::vector<Ratios> out;
         for (const char* set : sets) {
             const SlidingMeasure c = measure_sliding(paths_of_line_set(coherent, set));
             const SlidingMeasure t = measure_sliding(paths_of_line_set(tiling, set));
             const StretchMeasure band = measure_stretch(paths_of_line_set(coherent, set));
-            const Ratios r{ratio(c.median_dt, t.median_dt), ratio(c.p90_dt, t.p90_dt), ratio(c.pops, t.pops),
+            const Ratios r{ratio(c.median_dt, t.median_dt), ratio(c.p90_dt, t.p90_dt), ratio(c.pops, t.pops, 0.0),
                            ratio(c.p90_px, t.p90_px)};
             std::printf("%s: coherent median %.5f p90 %.5f (%.2f px) pops %.4f (%zu pairs), in band %.4f; arclength "
                         "median %.5f p90 %.5f (%.2f px) pops %.4f; ratios %.3f %.3f %.3f, p90 in pixels %.3f\n",

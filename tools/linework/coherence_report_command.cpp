@@ -40,6 +40,10 @@ double ratio(double a, double b, double nothing = 1e-4) {
     if (a <= nothing) return 0.0;
     return b > nothing ? a / b : INFINITY;
 }
+// A share of pairs (pops) is a count over a count, with no rounding to allow for: any pop
+// counts (until 2026-12-06 a share under 1e-4 read as none, and a render against itself
+// could print 0 for the pops ratio).
+double share_ratio(double a, double b) { return ratio(a, b, 0.0); }
 
 // One group's measures; against a baseline's same group (another policy's render of the same
 // shot), their ratios as well.
@@ -60,7 +64,7 @@ void print_measures(const std::string& what, const Measures& m, const Measures* 
     if (baseline && baseline->sliding.pairs > 0)
         std::printf("    ratios to the baseline (this / baseline): median %.3f, p90 %.3f, pops %.3f; in pixels: median %.3f, p90 %.3f\n",
                     ratio(m.sliding.median_dt, baseline->sliding.median_dt),
-                    ratio(m.sliding.p90_dt, baseline->sliding.p90_dt), ratio(m.sliding.pops, baseline->sliding.pops),
+                    ratio(m.sliding.p90_dt, baseline->sliding.p90_dt), share_ratio(m.sliding.pops, baseline->sliding.pops),
                     ratio(m.sliding.median_px, baseline->sliding.median_px, 0.01),
                     ratio(m.sliding.p90_px, baseline->sliding.p90_px, 0.01));
     // Lines attached to the surface, matched by their surface points (path_dump.h): what
@@ -75,7 +79,7 @@ void print_measures(const std::string& what, const Measures& m, const Measures* 
             const SlidingStats& b = baseline->on_surface;
             std::printf("      ratios to the baseline on the surface: median %.3f, p90 %.3f, pops %.3f; in pixels: median "
                         "%.3f, p90 %.3f\n",
-                        ratio(o.median_dt, b.median_dt), ratio(o.p90_dt, b.p90_dt), ratio(o.pops, b.pops),
+                        ratio(o.median_dt, b.median_dt), ratio(o.p90_dt, b.p90_dt), share_ratio(o.pops, b.pops),
                         ratio(o.median_px, b.median_px, 0.01), ratio(o.p90_px, b.p90_px, 0.01));
         }
     }
@@ -91,7 +95,7 @@ void print_measures(const std::string& what, const Measures& m, const Measures* 
             const SlidingStats& b = baseline->sliding.alone;
             std::printf("      ratios to the baseline's such pairs: median %.3f, p90 %.3f, pops %.3f; in pixels: median %.3f, "
                         "p90 %.3f\n",
-                        ratio(a.median_dt, b.median_dt), ratio(a.p90_dt, b.p90_dt), ratio(a.pops, b.pops),
+                        ratio(a.median_dt, b.median_dt), ratio(a.p90_dt, b.p90_dt), share_ratio(a.pops, b.pops),
                         ratio(a.median_px, b.median_px, 0.01), ratio(a.p90_px, b.p90_px, 0.01));
         }
     }
