@@ -131,9 +131,11 @@ std::vector<Element> level_elements(const std::vector<Element>& base, float a) {
     std::vector<Element> out;
     for (size_t k = 0; k < m; ++k) {
         const Element& to = doubled[k];
-        if (match_of[k] < 0) {  // grows from nothing; its ink fades in under the 1.5-texel edge ramp
-            const float across = a * (to.thickness > 0.0f ? to.thickness : to.size);
-            out.push_back({to.center, a * to.size, a * to.thickness, std::min(across / 1.5f, 1.0f)});
+        if (match_of[k] < 0) {
+            // Grows from nothing; its ink fades in while it is under the 1.5-texel edge ramp,
+            // and is whole at a = 1 however thin the element (a SLAM a few texels high).
+            const float full = to.thickness > 0.0f ? to.thickness : to.size;
+            out.push_back({to.center, a * to.size, a * to.thickness, std::min(1.0f, a * std::max(full / 1.5f, 1.0f))});
             continue;
         }
         const Element& from = old[size_t(match_of[k])];
