@@ -193,14 +193,23 @@ float slam_max_level_step(const Slam& slam) {
     return worst;
 }
 
-float slam_mean_level_step(const Slam& slam) {
-    if (slam.levels < 2) return 0.0f;
-    double sum = 0.0;
+std::vector<float> slam_level_steps(const Slam& slam) {
+    std::vector<float> steps;
     const size_t per_level = size_t(slam.height) * size_t(slam.length);
-    for (int i = 0; i + 1 < slam.levels; ++i)
+    for (int i = 0; i + 1 < slam.levels; ++i) {
+        double sum = 0.0;
         for (size_t t = 0; t < per_level; ++t)
             sum += std::abs(slam.ink[size_t(i) * per_level + t] - slam.ink[size_t(i + 1) * per_level + t]);
-    return float(sum / double(per_level * size_t(slam.levels - 1)));
+        steps.push_back(float(sum / double(per_level)));
+    }
+    return steps;
+}
+
+float slam_mean_level_step(const Slam& slam) {
+    const std::vector<float> steps = slam_level_steps(slam);
+    double sum = 0.0;
+    for (const float step : steps) sum += step;
+    return steps.empty() ? 0.0f : float(sum / double(steps.size()));
 }
 
 Slam solid_slam() {

@@ -50,8 +50,10 @@ enum class SlamPattern { Dots, Dashes, Pencil };
 
 // Largest |A_l[x] − A_{l+1}[x]| between adjacent levels (smooth variation).
 [[nodiscard]] float slam_max_level_step(const Slam& slam);
-// Mean |A_i − A_{i+1}| over texels and adjacent levels (elements that move and grow change a
-// few texels fully from one level to the next: their largest step is 1, their mean small).
+// Per pair of adjacent levels, the mean |A_i − A_{i+1}| over texels; and its mean over the
+// pairs (elements that move and grow change a few texels fully from one level to the next:
+// their largest step is 1, their mean small).
+[[nodiscard]] std::vector<float> slam_level_steps(const Slam& slam);
 [[nodiscard]] float slam_mean_level_step(const Slam& slam);
 
 // Two levels of full ink: a SLAM that draws every fragment at the stroke's colour (fills,
