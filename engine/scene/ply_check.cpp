@@ -120,6 +120,10 @@ PlyLayout read_layout(const std::string& bytes, Fail fail) {
     return layout;
 }
 
+std::vector<PlyElement>::const_iterator find_element(const std::vector<PlyElement>& elements, const char* name) {
+    return std::find_if(elements.begin(), elements.end(), [&](const PlyElement& e) { return e.name == name; });
+}
+
 std::string read_bytes(const std::filesystem::path& path) {
     std::ifstream in(path, std::ios::binary);
     return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -149,9 +153,7 @@ bool check_ply_structure(const std::filesystem::path& path, const std::string& f
     if (least > body) fail("PLY body of " + std::to_string(body) + " bytes is shorter than its header declares");
     // Triangle strips are read by read_ply_strips, whole, up to the strips (so the vertices
     // come first), and instead of faces, not beside them.
-    auto element = [&](const char* name) {
-        return std::find_if(elements.begin(), elements.end(), [&](const PlyElement& e) { return e.name == name; });
-    };
+    auto element = [&](const char* name) { return find_element(elements, name); };
     const bool strips = element("tristrips") != elements.end();
     if (strips && element("face") != elements.end())
         fail("PLY has both faces and triangle strips (elements face and tristrips): give one or the other");
@@ -270,10 +272,6 @@ void strip_triangles(const std::vector<int64_t>& strip, std::vector<uint32_t>& o
     }
 }
 
-}  // namespace
-
-namespace {
-
 // A strip's index as read: a vertex, or a restart (-1; the largest value of an unsigned type).
 int64_t strip_index(double v, const PlyProperty& prop, const std::string& file, unsigned long long strip) {
     const bool is_unsigned = prop.type[0] == 'u';
@@ -288,8 +286,7 @@ int64_t strip_index(double v, const PlyProperty& prop, const std::string& file, 
 PlyStripMesh read_ply_strips(const std::filesystem::path& path, const std::string& file) {
     const std::string bytes = read_bytes(path);
     const PlyLayout layout = read_layout(bytes, [&](const std::string& problem) { throw Error(file + ": " + problem); });
-    const auto strips = std::find_if(layout.elements.begin(), layout.elements.end(),
-                                     [](const PlyElement& e) { return e.name == "tristrips"; });
+    const auto strips = find_element(layout.elements, "tristrips");
     if (strips == layout.elements.end()) throw Error(file + ": PLY has no tristrips element");
     PlyStripMesh mesh;
     BodyReader body(bytes, layout, file);
