@@ -141,7 +141,7 @@ float default_ribbon_scale(const Exemplar& exemplar) {
 
 std::optional<ScaleShortfall> scale_shortfall(const Exemplar& exemplar, float scale) {
     const int rows = band_height(exemplar);
-    const double s = scale, C = std::ceil(double(scale) - 1e-4);  // as build_ribbon's samples
+    const double s = scale, C = ribbon_edge_samples(scale);
     const bool holds = C >= 1.0 && std::floor((C - 0.5) * s / C) - std::floor(0.5 * s / C) >= double(rows + 1);
     if (holds) return std::nullopt;
     return ScaleShortfall{.band_rows = rows, .least_scale = rows + 2, .default_scale = default_ribbon_scale(exemplar)};

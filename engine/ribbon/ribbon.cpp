@@ -131,7 +131,7 @@ Ribbon build_ribbon(const ArclengthCurve& curve, const RibbonParams& params) {
     ribbon.closed = curve.closed();
     ribbon.width = params.width;
     ribbon.scale = params.scale;
-    ribbon.samples = static_cast<int>(std::ceil(params.scale - 1e-4f));
+    ribbon.samples = ribbon_edge_samples(params.scale);
     for (size_t i = 0; i + 1 < xs.size(); ++i) {
         // The chord between the middles of the two edges (the header says why); the tangent
         // where the curve does not turn over the piece, so that straight ribbons stay exact.

@@ -30,6 +30,7 @@
 //   can be added"). A closed curve's last piece ends exactly on the first one's left edge.
 #pragma once
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -72,6 +73,10 @@ struct Ribbon {
     glm::vec2 min_corner() const;
     glm::vec2 max_corner() const;
 };
+
+// C = ⌈s⌉, the samples along each piece edge for scale s (an s a hair over an integer, from
+// rounding, does not take one more).
+[[nodiscard]] inline int ribbon_edge_samples(float scale) { return static_cast<int>(std::ceil(scale - 1e-4f)); }
 
 // Throws lw::Error (exit code 2 for parameter values) for b, δ, s not positive, C > 4096 or
 // more than 100000 pieces.
